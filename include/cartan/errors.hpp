@@ -1,0 +1,35 @@
+#pragma once
+// Validation helpers used at every public entry point.
+//
+// cartan has three kinds of error handling (STYLE.md, practice 7):
+//   * static_assert / concepts for misuse of types;
+//   * std::invalid_argument (bad values) and std::domain_error (values outside a map's domain)
+//     thrown at API boundaries, with the offending value printed in the message;
+//   * result objects with a status for numerical outcomes (non-convergence), never exceptions.
+
+#include <Eigen/Core>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace cartan {
+
+/// Prints a vector or matrix on one line, rows separated by ';', with full precision.
+std::string format_value(const Eigen::Ref<const Eigen::MatrixXd>& x);
+std::string format_value(double x);
+
+/// Throws std::invalid_argument("<where>: <name> = <value> <problem>").
+[[noreturn]] void throw_invalid(std::string_view where, std::string_view name,
+                                const std::string& value, std::string_view problem);
+
+/// Throws std::invalid_argument unless every entry of x is finite.
+void require_finite(const Eigen::Ref<const Eigen::MatrixXd>& x, std::string_view where,
+                    std::string_view name);
+void require_finite(double x, std::string_view where, std::string_view name);
+
+/// Throws std::invalid_argument unless x has the given shape.
+void require_shape(const Eigen::Ref<const Eigen::MatrixXd>& x, Eigen::Index rows, Eigen::Index cols,
+                   std::string_view where, std::string_view name);
+
+}  // namespace cartan

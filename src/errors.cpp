@@ -1,0 +1,54 @@
+#include "cartan/errors.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+
+namespace cartan {
+
+std::string format_value(double x) {
+  std::ostringstream out;
+  out << std::setprecision(std::numeric_limits<double>::max_digits10) << x;
+  return out.str();
+}
+
+std::string format_value(const Eigen::Ref<const Eigen::MatrixXd>& x) {
+  std::ostringstream out;
+  out << std::setprecision(std::numeric_limits<double>::max_digits10) << '[';
+  for (Eigen::Index i = 0; i < x.rows(); ++i) {
+    if (i > 0) out << "; ";
+    for (Eigen::Index j = 0; j < x.cols(); ++j) {
+      if (j > 0) out << ", ";
+      out << x(i, j);
+    }
+  }
+  out << ']';
+  return out.str();
+}
+
+void throw_invalid(std::string_view where, std::string_view name, const std::string& value,
+                   std::string_view problem) {
+  std::ostringstream out;
+  out << where << ": " << name << " = " << value << ' ' << problem;
+  throw std::invalid_argument(out.str());
+}
+
+void require_finite(const Eigen::Ref<const Eigen::MatrixXd>& x, std::string_view where,
+                    std::string_view name) {
+  if (!x.allFinite()) throw_invalid(where, name, format_value(x), "contains a non-finite number");
+}
+
+void require_finite(double x, std::string_view where, std::string_view name) {
+  if (!std::isfinite(x)) throw_invalid(where, name, format_value(x), "is not finite");
+}
+
+void require_shape(const Eigen::Ref<const Eigen::MatrixXd>& x, Eigen::Index rows, Eigen::Index cols,
+                   std::string_view where, std::string_view name) {
+  if (x.rows() != rows || x.cols() != cols) {
+    std::ostringstream shape;
+    shape << "has shape " << x.rows() << "x" << x.cols() << ", expected " << rows << "x" << cols;
+    throw_invalid(where, name, format_value(x), shape.str());
+  }
+}
+
+}  // namespace cartan

@@ -1,0 +1,10 @@
+#pragma once
+// The list of groups every typed test runs over. Add a new group here.
+#include <gtest/gtest.h>
+
+#include "cartan/heisenberg.hpp"
+#include "cartan/so3.hpp"
+
+namespace cartan::testing {
+using AllGroups = ::testing::Types<SO3, Heisenberg>;
+}
