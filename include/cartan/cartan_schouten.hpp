@@ -1,0 +1,41 @@
+#pragma once
+// Cartan–Schouten connections (paper §5): the bi-invariant family with left bilinear map
+//   nabla^L_v w = lambda [v, w]            (CS-conn)
+// and right bilinear map
+//   nabla^R_v w = (lambda - 1) [v, w]      (CS-conn-right),
+// torsion and curvature on the algebra (tor-cur-lie-alg)
+//   T(v,w) = (2 lambda - 1)[v,w],   R(u,v)w = lambda (lambda - 1) [[u,v],w],
+// lambda = 0: (-)-connection (flat, transport = left translation); lambda = 1: (+)-connection
+// (flat, transport = right translation); lambda = 1/2: torsion-free, R = -1/4 [[u,v],w].
+
+#include "cartan/errors.hpp"
+#include "cartan/invariant_connection.hpp"
+
+namespace cartan {
+
+/// The Cartan–Schouten connection of parameter lambda (any real number), described by its left
+/// (CS-conn) or right (CS-conn-right) bilinear map. Throws std::invalid_argument if lambda is
+/// not finite.
+template <LieGroup G>
+InvariantConnection<G> cartan_schouten(double lambda, Side side = Side::Left) {
+  require_finite(lambda, "cartan_schouten", "lambda");
+  const double c = side == Side::Left ? lambda : lambda - 1;
+  typename InvariantConnection<G>::Coefficients gamma;
+  for (int i = 0; i < G::kDim; ++i) gamma[i] = c * G::ad(TangentOf<G>::Unit(i));
+  return InvariantConnection<G>(side, gamma);
+}
+
+/// Closed form (tor-cur-lie-alg): T(v, w) = (2 lambda - 1)[v, w].
+template <LieGroup G>
+TangentOf<G> cartan_schouten_torsion(double lambda, const TangentOf<G>& v, const TangentOf<G>& w) {
+  return (2 * lambda - 1) * bracket<G>(v, w);
+}
+
+/// Closed form (tor-cur-lie-alg): R(u, v) w = lambda (lambda - 1) [[u, v], w].
+template <LieGroup G>
+TangentOf<G> cartan_schouten_curvature(double lambda, const TangentOf<G>& u, const TangentOf<G>& v,
+                                       const TangentOf<G>& w) {
+  return lambda * (lambda - 1) * bracket<G>(bracket<G>(u, v), w);
+}
+
+}  // namespace cartan
