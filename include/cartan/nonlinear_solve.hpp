@@ -1,0 +1,63 @@
+#pragma once
+// A small Levenberg–Marquardt solver for square or overdetermined systems r(x) = 0, used by the
+// shooting solvers. Written here rather than taken from Eigen's unsupported MINPACK port because
+// the solvers need an absolute stopping rule on |r| (the terminal error the paper asks for),
+// a Jacobian computed in the same forward sweep as the residual, and a count of evaluations and
+// residual history for diagnostics.
+//
+// Damping follows Nielsen's rule: mu <- mu max(1/3, 1 - (2 rho - 1)^3) on success, mu <- nu mu,
+// nu <- 2 nu on failure, with rho the ratio of actual to predicted reduction.
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cartan {
+
+enum class SolveStatus {
+  Converged,          ///< |r| <= tolerance
+  MaxIterations,      ///< iteration budget exhausted
+  Stalled,            ///< steps became negligible while |r| > tolerance (local minimum of |r|)
+  NonFinite,          ///< the residual or Jacobian became NaN/inf
+  SingularJacobian,   ///< the damped normal equations could not be solved
+};
+
+std::string_view to_string(SolveStatus s);
+
+struct NonlinearSolveOptions {
+  double tolerance = 1e-12;      ///< stop when |r|_2 <= tolerance
+  int max_iterations = 200;      ///< Jacobian evaluations (accepted + rejected steps)
+  double initial_damping = 1e-8; ///< tau: mu_0 = tau max diag(J^T J); small = Gauss–Newton-like
+  double step_tolerance = 1e-15; ///< relative step size below which the solve has stalled
+  double fd_step = 1e-7;         ///< relative step of forward-difference Jacobians
+};
+
+struct NonlinearSolveReport {
+  SolveStatus status = SolveStatus::MaxIterations;
+  Eigen::VectorXd x;
+  Eigen::VectorXd residual;
+  double residual_norm = 0;
+  int iterations = 0;   ///< LM iterations (trial steps)
+  int evaluations = 0;  ///< calls of the residual function
+  std::vector<double> residual_history;  ///< |r| at each accepted point
+  std::string message;
+};
+
+/// Residual function: fills r (and J when jacobian != nullptr) at x. Returns false to signal a
+/// failed evaluation (treated like a non-finite residual: the step is rejected).
+using ResidualFunction =
+    std::function<bool(const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian)>;
+
+/// Wraps a residual-only function f(x, r) -> bool with a forward-difference Jacobian
+/// (one extra evaluation per unknown, step fd_step * max(1, |x_i|)) - the paper's choice.
+ResidualFunction with_forward_difference_jacobian(
+    std::function<bool(const Eigen::VectorXd&, Eigen::VectorXd&)> f, double fd_step);
+
+/// Levenberg–Marquardt from x0. Never throws for numerical trouble: the report says what happened.
+NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen::VectorXd& x0,
+                                         const NonlinearSolveOptions& options = {});
+
+}  // namespace cartan

@@ -1,0 +1,134 @@
+#include "cartan/nonlinear_solve.hpp"
+
+#include <sstream>
+
+#include "cartan/errors.hpp"
+
+namespace cartan {
+
+std::string_view to_string(SolveStatus s) {
+  switch (s) {
+    case SolveStatus::Converged: return "converged";
+    case SolveStatus::MaxIterations: return "max-iterations";
+    case SolveStatus::Stalled: return "stalled";
+    case SolveStatus::NonFinite: return "non-finite";
+    case SolveStatus::SingularJacobian: return "singular-jacobian";
+  }
+  return "unknown";
+}
+
+ResidualFunction with_forward_difference_jacobian(std::function<bool(const Eigen::VectorXd&, Eigen::VectorXd&)> f,
+                                                  double fd_step) {
+  return [f = std::move(f), fd_step](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
+    if (!f(x, r)) return false;
+    if (jac == nullptr) return true;
+    jac->resize(r.size(), x.size());
+    Eigen::VectorXd xp = x, rp;
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+      const double step = fd_step * std::max(1.0, std::abs(x[i]));
+      xp[i] = x[i] + step;
+      if (!f(xp, rp)) return false;
+      jac->col(i) = (rp - r) / step;
+      xp[i] = x[i];
+    }
+    return true;
+  };
+}
+
+namespace {
+
+bool evaluate(const ResidualFunction& f, const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd& jac,
+              NonlinearSolveReport& report) {
+  ++report.evaluations;
+  return f(x, r, &jac) && r.allFinite() && jac.allFinite();
+}
+
+void finish(NonlinearSolveReport& report, SolveStatus status, const std::string& why) {
+  report.status = status;
+  std::ostringstream out;
+  out << to_string(status) << " after " << report.iterations << " iterations and " << report.evaluations
+      << " evaluations, |r| = " << format_value(report.residual_norm);
+  if (!why.empty()) out << " (" << why << ")";
+  report.message = out.str();
+}
+
+}  // namespace
+
+NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen::VectorXd& x0,
+                                         const NonlinearSolveOptions& options) {
+  NonlinearSolveReport report;
+  report.x = x0;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd jac;
+  if (!evaluate(f, report.x, r, jac, report)) {
+    report.residual = r;
+    report.residual_norm = r.size() ? r.norm() : std::nan("");
+    finish(report, SolveStatus::NonFinite, "at the initial guess");
+    return report;
+  }
+  report.residual = r;
+  report.residual_norm = r.norm();
+  report.residual_history.push_back(report.residual_norm);
+  Eigen::MatrixXd a = jac.transpose() * jac;
+  Eigen::VectorXd grad = jac.transpose() * r;
+  double mu = options.initial_damping * std::max(a.diagonal().maxCoeff(), 1e-300);
+  double nu = 2;
+  Eigen::VectorXd r_new;
+  Eigen::MatrixXd jac_new;
+  while (true) {
+    if (report.residual_norm <= options.tolerance) {
+      finish(report, SolveStatus::Converged, "");
+      return report;
+    }
+    if (report.iterations >= options.max_iterations) {
+      finish(report, SolveStatus::MaxIterations, "");
+      return report;
+    }
+    ++report.iterations;
+    Eigen::MatrixXd damped = a;
+    damped.diagonal().array() += mu;
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(damped);
+    if (ldlt.info() != Eigen::Success) {
+      finish(report, SolveStatus::SingularJacobian, "damped normal equations not solvable");
+      return report;
+    }
+    const Eigen::VectorXd step = ldlt.solve(-grad);
+    if (!step.allFinite()) {
+      finish(report, SolveStatus::SingularJacobian, "non-finite step");
+      return report;
+    }
+    if (step.norm() <= options.step_tolerance * (report.x.norm() + options.step_tolerance)) {
+      finish(report, SolveStatus::Stalled, "step below relative tolerance");
+      return report;
+    }
+    const Eigen::VectorXd x_new = report.x + step;
+    const double predicted = step.dot(mu * step - grad);
+    bool accepted = false;
+    if (evaluate(f, x_new, r_new, jac_new, report)) {
+      const double rho = (r.squaredNorm() - r_new.squaredNorm()) / std::max(predicted, 1e-300);
+      if (rho > 0) {
+        accepted = true;
+        report.x = x_new;
+        r = r_new;
+        jac = jac_new;
+        a = jac.transpose() * jac;
+        grad = jac.transpose() * r;
+        report.residual = r;
+        report.residual_norm = r.norm();
+        report.residual_history.push_back(report.residual_norm);
+        mu *= std::max(1.0 / 3.0, 1 - std::pow(2 * rho - 1, 3));
+        nu = 2;
+      }
+    }
+    if (!accepted) {
+      mu *= nu;
+      nu *= 2;
+      if (!std::isfinite(mu)) {
+        finish(report, SolveStatus::Stalled, "damping overflowed");
+        return report;
+      }
+    }
+  }
+}
+
+}  // namespace cartan
