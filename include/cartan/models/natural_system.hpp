@@ -1,0 +1,125 @@
+#pragma once
+// Natural mechanical systems on a Lie group, left-reduced: kinetic energy from a constant
+// inertia (a symmetric positive-definite map g -> g*) minus a potential,
+//   l(g, v) = 1/2 v . I v - V(g),          h(g, mu) = 1/2 mu . I^{-1} mu + V(g),
+// Legendre-related by mu = I v (paper §4, "The reduced Legendre transform").
+// Group gradients (left-trivialised, lagrangian.hpp): zeta_l = -dV, zeta_h = +dV, where
+// dV . w = d/de V(g exp(e w)). The right-reduced forms are in models/right_reduced.hpp.
+//
+// A Potential type provides `double value(g)` and `Covector left_gradient(g)` (= dV above).
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "cartan/errors.hpp"
+#include "cartan/group.hpp"
+
+namespace cartan {
+
+template <class P, class G>
+concept Potential = LieGroup<G> && requires(const P& p, const ElementOf<G>& g) {
+  { p.value(g) } -> std::convertible_to<double>;
+  { p.left_gradient(g) } -> std::convertible_to<CovectorOf<G>>;
+};
+
+/// V = 0 (free motion).
+template <LieGroup G>
+struct ZeroPotential {
+  double value(const ElementOf<G>&) const { return 0; }
+  CovectorOf<G> left_gradient(const ElementOf<G>&) const { return CovectorOf<G>::Zero(); }
+};
+
+/// A validated inertia: symmetric (to relative 1e-12; then symmetrised exactly), finite and
+/// positive definite (smallest eigenvalue > 1e-14 x largest). Throws std::invalid_argument
+/// naming `where`, "inertia" and the matrix otherwise.
+template <int N>
+class Inertia {
+ public:
+  using Matrix = Eigen::Matrix<double, N, N>;
+  using Vector = Eigen::Matrix<double, N, 1>;
+
+  Inertia(const Matrix& inertia, std::string_view where) {
+    require_finite(inertia, where, "inertia");
+    const double scale = inertia.cwiseAbs().maxCoeff();
+    const double asymmetry = (inertia - inertia.transpose()).cwiseAbs().maxCoeff();
+    if (asymmetry > 1e-12 * scale) {
+      throw_invalid(where, "inertia", format_value(inertia),
+                    "is not symmetric: max|I - I^T| = " + format_value(asymmetry));
+    }
+    matrix_ = (inertia + inertia.transpose()) / 2;
+    const Vector eigenvalues = Eigen::SelfAdjointEigenSolver<Matrix>(matrix_, Eigen::EigenvaluesOnly).eigenvalues();
+    if (!(eigenvalues.minCoeff() > 1e-14 * eigenvalues.maxCoeff()) || !(eigenvalues.maxCoeff() > 0)) {
+      throw_invalid(where, "inertia", format_value(inertia),
+                    "is not positive definite: eigenvalues " + format_value(eigenvalues));
+    }
+    llt_.compute(matrix_);
+  }
+
+  const Matrix& matrix() const { return matrix_; }
+  Vector apply(const Vector& v) const { return matrix_ * v; }
+  Vector solve(const Vector& mu) const { return llt_.solve(mu); }
+
+ private:
+  Matrix matrix_;
+  Eigen::LLT<Matrix> llt_;
+};
+
+/// What a natural Lagrangian and its Hamiltonian share: the inertia, the potential, and the
+/// velocity v = I^{-1} mu (inverse Legendre map of l, and dh/dmu).
+template <LieGroup G, Potential<G> V>
+class NaturalSystem {
+ public:
+  using InertiaMatrix = AlgebraMatrixOf<G>;
+
+  TangentOf<G> velocity(double, const ElementOf<G>&, const CovectorOf<G>& mu) const { return inertia_.solve(mu); }
+  const InertiaMatrix& inertia() const { return inertia_.matrix(); }
+  const V& potential() const { return potential_; }
+
+ protected:
+  NaturalSystem(const InertiaMatrix& inertia, V potential, std::string_view model)
+      : inertia_(inertia, std::string(model) + "<" + std::string(G::name()) + ">"), potential_(std::move(potential)) {}
+  double kinetic_energy_of_velocity(const TangentOf<G>& v) const { return v.dot(inertia_.apply(v)) / 2; }
+  double kinetic_energy_of_momentum(const CovectorOf<G>& mu) const { return mu.dot(inertia_.solve(mu)) / 2; }
+  CovectorOf<G> momentum_of(const TangentOf<G>& v) const { return inertia_.apply(v); }
+
+ private:
+  Inertia<G::kDim> inertia_;
+  V potential_;
+};
+
+/// l(t, g, v) = 1/2 v . I v - V(g), left-reduced.
+template <LieGroup G, Potential<G> V>
+class NaturalLagrangian : public NaturalSystem<G, V> {
+ public:
+  explicit NaturalLagrangian(const AlgebraMatrixOf<G>& inertia, V potential = {})
+      : NaturalSystem<G, V>(inertia, std::move(potential), "NaturalLagrangian") {}
+
+  double value(double, const ElementOf<G>& g, const TangentOf<G>& v) const {
+    return this->kinetic_energy_of_velocity(v) - this->potential().value(g);
+  }
+  CovectorOf<G> momentum(double, const ElementOf<G>&, const TangentOf<G>& v) const { return this->momentum_of(v); }
+  CovectorOf<G> group_gradient(double, const ElementOf<G>& g, const TangentOf<G>&) const {
+    return -this->potential().left_gradient(g);
+  }
+};
+
+/// h(t, g, mu) = 1/2 mu . I^{-1} mu + V(g), left-reduced; the Legendre transform of
+/// NaturalLagrangian<G, V> with the same inertia.
+template <LieGroup G, Potential<G> V>
+class NaturalHamiltonian : public NaturalSystem<G, V> {
+ public:
+  explicit NaturalHamiltonian(const AlgebraMatrixOf<G>& inertia, V potential = {})
+      : NaturalSystem<G, V>(inertia, std::move(potential), "NaturalHamiltonian") {}
+
+  double value(double, const ElementOf<G>& g, const CovectorOf<G>& mu) const {
+    return this->kinetic_energy_of_momentum(mu) + this->potential().value(g);
+  }
+  CovectorOf<G> group_gradient(double, const ElementOf<G>& g, const CovectorOf<G>&) const {
+    return this->potential().left_gradient(g);
+  }
+};
+
+}  // namespace cartan
