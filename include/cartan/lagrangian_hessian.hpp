@@ -1,0 +1,49 @@
+#pragma once
+// Second derivatives of a reduced Lagrangian, needed by tangent-linear (forward-sensitivity)
+// sweeps. A model may provide them analytically as `hessian(t, g, v)` returning
+// LagrangianHessian<G>; otherwise they are computed by central differences of its first
+// derivatives (momentum, group_gradient).
+
+#include "cartan/lagrangian.hpp"
+
+namespace cartan {
+
+/// Derivatives of mu = dl/dv and zeta = trivialised dl/dg, with g perturbed as g exp(e gamma)
+/// (left-trivialised gamma) and v as v + e dv.
+template <LieGroup G>
+struct LagrangianHessian {
+  AlgebraMatrixOf<G> momentum_v;  ///< d mu / dv   (d^2 l / dv^2)
+  AlgebraMatrixOf<G> momentum_g;  ///< d mu / d gamma
+  AlgebraMatrixOf<G> gradient_v;  ///< d zeta / dv
+  AlgebraMatrixOf<G> gradient_g;  ///< d zeta / d gamma
+};
+
+/// Central-difference step: truncation ~ step^2 |l'''|, rounding ~ 1e-16 / step: both ~1e-10.
+inline constexpr double kHessianStep = 1e-5;
+
+template <LieGroup G, ReducedLagrangian<G> L>
+LagrangianHessian<G> lagrangian_hessian(const L& l, double t, const ElementOf<G>& g, const TangentOf<G>& v) {
+  if constexpr (requires { { l.hessian(t, g, v) } -> std::convertible_to<LagrangianHessian<G>>; }) {
+    return l.hessian(t, g, v);
+  } else {
+    LagrangianHessian<G> out;
+    const double hv = kHessianStep * (1 + v.cwiseAbs().maxCoeff());
+    const double hg = kHessianStep;
+    for (int i = 0; i < G::kDim; ++i) {
+      const TangentOf<G> ev = TangentOf<G>::Unit(i) * hv;
+      const TangentOf<G> vp = v + ev, vm = v - ev;
+      out.momentum_v.col(i) = (CovectorOf<G>(l.momentum(t, g, vp)) - CovectorOf<G>(l.momentum(t, g, vm))) / (2 * hv);
+      out.gradient_v.col(i) =
+          (CovectorOf<G>(l.group_gradient(t, g, vp)) - CovectorOf<G>(l.group_gradient(t, g, vm))) / (2 * hv);
+      const TangentOf<G> eg = TangentOf<G>::Unit(i) * hg;
+      const ElementOf<G> gp = G::compose(g, G::exp(eg));
+      const ElementOf<G> gm = G::compose(g, G::exp(TangentOf<G>(-eg)));
+      out.momentum_g.col(i) = (CovectorOf<G>(l.momentum(t, gp, v)) - CovectorOf<G>(l.momentum(t, gm, v))) / (2 * hg);
+      out.gradient_g.col(i) =
+          (CovectorOf<G>(l.group_gradient(t, gp, v)) - CovectorOf<G>(l.group_gradient(t, gm, v))) / (2 * hg);
+    }
+    return out;
+  }
+}
+
+}  // namespace cartan

@@ -1,0 +1,39 @@
+#pragma once
+// The two-point boundary-value problem of the connection-dependent variational principle
+// (paper §6, eq:reduced-system) for a Cartan–Schouten connection of parameter lambda:
+//   Gamma*(g)_t^0 dl/dg = mu' + (2 lambda - 1) ad*_v mu + lambda (1 - lambda) ad*_v xi,
+//   xi' = -ad*_v mu,  xi(T) = 0,
+//   g' = Gamma(g)_0^t v,  g(0) = g0,  g(T) = gT,   mu = dl/dv.
+// v is the transported velocity, stored left-trivialised at g0 (docs/conventions.md).
+
+#include <string>
+
+#include "cartan/errors.hpp"
+#include "cartan/group.hpp"
+#include "cartan/lagrangian.hpp"
+
+namespace cartan {
+
+template <LieGroup G, ReducedLagrangian<G> L>
+struct TransportedProblem {
+  L lagrangian;
+  double lambda = 0.5;   ///< Cartan–Schouten parameter (any real number)
+  double T = 1.0;        ///< final time
+  int N = 100;           ///< number of steps, h = T / N
+  ElementOf<G> g0 = G::identity();
+  ElementOf<G> gT = G::identity();
+
+  double step() const { return T / N; }
+
+  /// Throws std::invalid_argument naming the first bad value.
+  void validate() const {
+    require_finite(lambda, "TransportedProblem", "lambda");
+    require_finite(T, "TransportedProblem", "T");
+    if (!(T > 0)) throw_invalid("TransportedProblem", "T", format_value(T), "must be positive");
+    if (N < 1) throw_invalid("TransportedProblem", "N", std::to_string(N), "must be at least 1");
+    G::validate(g0, "g0");
+    G::validate(gT, "gT");
+  }
+};
+
+}  // namespace cartan

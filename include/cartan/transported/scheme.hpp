@@ -1,0 +1,238 @@
+#pragma once
+// The discrete transported-velocity scheme: one step k -> k+1 of the paper's discretisation
+// (disc-grp, disc-body-v, disc-exp, disc-Legendre, disc-aux, disc-mmt, disc-mmt-eqn) and of a
+// second-order variant, together with its tangent-linear (forward-sensitivity) map. Every
+// solver (two-level, shooting, multiple shooting, continuation) calls this and nothing else.
+//
+// State at node k: g_k, the transport element h_k, mu_k, xi_k, v_k = (dl/dv)^{-1}(mu_k).
+// The transport operator of the paper is P_k = Ad(h_k): since exp(ad_X) = Ad_{exp X},
+// (disc-exp) P_{k+1} = exp(-lambda h ad_{u_k}) P_k is exactly h_{k+1} = exp(-lambda h u_k) h_k.
+// Rates at a node (eq:reduced-system, PAPER-NOTES "Conventions"):
+//   u   = P v                                          (disc-body-v)
+//   mu' = P^T zeta - (2 lambda - 1) ad*_v mu - lambda (1 - lambda) ad*_v xi   (disc-mmt, disc-mmt-eqn)
+//   xi' = -ad*_v mu                                     (disc-aux)
+// Order 1 (the paper): explicit Euler in these rates with the Lie–Euler group updates
+//   g_{k+1} = g_k exp(h u_k) (disc-grp), h_{k+1} = exp(-lambda h u_k) h_k (disc-exp).
+// Order 2 (ours, PAPER-NOTES erratum 3): Heun's method in Runge–Kutta–Munthe-Kaas form: a
+// predictor Euler step, then the same update with the average of the rates at the node and at
+// the predictor; the transport update becomes exp(-lambda (h/2)(u_k + u*)), i.e. Magnus-2 with
+// the trapezoidal Omega_1.
+// Two modes for xi: `augmented` integrates xi forward from a given xi_0; `given` takes the
+// sequence {xi_k} from outside (the paper's outer fixed point) and records the rates for the
+// backward recursion xi_k = xi_{k+1} - h xi'_k (disc-aux).
+
+#include <optional>
+#include <vector>
+
+#include "cartan/exp_jacobian.hpp"
+#include "cartan/lagrangian_hessian.hpp"
+#include "cartan/transported/problem.hpp"
+
+namespace cartan {
+
+enum class SchemeOrder { First = 1, Second = 2 };
+
+template <LieGroup G>
+struct SchemeNode {
+  double t = 0;
+  ElementOf<G> g;
+  ElementOf<G> transport;  ///< h_k with P_k = Ad(h_k)
+  CovectorOf<G> mu;
+  CovectorOf<G> xi;
+  TangentOf<G> v;
+};
+
+/// The discrete trajectory at every node k = 0..N.
+template <LieGroup G>
+struct TransportedTrajectory {
+  std::vector<double> t;
+  std::vector<ElementOf<G>> g;
+  std::vector<TangentOf<G>> v;
+  std::vector<CovectorOf<G>> mu;
+  std::vector<CovectorOf<G>> xi;
+
+  void reserve(std::size_t n) {
+    t.reserve(n), g.reserve(n), v.reserve(n), mu.reserve(n), xi.reserve(n);
+  }
+  void push(const SchemeNode<G>& node) {
+    t.push_back(node.t), g.push_back(node.g), v.push_back(node.v), mu.push_back(node.mu), xi.push_back(node.xi);
+  }
+};
+
+template <LieGroup G, ReducedLagrangian<G> L>
+class TransportedScheme {
+ public:
+  static constexpr int n = G::kDim;
+  using Tangent = TangentOf<G>;
+  using Covector = CovectorOf<G>;
+  using Matrix = AlgebraMatrixOf<G>;
+  using Node = SchemeNode<G>;
+  /// Perturbation directions, one column per unknown.
+  using Directions = Eigen::Matrix<double, n, Eigen::Dynamic>;
+
+  /// Linearisation of a node: gamma (left-trivialised dg), chi (dh = chi h), dmu, dxi, dv.
+  struct NodeTangent {
+    Directions gamma, chi, mu, xi, v;
+    LagrangianHessian<G> hessian;
+  };
+
+  TransportedScheme(const TransportedProblem<G, L>& problem, SchemeOrder order)
+      : problem_(problem), order_(order), dt_(problem.step()), c_torsion_(2 * problem.lambda - 1),
+        c_curvature_(problem.lambda * (1 - problem.lambda)) {}
+
+  const TransportedProblem<G, L>& problem() const { return problem_; }
+  SchemeOrder order() const { return order_; }
+  double step_size() const { return dt_; }
+
+  Node initial(const Tangent& v0, const Covector& xi0) const {
+    Node node;
+    node.t = 0;
+    node.g = problem_.g0;
+    node.transport = G::identity();
+    node.v = v0;
+    node.mu = problem_.lagrangian.momentum(0.0, node.g, v0);
+    node.xi = xi0;
+    return node;
+  }
+
+  /// Tangent of the initial node along `columns` directions: the first n columns perturb v0,
+  /// the next n (if present) perturb xi0.
+  NodeTangent initial_tangent(const Node& node, int columns) const {
+    NodeTangent d;
+    for (Directions* m : {&d.gamma, &d.chi, &d.mu, &d.xi, &d.v}) m->setZero(n, columns);
+    d.v.leftCols(n).setIdentity();
+    if (columns >= 2 * n) d.xi.middleCols(n, n).setIdentity();
+    d.hessian = lagrangian_hessian<G>(problem_.lagrangian, node.t, node.g, node.v);
+    d.mu = d.hessian.momentum_v * d.v;
+    return d;
+  }
+
+  /// One step from `node` (at t_k). In `given` mode (xi_next set) the node's xi is the given
+  /// xi_k and the result gets xi_{k+1} = *xi_next. Returns the effective xi rate used, so that
+  /// xi_{k+1} = xi_k + h * rate.
+  Covector step(const Node& node, Node& out, const Covector* xi_next = nullptr) const {
+    const Rates r1 = rates(node);
+    if (order_ == SchemeOrder::First) {
+      advance(node, r1, out, xi_next);
+      return r1.dxi;
+    }
+    Node predictor;
+    advance(node, r1, predictor, xi_next);
+    const Rates r2 = rates(predictor);
+    const Rates mean{(r1.u + r2.u) / 2, (r1.dmu + r2.dmu) / 2, (r1.dxi + r2.dxi) / 2};
+    advance(node, mean, out, xi_next);
+    return mean.dxi;
+  }
+
+  /// The step together with its tangent-linear map (d -> dout); returns the xi rate as `step`.
+  Covector step_tangent(const Node& node, const NodeTangent& d, Node& out, NodeTangent& dout,
+                        const Covector* xi_next = nullptr) const {
+    const Rates r1 = rates(node);
+    const RatesTangent dr1 = rates_tangent(node, d, r1);
+    if (order_ == SchemeOrder::First) {
+      advance(node, r1, out, xi_next);
+      advance_tangent(d, r1, dr1, out, dout, xi_next != nullptr);
+      return r1.dxi;
+    }
+    Node predictor;
+    NodeTangent dpredictor;
+    advance(node, r1, predictor, xi_next);
+    advance_tangent(d, r1, dr1, predictor, dpredictor, xi_next != nullptr);
+    const Rates r2 = rates(predictor);
+    const RatesTangent dr2 = rates_tangent(predictor, dpredictor, r2);
+    const Rates mean{(r1.u + r2.u) / 2, (r1.dmu + r2.dmu) / 2, (r1.dxi + r2.dxi) / 2};
+    const RatesTangent dmean{(dr1.u + dr2.u) / 2, (dr1.dmu + dr2.dmu) / 2, (dr1.dxi + dr2.dxi) / 2};
+    advance(node, mean, out, xi_next);
+    advance_tangent(d, mean, dmean, out, dout, xi_next != nullptr);
+    return mean.dxi;
+  }
+
+  /// Shooting residual at the final node: r_g = vee(log(gT^{-1} g_N)) (PAPER-NOTES), and its
+  /// derivative J_r(r_g)^{-1} gamma_N.
+  Tangent terminal_residual(const Node& last) const {
+    return G::log(G::compose(G::inverse(problem_.gT), last.g));
+  }
+  Directions terminal_residual_tangent(const Tangent& residual, const NodeTangent& d) const {
+    return right_jacobian_inverse<G>(residual) * d.gamma;
+  }
+
+ private:
+  struct Rates {
+    Tangent u;
+    Covector dmu, dxi;
+  };
+  struct RatesTangent {
+    Directions u, dmu, dxi;
+  };
+
+  /// Matrix of x -> ad*_x mu = ad(x)^T mu (linear in the first argument).
+  static Matrix coad_first(const Covector& mu) {
+    Matrix m;
+    for (int i = 0; i < n; ++i) m.col(i) = G::ad(Tangent::Unit(i)).transpose() * mu;
+    return m;
+  }
+
+  Rates rates(const Node& node) const {
+    const Matrix p = G::Ad(node.transport);
+    const Covector zeta = problem_.lagrangian.group_gradient(node.t, node.g, node.v);
+    const Matrix coad_v = G::ad(node.v).transpose();
+    const Covector coad_v_mu = coad_v * node.mu;
+    Rates r;
+    r.u = p * node.v;
+    r.dmu = p.transpose() * zeta - c_torsion_ * coad_v_mu - c_curvature_ * (coad_v * node.xi);
+    r.dxi = -coad_v_mu;
+    return r;
+  }
+
+  RatesTangent rates_tangent(const Node& node, const NodeTangent& d, const Rates& r) const {
+    const Matrix p = G::Ad(node.transport);
+    const Covector zeta = problem_.lagrangian.group_gradient(node.t, node.g, node.v);
+    const Matrix coad_v = G::ad(node.v).transpose();
+    const Directions dcoad_v_mu = coad_v * d.mu + coad_first(node.mu) * d.v;
+    const Directions dzeta = d.hessian.gradient_g * d.gamma + d.hessian.gradient_v * d.v;
+    RatesTangent dr;
+    // u = Ad(h) v with d Ad(h) = ad(chi) Ad(h): du = [chi, u] + P dv = -ad(u) chi + P dv.
+    dr.u = -G::ad(r.u) * d.chi + p * d.v;
+    // eta = P^T zeta: d eta = P^T (ad(chi)^T zeta + dzeta).
+    dr.dmu = p.transpose() * (coad_first(zeta) * d.chi + dzeta) - c_torsion_ * dcoad_v_mu -
+             c_curvature_ * (coad_v * d.xi + coad_first(node.xi) * d.v);
+    dr.dxi = -dcoad_v_mu;
+    return dr;
+  }
+
+  void advance(const Node& node, const Rates& r, Node& out, const Covector* xi_next) const {
+    out.t = node.t + dt_;
+    out.g = G::compose(node.g, G::exp(Tangent(dt_ * r.u)));
+    out.transport = G::compose(G::exp(Tangent(-problem_.lambda * dt_ * r.u)), node.transport);
+    out.mu = node.mu + dt_ * r.dmu;
+    out.xi = xi_next ? *xi_next : Covector(node.xi + dt_ * r.dxi);
+    out.v = problem_.lagrangian.velocity(out.t, out.g, out.mu);
+  }
+
+  /// Linearisation of `advance`: g' = g exp(h u) gives gamma' = Ad(exp(-h u)) gamma + h J_r(h u) du;
+  /// h' = exp(a) h with a = -lambda h u gives chi' = Ad(exp(a)) chi + J_l(a) da; and
+  /// v' = (dl/dv)^{-1}(mu') gives dv' = M_v^{-1} (dmu' - M_g gamma').
+  void advance_tangent(const NodeTangent& d, const Rates& r, const RatesTangent& dr, const Node& out,
+                       NodeTangent& dout, bool xi_given) const {
+    const Tangent hu = dt_ * r.u;
+    const Tangent a = -problem_.lambda * hu;
+    dout.gamma = G::Ad(G::exp(Tangent(-hu))) * d.gamma + dt_ * (right_jacobian<G>(hu) * dr.u);
+    dout.chi = G::Ad(G::exp(a)) * d.chi - problem_.lambda * dt_ * (left_jacobian<G>(a) * dr.u);
+    dout.mu = d.mu + dt_ * dr.dmu;
+    if (xi_given) {
+      dout.xi.setZero(n, d.xi.cols());
+    } else {
+      dout.xi = d.xi + dt_ * dr.dxi;
+    }
+    dout.hessian = lagrangian_hessian<G>(problem_.lagrangian, out.t, out.g, out.v);
+    dout.v = dout.hessian.momentum_v.lu().solve(Directions(dout.mu - dout.hessian.momentum_g * dout.gamma));
+  }
+
+  TransportedProblem<G, L> problem_;
+  SchemeOrder order_;
+  double dt_;
+  double c_torsion_;    // 2 lambda - 1
+  double c_curvature_;  // lambda (1 - lambda)
+};
+
+}  // namespace cartan

@@ -1,0 +1,132 @@
+#pragma once
+// The paper's two-level scheme (§7 "A two-level scheme", appendix pseudocode): an inner
+// shooting loop on v0 by Levenberg–Marquardt with a forward-difference Jacobian and residual
+// log(gT^{-1} g_N) for a fixed sequence {xi_k}, and an outer fixed-point iteration that
+// recomputes {xi_k} by the backward recursion (disc-aux) until max_k |xi_new - xi_old| < tol.
+// The plain fixed point has no convergence guarantee (PAPER-NOTES erratum 4); failures of
+// either loop are reported with their iteration counts and residuals.
+
+#include <sstream>
+
+#include "cartan/transported/shooting.hpp"
+
+namespace cartan {
+
+struct TwoLevelOptions {
+  SchemeOrder order = SchemeOrder::First;
+  double tolerance = 1e-8;         ///< outer: max_k |xi_new - xi_old|
+  double inner_tolerance = 1e-13;  ///< inner: |log(gT^{-1} g_N)| (far tighter than the outer one)
+  int max_outer = 100;
+  int max_inner = 100;
+  bool analytic_jacobian = false;  ///< the paper uses finite differences
+
+  void validate() const {
+    for (auto [name, value] : {std::pair{"tolerance", tolerance}, std::pair{"inner_tolerance", inner_tolerance}}) {
+      require_finite(value, "TwoLevelOptions", name);
+      if (!(value > 0)) throw_invalid("TwoLevelOptions", name, format_value(value), "must be positive");
+    }
+    if (max_outer < 1) throw_invalid("TwoLevelOptions", "max_outer", std::to_string(max_outer), "must be at least 1");
+    if (max_inner < 1) throw_invalid("TwoLevelOptions", "max_inner", std::to_string(max_inner), "must be at least 1");
+  }
+};
+
+template <LieGroup G, ReducedLagrangian<G> L>
+TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, const TwoLevelOptions& options,
+                                       const TangentOf<G>& v0_guess) {
+  problem.validate();
+  options.validate();
+  require_finite(v0_guess, "solve_two_level", "v0_guess");
+  constexpr int n = G::kDim;
+  const auto start = std::chrono::steady_clock::now();
+  const TransportedScheme<G, L> scheme(problem, options.order);
+  const double dt = scheme.step_size();
+  const std::size_t nodes = static_cast<std::size_t>(problem.N) + 1;
+  TransportedSolution<G> solution;
+  solution.method = "two-level";
+  solution.order = static_cast<int>(options.order);
+
+  std::vector<CovectorOf<G>> xi(nodes, CovectorOf<G>::Zero());  // xi^(0) = 0 (Step 1)
+  std::vector<CovectorOf<G>> rates;
+  std::string failure;
+  auto inner_residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
+    SweepOutput<G, L> out;
+    ++solution.sweeps;
+    const int columns = (jac != nullptr && options.analytic_jacobian) ? n : 0;
+    if (!forward_sweep(scheme, TangentOf<G>(x), CovectorOf<G>::Zero(), &xi, columns, out)) {
+      failure = out.failure;
+      return false;
+    }
+    const TangentOf<G> rg = scheme.terminal_residual(out.last);
+    r = rg;
+    if (columns > 0) *jac = scheme.terminal_residual_tangent(rg, *out.tangent);
+    return true;
+  };
+  ResidualFunction inner = inner_residual;
+  if (!options.analytic_jacobian) {
+    inner = with_forward_difference_jacobian(
+        [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) { return inner_residual(x, r, nullptr); }, 1e-7);
+  }
+
+  Eigen::VectorXd v0 = v0_guess;
+  double change = std::numeric_limits<double>::infinity();
+  NonlinearSolveReport report;
+  std::ostringstream history;
+  for (int outer = 0; outer < options.max_outer; ++outer) {
+    solution.outer_iterations = outer + 1;
+    // Steps 2-3: inner shooting for v0 with the current {xi_k}.
+    report = levenberg_marquardt(inner, v0, {.tolerance = options.inner_tolerance, .max_iterations = options.max_inner});
+    solution.inner_iterations += report.iterations;
+    v0 = report.x;
+    if (report.status != SolveStatus::Converged) {
+      solution.status = "inner-not-converged";
+      solution.message = "two-level: inner shooting failed in outer iteration " + std::to_string(outer + 1) + ": " +
+                         report.message + (failure.empty() ? "" : "; last failed sweep: " + failure);
+      break;
+    }
+    // Step 4: backward recursion xi_k = xi_{k+1} - h * rate_k with xi_N = 0 (disc-aux).
+    SweepOutput<G, L> out;
+    out.xi_rates = &rates;
+    ++solution.sweeps;
+    forward_sweep(scheme, TangentOf<G>(v0), CovectorOf<G>::Zero(), &xi, 0, out);
+    std::vector<CovectorOf<G>> xi_new(nodes, CovectorOf<G>::Zero());
+    for (std::size_t k = nodes - 1; k-- > 0;) xi_new[k] = xi_new[k + 1] - dt * rates[k];
+    change = 0;
+    for (std::size_t k = 0; k < nodes; ++k) change = std::max(change, (xi_new[k] - xi[k]).cwiseAbs().maxCoeff());
+    xi = std::move(xi_new);
+    history << (outer ? ", " : "") << format_value(change);
+    solution.residual_history.push_back(change);
+    // Step 5: stop when the sequence no longer changes.
+    if (change < options.tolerance) {
+      solution.converged = true;
+      solution.status = "converged";
+      break;
+    }
+    if (!std::isfinite(change)) {
+      solution.status = "non-finite";
+      break;
+    }
+  }
+  if (solution.status.empty()) solution.status = "outer-not-converged";
+  // Step 6: the trajectory for the final {xi_k}.
+  if (!detail::record_solution(scheme, TangentOf<G>(v0), CovectorOf<G>::Zero(), &xi, solution)) {
+    solution.converged = false;
+    solution.status = "non-finite";
+  }
+  std::ostringstream message;
+  message << "two-level: " << solution.status << " after " << solution.outer_iterations << " outer and "
+          << solution.inner_iterations << " inner iterations, " << solution.sweeps
+          << " sweeps; outer changes max|xi_new - xi_old| = [" << history.str() << "]; terminal error "
+          << format_value(solution.terminal_error);
+  if (!solution.message.empty()) message << "; " << solution.message;
+  solution.message = message.str();
+  solution.solve_time_s = detail::seconds_since(start);
+  return solution;
+}
+
+template <LieGroup G, ReducedLagrangian<G> L>
+TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, const TwoLevelOptions& options = {}) {
+  problem.validate();
+  return solve_two_level(problem, options, geodesic_guess(problem));
+}
+
+}  // namespace cartan
