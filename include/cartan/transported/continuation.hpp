@@ -42,6 +42,13 @@ namespace detail {
 
 /// Walks a scalar parameter from `from` to `to`, solving with the previous solution as the
 /// guess; `make(s)` builds the problem at parameter s. Accumulates counts into `total`.
+/// Every solve on the path is capped at quick_iterations: a slower one would be rejected anyway.
+inline ShootingOptions quick_shooting(const ContinuationOptions& options) {
+  ShootingOptions quick = options.shooting;
+  quick.max_iterations = std::min(quick.max_iterations, options.quick_iterations);
+  return quick;
+}
+
 template <LieGroup G, class MakeProblem>
 TransportedSolution<G> continue_parameter(const MakeProblem& make, double from, double to,
                                           TransportedSolution<G> start, const ContinuationOptions& options,
@@ -53,7 +60,7 @@ TransportedSolution<G> continue_parameter(const MakeProblem& make, double from, 
   while (s != to && stages < options.max_stages) {
     const double next = std::abs(to - s) <= std::abs(increment) ? to : s + increment;
     ++stages;
-    TransportedSolution<G> trial = solve_shooting(make(next), options.shooting, current.v0, current.xi0);
+    TransportedSolution<G> trial = solve_shooting(make(next), quick_shooting(options), current.v0, current.xi0);
     sweeps += trial.sweeps;
     iterations += trial.inner_iterations;
     if (trial.converged && trial.inner_iterations <= options.quick_iterations) {
@@ -97,7 +104,7 @@ TransportedSolution<G> solve_continuation_in_T(const TransportedProblem<G, L>& p
   int sweeps = 0, iterations = 0;
   for (int halving = 0; halving <= options.max_halvings; ++halving, start /= 2) {
     const auto p = make(start);
-    first = solve_shooting(p, options.shooting, geodesic_guess(p), CovectorOf<G>::Zero());
+    first = solve_shooting(p, detail::quick_shooting(options), geodesic_guess(p), CovectorOf<G>::Zero());
     sweeps += first.sweeps;
     iterations += first.inner_iterations;
     if (first.converged && first.inner_iterations <= options.quick_iterations) break;
@@ -141,7 +148,7 @@ TransportedSolution<G> solve_continuation_in_lambda(const TransportedProblem<G, 
     return p;
   };
   const auto p0 = make(lambda_start);
-  TransportedSolution<G> first = solve_shooting(p0, options.shooting, geodesic_guess(p0), CovectorOf<G>::Zero());
+  TransportedSolution<G> first = solve_shooting(p0, detail::quick_shooting(options), geodesic_guess(p0), CovectorOf<G>::Zero());
   std::ostringstream path;
   int stages = 0;
   TransportedSolution<G> result = first;

@@ -1,0 +1,176 @@
+#include "problem_spec.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <Eigen/Dense>
+
+#include "cartan/errors.hpp"
+
+namespace cartan::cli {
+
+namespace {
+
+[[noreturn]] void bad(const std::string& name, const std::string& value, const std::string& problem) {
+  throw_invalid("cartan solve", name, value, problem);
+}
+
+std::string join(const std::vector<double>& values) {
+  std::ostringstream out;
+  for (std::size_t i = 0; i < values.size(); ++i) out << (i ? "," : "") << format_value(values[i]);
+  return out.str();
+}
+
+std::vector<double> json_numbers(const nlohmann::json& value, const std::string& key) {
+  if (value.is_string()) return parse_list(value.get<std::string>(), key);
+  if (!value.is_array()) bad(key, value.dump(), "must be a list of numbers");
+  std::vector<double> out;
+  for (const auto& x : value) {
+    if (x.is_array()) {
+      for (const auto& y : x) {  // a matrix given as rows
+        if (!y.is_number()) bad(key, value.dump(), "must contain only numbers");
+        out.push_back(y.get<double>());
+      }
+    } else {
+      if (!x.is_number()) bad(key, value.dump(), "must contain only numbers");
+      out.push_back(x.get<double>());
+    }
+  }
+  return out;
+}
+
+double json_number(const nlohmann::json& value, const std::string& key) {
+  if (!value.is_number()) bad(key, value.dump(), "must be a number");
+  return value.get<double>();
+}
+
+int json_int(const nlohmann::json& value, const std::string& key) {
+  if (!value.is_number_integer() && !(value.is_number() && std::floor(value.get<double>()) == value.get<double>())) {
+    bad(key, value.dump(), "must be an integer");
+  }
+  const double x = value.get<double>();
+  if (std::abs(x) > 2e9) bad(key, value.dump(), "is out of range");
+  return static_cast<int>(x);
+}
+
+std::string json_string(const nlohmann::json& value, const std::string& key) {
+  if (!value.is_string()) bad(key, value.dump(), "must be a string");
+  return value.get<std::string>();
+}
+
+void require_one_of(const std::string& name, const std::string& value, const std::vector<std::string>& choices) {
+  if (std::find(choices.begin(), choices.end(), value) == choices.end()) {
+    std::string list;
+    for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
+    bad(name, "\"" + value + "\"", "is not one of: " + list);
+  }
+}
+
+void require_size(const std::string& name, const std::vector<double>& values, std::size_t size,
+                  const std::string& what) {
+  if (values.size() != size) {
+    bad(name, join(values), "must have " + std::to_string(size) + " numbers (" + what + ")");
+  }
+  for (double x : values) {
+    if (!std::isfinite(x)) bad(name, join(values), "contains a non-finite number");
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& available_methods() {
+  static const std::vector<std::string> methods{"two-level", "shooting"};
+  return methods;
+}
+
+std::vector<double> parse_list(const std::string& text, const std::string& name) {
+  std::vector<double> out;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    const auto first = item.find_first_not_of(" \t");
+    const auto last = item.find_last_not_of(" \t");
+    const std::string trimmed = first == std::string::npos ? "" : item.substr(first, last - first + 1);
+    std::size_t used = 0;
+    double value = 0;
+    try {
+      value = std::stod(trimmed, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (trimmed.empty() || used != trimmed.size()) bad(name, "\"" + text + "\"", "is not a comma-separated list of numbers");
+    out.push_back(value);
+  }
+  if (out.empty()) bad(name, "\"" + text + "\"", "is empty");
+  return out;
+}
+
+void apply_json(ProblemSpec& spec, const nlohmann::json& file) {
+  if (!file.is_object()) bad("problem file", file.dump().substr(0, 80), "must be a JSON object");
+  for (const auto& [key, value] : file.items()) {
+    if (key == "group") spec.group = json_string(value, key);
+    else if (key == "model") spec.model = json_string(value, key);
+    else if (key == "inertia") spec.inertia = json_numbers(value, key);
+    else if (key == "lambda") spec.lambda = json_number(value, key);
+    else if (key == "T") spec.T = json_number(value, key);
+    else if (key == "N") spec.N = json_int(value, key);
+    else if (key == "g0") spec.g0 = json_numbers(value, key);
+    else if (key == "gT") spec.gT = json_numbers(value, key);
+    else if (key == "a0") spec.a0 = json_numbers(value, key);
+    else if (key == "aT") spec.aT = json_numbers(value, key);
+    else if (key == "method") spec.method = json_string(value, key);
+    else if (key == "order") spec.order = json_int(value, key);
+    else if (key == "tol") spec.tol = json_number(value, key);
+    else if (key == "samples") spec.samples = json_int(value, key);
+    else if (key == "max_iterations") spec.max_iterations = json_int(value, key);
+    else if (key == "output") spec.output = json_string(value, key);
+    else bad("key \"" + key + "\"", value.dump(), "is not a problem-file key");
+  }
+}
+
+void validate(ProblemSpec& spec) {
+  require_one_of("group", spec.group, {"so3", "heisenberg"});
+  require_one_of("model", spec.model, spec.group == "so3" ? std::vector<std::string>{"free-rigid-body", "oscillator"}
+                                                           : std::vector<std::string>{"oscillator"});
+  require_one_of("method", spec.method, available_methods());
+  if (spec.order != 1 && spec.order != 2) bad("order", std::to_string(spec.order), "must be 1 or 2");
+  if (!std::isfinite(spec.lambda)) bad("lambda", format_value(spec.lambda), "is not finite");
+  if (!(std::isfinite(spec.T) && spec.T > 0)) bad("T", format_value(spec.T), "must be positive and finite");
+  if (spec.N < 1) bad("N", std::to_string(spec.N), "must be at least 1");
+  // Memory: the trajectory keeps ~20 numbers per node; refuse sizes that cannot fit in 16 GiB.
+  if (spec.N > 50'000'000) bad("N", std::to_string(spec.N), "is too large (at most 50000000 steps)");
+  if (!(std::isfinite(spec.tol) && spec.tol > 0)) bad("tol", format_value(spec.tol), "must be positive and finite");
+  if (spec.max_iterations < 1) bad("max_iterations", std::to_string(spec.max_iterations), "must be at least 1");
+  if (spec.samples < 0) bad("samples", std::to_string(spec.samples), "must be non-negative");
+  if (spec.inertia.empty()) spec.inertia = spec.group == "so3" ? std::vector<double>{2, 3, 4} : std::vector<double>{1, 1, 1};
+  require_size("inertia", spec.inertia, 3, "the diagonal of the inertia");
+  for (double x : spec.inertia) {
+    if (!(x > 0)) bad("inertia", join(spec.inertia), "is not positive definite (entries must be > 0)");
+  }
+  const std::size_t element_size = spec.group == "so3" ? 9 : 3;
+  const std::string element_what = spec.group == "so3" ? "a rotation matrix, row-major" : "coordinates a,b,c";
+  if (spec.g0.empty()) {
+    spec.g0 = spec.group == "so3" ? std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1} : std::vector<double>{0, 0, 0};
+  }
+  require_size("g0", spec.g0, element_size, element_what);
+  const bool directions = !spec.a0.empty() || !spec.aT.empty();
+  if (directions) {
+    if (spec.group != "so3") bad("a0/aT", join(spec.a0) + " / " + join(spec.aT), "are only for --group so3");
+    if (!spec.gT.empty()) bad("gT", join(spec.gT), "conflicts with a0/aT: give one or the other");
+    require_size("a0", spec.a0, 3, "a direction");
+    require_size("aT", spec.aT, 3, "a direction");
+    const Eigen::Vector3d a0(spec.a0.data()), aT(spec.aT.data());
+    if (a0.norm() == 0) bad("a0", join(spec.a0), "has zero length");
+    if (aT.norm() == 0) bad("aT", join(spec.aT), "has zero length");
+    if (a0.normalized().cross(aT.normalized()).norm() < 1e-12 && a0.dot(aT) < 0) {
+      bad("a0/aT", join(spec.a0) + " / " + join(spec.aT),
+          "are antiparallel: the minimal rotation is not unique (give --gT instead)");
+    }
+  } else {
+    if (spec.gT.empty()) bad("gT", "(missing)", "is required (or, for so3, a0 and aT)");
+    require_size("gT", spec.gT, element_size, element_what);
+  }
+}
+
+}  // namespace cartan::cli

@@ -1,0 +1,45 @@
+#pragma once
+// One validated description of a `cartan solve` problem, built from a JSON problem file and/or
+// command-line flags (flags override the file). Validation happens here, at the edge
+// (DESIGN.md); everything below may assume valid input.
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cartan::cli {
+
+struct ProblemSpec {
+  std::string group = "so3";            ///< so3 | heisenberg
+  std::string model = "free-rigid-body";  ///< free-rigid-body | oscillator
+  std::vector<double> inertia;          ///< 3 numbers (diagonal); default 2,3,4 (so3), 1,1,1 (heisenberg)
+  double lambda = 0.5;
+  double T = 1.0;
+  int N = 100;
+  std::vector<double> g0;               ///< so3: 9 numbers row-major; heisenberg: a,b,c
+  std::vector<double> gT;
+  std::vector<double> a0, aT;           ///< so3 only: gT = minimal rotation taking a0 to aT
+  std::string method = "shooting";      ///< two-level | shooting (with continuation in T as fallback)
+  int order = 1;
+  double tol = 1e-10;
+  int samples = 0;                      ///< reserved for collocation output sampling
+  int max_iterations = 200;
+  std::string output;                   ///< empty: stdout
+};
+
+/// Overwrites fields of `spec` with the keys present in `file` (a JSON object). Unknown keys and
+/// wrong types throw std::invalid_argument naming the key.
+void apply_json(ProblemSpec& spec, const nlohmann::json& file);
+
+/// Parses "x,y,z" into numbers; throws std::invalid_argument naming `name` on a bad entry.
+std::vector<double> parse_list(const std::string& text, const std::string& name);
+
+/// Checks every field and fills defaults (inertia; g0 = identity). Throws std::invalid_argument
+/// naming the first bad value.
+void validate(ProblemSpec& spec);
+
+/// The methods `cartan solve` accepts.
+const std::vector<std::string>& available_methods();
+
+}  // namespace cartan::cli

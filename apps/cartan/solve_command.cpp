@@ -1,0 +1,98 @@
+#include "solve_command.hpp"
+
+#include "cartan/models/heisenberg_oscillator.hpp"
+#include "cartan/models/rigid_body.hpp"
+#include "cartan/transported/continuation.hpp"
+#include "cartan/transported/two_level.hpp"
+
+namespace cartan::cli {
+
+namespace {
+
+/// Input rotation matrices are accepted within this tolerance and projected onto SO(3), so that
+/// matrices printed with 7 or more digits can be passed back in.
+constexpr double kRotationInputTolerance = 1e-6;
+
+SO3::Element rotation(const std::vector<double>& rowmajor, const std::string& name) {
+  Eigen::Matrix3d m;
+  for (int i = 0; i < 9; ++i) m(i / 3, i % 3) = rowmajor[static_cast<std::size_t>(i)];
+  try {
+    return SO3::from_matrix(m, kRotationInputTolerance);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string(e.what()).replace(0, std::string("SO3: matrix").size(), "cartan solve: " + name));
+  }
+}
+
+nlohmann::json rows(const std::vector<SO3::Element>& g) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& m : g) out.push_back({m(0, 0), m(0, 1), m(0, 2), m(1, 0), m(1, 1), m(1, 2), m(2, 0), m(2, 1), m(2, 2)});
+  return out;
+}
+
+template <class Vec>
+nlohmann::json rows(const std::vector<Vec>& x) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& v : x) out.push_back({v[0], v[1], v[2]});
+  return out;
+}
+
+template <LieGroup G, ReducedLagrangian<G> L>
+nlohmann::json run(const ProblemSpec& spec, const TransportedProblem<G, L>& problem) {
+  const SchemeOrder order = spec.order == 2 ? SchemeOrder::Second : SchemeOrder::First;
+  TransportedSolution<G> s;
+  if (spec.method == "two-level") {
+    s = solve_two_level(problem, {.order = order, .tolerance = spec.tol, .max_outer = spec.max_iterations,
+                                  .max_inner = spec.max_iterations});
+    s.branch = "direct from the geodesic guess";
+  } else {
+    s = solve_continuation_in_T(problem, {.shooting = {.order = order, .tolerance = spec.tol,
+                                                       .max_iterations = spec.max_iterations}});
+    s.method = "shooting";
+  }
+  const auto& tr = s.trajectory;
+  return {
+      {"status", s.status},
+      {"message", s.message},
+      {"group", spec.group},
+      {"model", spec.model},
+      {"lambda", spec.lambda},
+      {"T", spec.T},
+      {"N", spec.N},
+      {"method", s.method},
+      {"order", spec.order},
+      {"branch", s.branch},
+      {"t", tr.t},
+      {"g", rows(tr.g)},
+      {"v", rows(tr.v)},
+      {"mu", rows(tr.mu)},
+      {"xi", rows(tr.xi)},
+      {"terminal_error", s.terminal_error},
+      {"xi_terminal", s.xi_terminal},
+      {"iterations", {{"outer", s.outer_iterations}, {"inner", s.inner_iterations}, {"sweeps", s.sweeps}}},
+      {"solve_time_s", s.solve_time_s},
+  };
+}
+
+}  // namespace
+
+nlohmann::json solve(const ProblemSpec& spec) {
+  const Eigen::Vector3d inertia(spec.inertia[0], spec.inertia[1], spec.inertia[2]);
+  if (spec.group == "heisenberg") {
+    const Heisenberg::Element g0(spec.g0[0], spec.g0[1], spec.g0[2]);
+    const Heisenberg::Element gT(spec.gT[0], spec.gT[1], spec.gT[2]);
+    const TransportedProblem<Heisenberg, H3Oscillator> problem{H3Oscillator(inertia.asDiagonal().toDenseMatrix()),
+                                                               spec.lambda, spec.T, spec.N, g0, gT};
+    return run(spec, problem);
+  }
+  const SO3::Element g0 = rotation(spec.g0, "g0");
+  const SO3::Element gT = spec.a0.empty()
+                              ? rotation(spec.gT, "gT")
+                              : SO3::minimal_rotation(Eigen::Vector3d(spec.a0.data()), Eigen::Vector3d(spec.aT.data()));
+  const Eigen::Matrix3d inertia_matrix = inertia.asDiagonal();
+  if (spec.model == "oscillator") {
+    return run(spec, TransportedProblem<SO3, SO3Oscillator>{SO3Oscillator(inertia_matrix), spec.lambda, spec.T, spec.N, g0, gT});
+  }
+  return run(spec, TransportedProblem<SO3, RigidBody>{RigidBody(inertia_matrix), spec.lambda, spec.T, spec.N, g0, gT});
+}
+
+}  // namespace cartan::cli
