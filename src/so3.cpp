@@ -20,19 +20,38 @@ SO3::Tangent SO3::vee(const MatrixRep& x) {
   return Tangent(x(2, 1) - x(1, 2), x(0, 2) - x(2, 0), x(1, 0) - x(0, 1)) / 2;
 }
 
-SO3::Element SO3::exp(const Tangent& v) {
-  const double t2 = v.squaredNorm();
-  const double t = std::sqrt(t2);
-  double a, b;  // sin(t)/t and (1 - cos t)/t^2
-  if (t < kSmallAngle) {
-    a = 1 - t2 / 6 * (1 - t2 / 20);
-    b = 0.5 - t2 / 24 * (1 - t2 / 30);
-  } else {
-    a = std::sin(t) / t;
-    b = (1 - std::cos(t)) / t2;
+SO3::AngleCoefficients SO3::angle_coefficients(double t) {
+  const double t2 = t * t;
+  if (std::abs(t) < kSmallAngle) {  // first omitted terms are O(t^6) relative
+    return {1 - t2 / 6 * (1 - t2 / 20), 0.5 - t2 / 24 * (1 - t2 / 30), (1 - t2 / 20 * (1 - t2 / 42)) / 6,
+            (1 + t2 / 60 * (1 + t2 / 42)) / 12};
   }
+  // (1 - cos t)/t^2 = (sin(t/2)/(t/2))^2 / 2 without the cancellation in 1 - cos t (relative
+  // error eps/t^2), which the left Jacobian would multiply by |hat(v)| = t, not t^2. The two
+  // other differences lose digits the same way but multiply hat(v)^2, so their absolute error
+  // there stays O(eps).
+  const double half = t / 2;
+  const double sin_half_over_half = std::sin(half) / half;
+  return {std::sin(t) / t, sin_half_over_half * sin_half_over_half / 2, (t - std::sin(t)) / (t2 * t),
+          (1 - half / std::tan(half)) / t2};
+}
+
+SO3::Element SO3::exp(const Tangent& v) {
+  const AngleCoefficients k = angle_coefficients(v.norm());
   const MatrixRep w = hat(v);
-  return Element::Identity() + a * w + b * w * w;
+  return Element::Identity() + k.sin_over_t * w + k.one_minus_cos_over_t2 * w * w;
+}
+
+Eigen::Matrix3d SO3::left_jacobian(const Tangent& v) {
+  const AngleCoefficients k = angle_coefficients(v.norm());
+  const MatrixRep w = hat(v);
+  return Eigen::Matrix3d::Identity() + k.one_minus_cos_over_t2 * w + k.t_minus_sin_over_t3 * w * w;
+}
+
+Eigen::Matrix3d SO3::left_jacobian_inverse(const Tangent& v) {
+  const AngleCoefficients k = angle_coefficients(v.norm());
+  const MatrixRep w = hat(v);
+  return Eigen::Matrix3d::Identity() - w / 2 + k.one_minus_half_cot_over_t2 * w * w;
 }
 
 SO3::Tangent SO3::log(const Element& r) {

@@ -28,8 +28,24 @@ struct SO3 {
   static Element compose(const Element& a, const Element& b) { return a * b; }
   static Element inverse(const Element& r) { return r.transpose(); }
 
+  /// The scalar functions of the angle t = |v| in the closed forms of SO(3) and of the rigid
+  /// motion groups built on it (SE(2), SE(3)); Taylor series when t < kSmallAngle.
+  struct AngleCoefficients {
+    double sin_over_t;                 // sin t / t
+    double one_minus_cos_over_t2;      // (1 - cos t) / t^2
+    double t_minus_sin_over_t3;        // (t - sin t) / t^3
+    double one_minus_half_cot_over_t2; // (1 - (t/2) cot(t/2)) / t^2, finite for |t| < 2 pi
+  };
+  static AngleCoefficients angle_coefficients(double t);
+
   /// Rodrigues' formula exp(hat(v)) = I + (sin t / t) hat(v) + ((1 - cos t)/t^2) hat(v)^2.
   static Element exp(const Tangent& v);
+  /// Left Jacobian of exp, J(v) = sum_k ad_v^k / (k+1)!
+  ///   = I + ((1 - cos t)/t^2) hat(v) + ((t - sin t)/t^3) hat(v)^2,
+  /// so that d/ds exp(v + s w) at s = 0 equals hat(J(v) w) exp(v).
+  static Eigen::Matrix3d left_jacobian(const Tangent& v);
+  /// J(v)^{-1} = I - hat(v)/2 + ((1 - (t/2) cot(t/2))/t^2) hat(v)^2, for t = |v| < 2 pi.
+  static Eigen::Matrix3d left_jacobian_inverse(const Tangent& v);
   /// Principal logarithm, |log R| in [0, pi]. Stable near 0 (series) and near pi (axis from
   /// the symmetric part of R). At exactly pi either of the two logarithms may be returned.
   static Tangent log(const Element& r);

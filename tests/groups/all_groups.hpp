@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "cartan/heisenberg.hpp"
+#include "cartan/se2.hpp"
+#include "cartan/se3.hpp"
 #include "cartan/so3.hpp"
 
 namespace cartan::testing {
-using AllGroups = ::testing::Types<SO3, Heisenberg>;
+using AllGroups = ::testing::Types<SO3, Heisenberg, SE3, SE2, SO3Generic, SE3Generic, SE2Generic>;
 }
