@@ -21,11 +21,9 @@ struct LagrangianHessian {
 /// Central-difference step: truncation ~ step^2 |l'''|, rounding ~ 1e-16 / step: both ~1e-10.
 inline constexpr double kHessianStep = 1e-5;
 
+/// Second derivatives by central differences of momentum and group_gradient.
 template <LieGroup G, ReducedLagrangian<G> L>
-LagrangianHessian<G> lagrangian_hessian(const L& l, double t, const ElementOf<G>& g, const TangentOf<G>& v) {
-  if constexpr (requires { { l.hessian(t, g, v) } -> std::convertible_to<LagrangianHessian<G>>; }) {
-    return l.hessian(t, g, v);
-  } else {
+LagrangianHessian<G> lagrangian_hessian_fd(const L& l, double t, const ElementOf<G>& g, const TangentOf<G>& v) {
     LagrangianHessian<G> out;
     const double hv = kHessianStep * (1 + v.cwiseAbs().maxCoeff());
     const double hg = kHessianStep;
@@ -43,6 +41,15 @@ LagrangianHessian<G> lagrangian_hessian(const L& l, double t, const ElementOf<G>
           (CovectorOf<G>(l.group_gradient(t, gp, v)) - CovectorOf<G>(l.group_gradient(t, gm, v))) / (2 * hg);
     }
     return out;
+}
+
+/// The model's analytic `hessian(t, g, v)` when it has one, central differences otherwise.
+template <LieGroup G, ReducedLagrangian<G> L>
+LagrangianHessian<G> lagrangian_hessian(const L& l, double t, const ElementOf<G>& g, const TangentOf<G>& v) {
+  if constexpr (requires { { l.hessian(t, g, v) } -> std::convertible_to<LagrangianHessian<G>>; }) {
+    return l.hessian(t, g, v);
+  } else {
+    return lagrangian_hessian_fd<G>(l, t, g, v);
   }
 }
 

@@ -16,6 +16,16 @@ struct HeisenbergQuadraticPotential {
   Heisenberg::Tangent left_gradient(const Heisenberg::Element& g) const {
     return {g[0], g[1] + g[0] * g[2], g[2]};
   }
+  /// g exp(e w) moves the coordinates by e (w1, w2, w3 + a w2) (left-Heis), so
+  /// d dV = (w1, w2 + c w1 + a (w3 + a w2), w3 + a w2).
+  Heisenberg::AlgebraMatrix left_hessian(const Heisenberg::Element& g) const {
+    const double a = g[0], c = g[2];
+    Heisenberg::AlgebraMatrix h;
+    h << 1, 0, 0,     //
+        c, 1 + a * a, a,  //
+        0, a, 1;
+    return h;
+  }
 };
 
 using H3Oscillator = NaturalLagrangian<Heisenberg, HeisenbergQuadraticPotential>;

@@ -6,7 +6,9 @@
 // Group gradients (left-trivialised, lagrangian.hpp): zeta_l = -dV, zeta_h = +dV, where
 // dV . w = d/de V(g exp(e w)). The right-reduced forms are in models/right_reduced.hpp.
 //
-// A Potential type provides `double value(g)` and `Covector left_gradient(g)` (= dV above).
+// A Potential type provides `double value(g)` and `Covector left_gradient(g)` (= dV above), and
+// optionally `left_hessian(g)`: the matrix whose column i is d/de dV(g exp(e E_i)) (central
+// differences of dV are used when it is missing).
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -16,6 +18,7 @@
 
 #include "cartan/errors.hpp"
 #include "cartan/group.hpp"
+#include "cartan/lagrangian_hessian.hpp"
 
 namespace cartan {
 
@@ -30,7 +33,25 @@ template <LieGroup G>
 struct ZeroPotential {
   double value(const ElementOf<G>&) const { return 0; }
   CovectorOf<G> left_gradient(const ElementOf<G>&) const { return CovectorOf<G>::Zero(); }
+  AlgebraMatrixOf<G> left_hessian(const ElementOf<G>&) const { return AlgebraMatrixOf<G>::Zero(); }
 };
+
+/// Column i: d/de dV(g exp(e E_i)), from the potential or by central differences (step 1e-5).
+template <LieGroup G, Potential<G> V>
+AlgebraMatrixOf<G> potential_left_hessian(const V& potential, const ElementOf<G>& g) {
+  if constexpr (requires { { potential.left_hessian(g) } -> std::convertible_to<AlgebraMatrixOf<G>>; }) {
+    return potential.left_hessian(g);
+  } else {
+    AlgebraMatrixOf<G> out;
+    for (int i = 0; i < G::kDim; ++i) {
+      const TangentOf<G> e = TangentOf<G>::Unit(i) * kHessianStep;
+      out.col(i) = (CovectorOf<G>(potential.left_gradient(G::compose(g, G::exp(e)))) -
+                    CovectorOf<G>(potential.left_gradient(G::compose(g, G::exp(TangentOf<G>(-e)))))) /
+                   (2 * kHessianStep);
+    }
+    return out;
+  }
+}
 
 /// A validated inertia: symmetric (to relative 1e-12; then symmetrised exactly), finite and
 /// positive definite (smallest eigenvalue > 1e-14 x largest). Throws std::invalid_argument

@@ -21,6 +21,12 @@ namespace cartan {
 struct SO3TracePotential {
   double value(const SO3::Element& g) const { return (3 - g.trace()) / 2; }
   SO3::Tangent left_gradient(const SO3::Element& g) const { return SO3::vee(g); }  // vee reads Skew(g)
+  /// d/de vee(Skew(g exp(e E_i))) = vee(Skew(g hat(E_i))).
+  SO3::AlgebraMatrix left_hessian(const SO3::Element& g) const {
+    SO3::AlgebraMatrix h;
+    for (int i = 0; i < 3; ++i) h.col(i) = SO3::vee(g * SO3::hat(SO3::Tangent::Unit(i)));
+    return h;
+  }
 };
 
 using RigidBody = NaturalLagrangian<SO3, ZeroPotential<SO3>>;
