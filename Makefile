@@ -6,7 +6,7 @@ BUILD_ASAN ?= build-asan
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build build-asan test test-release test-asan run clean
+.PHONY: all deps build build-asan test test-release test-asan run bench clean
 
 all: build
 
@@ -32,6 +32,11 @@ test: test-release test-asan
 
 run: build
 	bash scripts/run-experiments.sh $(BUILD)
+
+# Benchmarks (not part of the tests): Google Benchmark, then C++ vs Python side by side.
+bench: build
+	$(BUILD)/bench/bench_transported --benchmark_min_time=0.2 | tee out/bench_transported.txt
+	/usr/bin/python3 bench/compare_with_python.py --cartan $(BUILD)/cartan --repeat 3 --markdown out/bench_compare.md
 
 clean:
 	rm -rf $(BUILD) $(BUILD_ASAN) out
