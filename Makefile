@@ -18,7 +18,7 @@ build: deps
 	cmake --build $(BUILD) -j $(JOBS)
 
 build-asan: deps
-	cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=Debug -DCARTAN_SANITIZE=ON -DCARTAN_BUILD_BENCH=OFF $(CMAKE_FLAGS)
+	cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCARTAN_SANITIZE=ON -DCARTAN_BUILD_BENCH=OFF $(CMAKE_FLAGS)
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
 
 test-release: build
@@ -35,6 +35,7 @@ run: build
 
 # Benchmarks (not part of the tests): Google Benchmark, then C++ vs Python side by side.
 bench: build
+	mkdir -p out
 	$(BUILD)/bench/bench_transported --benchmark_min_time=0.2 | tee out/bench_transported.txt
 	/usr/bin/python3 bench/compare_with_python.py --cartan $(BUILD)/cartan --repeat 3 --markdown out/bench_compare.md
 

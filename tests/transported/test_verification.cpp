@@ -143,6 +143,25 @@ TEST(TransportedVerification, InversionReflectionSymmetryOfTheFreeBody) {
   EXPECT_LE(worst, 1e-10);
 }
 
+// Convergence to the continuous solution against a fine reference (order 2, N = 6400; its error
+// ~(h/16)^2 is far below the coarse errors): the discrete v0 and g(T/2) converge at order 1 for
+// the paper's scheme and order 2 for ours (within 0.25 on N = 200 -> 400 -> 800), lambda = 1/2.
+TEST(TransportedVerification, ConvergenceOrderAgainstFineReference) {
+  const auto reference = solve_or_fail(paper_oscillator(0.5, 6400, 3.0), SchemeOrder::Second);
+  const Eigen::Matrix3d g_mid = reference.trajectory.g[3200];
+  for (SchemeOrder order : {SchemeOrder::First, SchemeOrder::Second}) {
+    std::vector<double> error;
+    for (int N : {200, 400, 800}) {
+      const auto s = solve_or_fail(paper_oscillator(0.5, N, 3.0), order);
+      const Eigen::Vector3d dg = SO3::log(g_mid.transpose() * s.trajectory.g[static_cast<std::size_t>(N / 2)]);
+      error.push_back(std::max((s.v0 - reference.v0).norm(), dg.norm()));
+    }
+    const double expected = static_cast<double>(order);
+    EXPECT_NEAR(observed_order(error[0], error[1]), expected, 0.25) << error[0] << " " << error[1] << " " << error[2];
+    EXPECT_NEAR(observed_order(error[1], error[2]), expected, 0.25) << error[0] << " " << error[1] << " " << error[2];
+  }
+}
+
 // The paper's six cases with the default path (direct shooting when it converges quickly,
 // continuation in T otherwise): all converge with terminal error below the paper's tolerance.
 TEST(TransportedVerification, SixPaperCasesConverge) {
