@@ -107,6 +107,21 @@ class TransportedScheme {
     return d;
   }
 
+  /// Tangent of an arbitrary node along its own state, 4n columns: gamma, chi, mu, xi in turn
+  /// (identity blocks), and v = (dl/dv)^{-1}(mu) follows: dv = M_v^{-1} (dmu - M_g gamma).
+  /// Multiple shooting starts its segments with it.
+  NodeTangent state_tangent(const Node& node) const {
+    NodeTangent d;
+    for (Directions* m : {&d.gamma, &d.chi, &d.mu, &d.xi}) m->setZero(n, 4 * n);
+    d.gamma.leftCols(n).setIdentity();
+    d.chi.middleCols(n, n).setIdentity();
+    d.mu.middleCols(2 * n, n).setIdentity();
+    d.xi.rightCols(n).setIdentity();
+    d.hessian = lagrangian_hessian<G>(problem_.lagrangian, node.t, node.g, node.v);
+    d.v = d.hessian.momentum_v.lu().solve(Directions(d.mu - d.hessian.momentum_g * d.gamma));
+    return d;
+  }
+
   /// One step from `node` (at t_k). In `given` mode (xi_next set) the node's xi is the given
   /// xi_k and the result gets xi_{k+1} = *xi_next. Returns the effective xi rate used, so that
   /// xi_{k+1} = xi_k + h * rate.

@@ -4,6 +4,8 @@
 #include <exception>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cartan/transported/scheme.hpp"
 
@@ -19,32 +21,28 @@ struct SweepOutput {
   std::string failure;                                ///< why the sweep stopped early
 };
 
-/// Runs the N steps. `given_xi` (N+1 values) selects the paper's mode with a prescribed xi
-/// sequence; otherwise xi is integrated forward from xi0. With `tangent_columns` > 0 the
-/// tangent-linear map is propagated along (directions: v0, then xi0). Returns false, with
+/// Runs steps first..last-1 from `node` (node `first`, at t_first) - one segment of a sweep.
+/// With `tangent` set, its directions are propagated along. `given_xi` and `out` as in
+/// forward_sweep (xi rates are stored at their global step index). Returns false, with
 /// `out.failure` set, if the state became non-finite or the inverse Legendre map failed.
 template <LieGroup G, ReducedLagrangian<G> L>
-bool forward_sweep(const TransportedScheme<G, L>& scheme, const TangentOf<G>& v0, const CovectorOf<G>& xi0,
-                   const std::vector<CovectorOf<G>>* given_xi, int tangent_columns, SweepOutput<G, L>& out) {
-  using Scheme = TransportedScheme<G, L>;
-  const int steps = scheme.problem().N;
+bool sweep_segment(const TransportedScheme<G, L>& scheme, SchemeNode<G> node,
+                   std::optional<typename TransportedScheme<G, L>::NodeTangent> tangent, int first, int last,
+                   const std::vector<CovectorOf<G>>* given_xi, SweepOutput<G, L>& out) {
   try {
-    SchemeNode<G> node = scheme.initial(v0, given_xi ? (*given_xi)[0] : xi0);
     SchemeNode<G> next;
-    typename Scheme::NodeTangent d, dnext;
-    if (tangent_columns > 0) d = scheme.initial_tangent(node, tangent_columns);
+    typename TransportedScheme<G, L>::NodeTangent dnext;
     if (out.trajectory) {
       *out.trajectory = {};
-      out.trajectory->reserve(static_cast<std::size_t>(steps) + 1);
+      out.trajectory->reserve(static_cast<std::size_t>(last - first) + 1);
       out.trajectory->push(node);
     }
-    if (out.xi_rates) out.xi_rates->resize(static_cast<std::size_t>(steps));
-    for (int k = 0; k < steps; ++k) {
+    for (int k = first; k < last; ++k) {
       const CovectorOf<G>* xi_next = given_xi ? &(*given_xi)[static_cast<std::size_t>(k) + 1] : nullptr;
       CovectorOf<G> rate;
-      if (tangent_columns > 0) {
-        rate = scheme.step_tangent(node, d, next, dnext, xi_next);
-        std::swap(d, dnext);
+      if (tangent) {
+        rate = scheme.step_tangent(node, *tangent, next, dnext, xi_next);
+        std::swap(*tangent, dnext);
       } else {
         rate = scheme.step(node, next, xi_next);
       }
@@ -57,12 +55,33 @@ bool forward_sweep(const TransportedScheme<G, L>& scheme, const TangentOf<G>& v0
       if (out.trajectory) out.trajectory->push(node);
     }
     out.last = node;
-    if (tangent_columns > 0) out.tangent = std::move(d);
+    out.tangent = std::move(tangent);
     return true;
   } catch (const std::exception& e) {
     out.failure = e.what();
     return false;
   }
+}
+
+/// Runs the N steps. `given_xi` (N+1 values) selects the paper's mode with a prescribed xi
+/// sequence; otherwise xi is integrated forward from xi0. With `tangent_columns` > 0 the
+/// tangent-linear map is propagated along (directions: v0, then xi0). Returns false, with
+/// `out.failure` set, if the state became non-finite or the inverse Legendre map failed.
+template <LieGroup G, ReducedLagrangian<G> L>
+bool forward_sweep(const TransportedScheme<G, L>& scheme, const TangentOf<G>& v0, const CovectorOf<G>& xi0,
+                   const std::vector<CovectorOf<G>>* given_xi, int tangent_columns, SweepOutput<G, L>& out) {
+  SchemeNode<G> node;
+  std::optional<typename TransportedScheme<G, L>::NodeTangent> tangent;
+  try {
+    node = scheme.initial(v0, given_xi ? (*given_xi)[0] : xi0);
+    if (tangent_columns > 0) tangent = scheme.initial_tangent(node, tangent_columns);
+  } catch (const std::exception& e) {
+    out.failure = e.what();
+    return false;
+  }
+  const int steps = scheme.problem().N;
+  if (out.xi_rates) out.xi_rates->resize(static_cast<std::size_t>(steps));
+  return sweep_segment(scheme, std::move(node), std::move(tangent), 0, steps, given_xi, out);
 }
 
 }  // namespace cartan
