@@ -125,6 +125,14 @@ class NaturalLagrangian : public NaturalSystem<G, V> {
   CovectorOf<G> group_gradient(double, const ElementOf<G>& g, const TangentOf<G>&) const {
     return -this->potential().left_gradient(g);
   }
+  /// Analytic second derivatives (lagrangian_hessian.hpp): mu = I v depends on v only and
+  /// zeta = -dV on g only, so d mu/dv = I, d zeta/d gamma = -(the potential's left Hessian).
+  LagrangianHessian<G> hessian(double, const ElementOf<G>& g, const TangentOf<G>&) const {
+    return {.momentum_v = this->inertia(),
+            .momentum_g = AlgebraMatrixOf<G>::Zero(),
+            .gradient_v = AlgebraMatrixOf<G>::Zero(),
+            .gradient_g = -potential_left_hessian<G>(this->potential(), g)};
+  }
 };
 
 /// h(t, g, mu) = 1/2 mu . I^{-1} mu + V(g), left-reduced; the Legendre transform of

@@ -19,7 +19,9 @@
 // the trapezoidal Omega_1.
 // Two modes for xi: `augmented` integrates xi forward from a given xi_0; `given` takes the
 // sequence {xi_k} from outside (the paper's outer fixed point) and records the rates for the
-// backward recursion xi_k = xi_{k+1} - h xi'_k (disc-aux).
+// backward recursion xi_k = xi_{k+1} - h xi'_k (disc-aux). The order-2 predictor always takes
+// xi* = xi_k + h xi'_k, in both modes, so that a fixed point of the given mode is exactly a
+// solution of the augmented mode (the same discrete equations).
 
 #include <optional>
 #include <vector>
@@ -132,7 +134,7 @@ class TransportedScheme {
       return r1.dxi;
     }
     Node predictor;
-    advance(node, r1, predictor, xi_next);
+    advance(node, r1, predictor, nullptr);
     const Rates r2 = rates(predictor);
     const Rates mean{(r1.u + r2.u) / 2, (r1.dmu + r2.dmu) / 2, (r1.dxi + r2.dxi) / 2};
     advance(node, mean, out, xi_next);
@@ -151,8 +153,8 @@ class TransportedScheme {
     }
     Node predictor;
     NodeTangent dpredictor;
-    advance(node, r1, predictor, xi_next);
-    advance_tangent(d, r1, dr1, predictor, dpredictor, xi_next != nullptr);
+    advance(node, r1, predictor, nullptr);
+    advance_tangent(d, r1, dr1, predictor, dpredictor, false);
     const Rates r2 = rates(predictor);
     const RatesTangent dr2 = rates_tangent(predictor, dpredictor, r2);
     const Rates mean{(r1.u + r2.u) / 2, (r1.dmu + r2.dmu) / 2, (r1.dxi + r2.dxi) / 2};

@@ -87,7 +87,12 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
     SweepOutput<G, L> out;
     out.xi_rates = &rates;
     ++solution.sweeps;
-    forward_sweep(scheme, TangentOf<G>(v0), CovectorOf<G>::Zero(), &xi, 0, out);
+    if (!forward_sweep(scheme, TangentOf<G>(v0), CovectorOf<G>::Zero(), &xi, 0, out)) {
+      solution.status = "non-finite";
+      solution.message = "two-level: the sweep for the xi rates failed in outer iteration " +
+                         std::to_string(outer + 1) + ": " + out.failure;
+      break;
+    }
     std::vector<CovectorOf<G>> xi_new(nodes, CovectorOf<G>::Zero());
     for (std::size_t k = nodes - 1; k-- > 0;) xi_new[k] = xi_new[k + 1] - dt * rates[k];
     change = 0;
