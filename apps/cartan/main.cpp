@@ -42,6 +42,8 @@ int run_solve(cartan::cli::ProblemSpec spec, const std::string& problem_file, co
     if (flag == "order") spec.order = from_flags.order;
     if (flag == "tol") spec.tol = from_flags.tol;
     if (flag == "samples") spec.samples = from_flags.samples;
+    if (flag == "segments") spec.segments = from_flags.segments;
+    if (flag == "continuation") spec.continuation = from_flags.continuation;
     if (flag == "max-iterations") spec.max_iterations = from_flags.max_iterations;
     if (flag == "output") spec.output = from_flags.output;
   }
@@ -83,7 +85,13 @@ int main(int argc, char** argv) {
   solve->add_option("--gT", gT, "final element, as --g0");
   solve->add_option("--a0", a0, "so3: initial direction; gT = minimal rotation taking a0 to aT");
   solve->add_option("--aT", aT, "so3: final direction");
-  solve->add_option("--method", flags.method, "two-level | shooting (default shooting: augmented shooting with analytic Jacobian, continued in T when needed)");
+  solve->add_option("--method", flags.method,
+                    "two-level | shooting | multiple-shooting (default shooting: augmented shooting with analytic "
+                    "Jacobian, continued in T when needed; multiple-shooting: lifted LM over --segments segments)");
+  solve->add_option("--continuation", flags.continuation,
+                    "shooting: T (default; continue in T from a shorter horizon when direct shooting fails) | "
+                    "lambda (continue in lambda from the lambda = 0 solution) | none (direct shooting only)");
+  solve->add_option("--segments", flags.segments, "multiple-shooting: number of segments (default about 100 steps each, at most 16)");
   solve->add_option("--order", flags.order, "1 (the paper's scheme) | 2 (second order) (default 1)");
   solve->add_option("--tol", flags.tol, "tolerance (default 1e-10)");
   solve->add_option("--samples", flags.samples, "output samples (collocation; unused by the shooting methods)");

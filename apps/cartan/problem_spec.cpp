@@ -80,7 +80,7 @@ void require_size(const std::string& name, const std::vector<double>& values, st
 }  // namespace
 
 const std::vector<std::string>& available_methods() {
-  static const std::vector<std::string> methods{"two-level", "shooting"};
+  static const std::vector<std::string> methods{"two-level", "shooting", "multiple-shooting"};
   return methods;
 }
 
@@ -123,6 +123,8 @@ void apply_json(ProblemSpec& spec, const nlohmann::json& file) {
     else if (key == "order") spec.order = json_int(value, key);
     else if (key == "tol") spec.tol = json_number(value, key);
     else if (key == "samples") spec.samples = json_int(value, key);
+    else if (key == "segments") spec.segments = json_int(value, key);
+    else if (key == "continuation") spec.continuation = json_string(value, key);
     else if (key == "max_iterations") spec.max_iterations = json_int(value, key);
     else if (key == "output") spec.output = json_string(value, key);
     else bad("key \"" + key + "\"", value.dump(), "is not a problem-file key");
@@ -134,6 +136,7 @@ void validate(ProblemSpec& spec) {
   require_one_of("model", spec.model, spec.group == "so3" ? std::vector<std::string>{"free-rigid-body", "oscillator"}
                                                            : std::vector<std::string>{"oscillator"});
   require_one_of("method", spec.method, available_methods());
+  require_one_of("continuation", spec.continuation, {"T", "lambda", "none"});
   if (spec.order != 1 && spec.order != 2) bad("order", std::to_string(spec.order), "must be 1 or 2");
   if (!std::isfinite(spec.lambda)) bad("lambda", format_value(spec.lambda), "is not finite");
   if (!(std::isfinite(spec.T) && spec.T > 0)) bad("T", format_value(spec.T), "must be positive and finite");
@@ -143,6 +146,9 @@ void validate(ProblemSpec& spec) {
   if (!(std::isfinite(spec.tol) && spec.tol > 0)) bad("tol", format_value(spec.tol), "must be positive and finite");
   if (spec.max_iterations < 1) bad("max_iterations", std::to_string(spec.max_iterations), "must be at least 1");
   if (spec.samples < 0) bad("samples", std::to_string(spec.samples), "must be non-negative");
+  if (spec.segments < 0 || spec.segments > spec.N) {
+    bad("segments", std::to_string(spec.segments), "must be between 1 and N (0: the default, about 100 steps each)");
+  }
   if (spec.inertia.empty()) spec.inertia = spec.group == "so3" ? std::vector<double>{2, 3, 4} : std::vector<double>{1, 1, 1};
   require_size("inertia", spec.inertia, 3, "the diagonal of the inertia");
   for (double x : spec.inertia) {

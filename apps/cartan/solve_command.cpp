@@ -3,6 +3,7 @@
 #include "cartan/models/heisenberg_oscillator.hpp"
 #include "cartan/models/rigid_body.hpp"
 #include "cartan/transported/continuation.hpp"
+#include "cartan/transported/multiple_shooting.hpp"
 #include "cartan/transported/two_level.hpp"
 
 namespace cartan::cli {
@@ -44,9 +45,21 @@ nlohmann::json run(const ProblemSpec& spec, const TransportedProblem<G, L>& prob
     s = solve_two_level(problem, {.order = order, .tolerance = spec.tol, .max_outer = spec.max_iterations,
                                   .max_inner = spec.max_iterations});
     s.branch = "direct from the geodesic guess";
+  } else if (spec.method == "multiple-shooting") {
+    MultipleShootingOptions options{.order = order, .tolerance = spec.tol, .max_iterations = spec.max_iterations};
+    if (spec.segments > 0) options.segments = spec.segments;
+    s = solve_multiple_shooting(problem, options);
   } else {
-    s = solve_continuation_in_T(problem, {.shooting = {.order = order, .tolerance = spec.tol,
-                                                       .max_iterations = spec.max_iterations}});
+    const ContinuationOptions options{
+        .shooting = {.order = order, .tolerance = spec.tol, .max_iterations = spec.max_iterations}};
+    if (spec.continuation == "none") {
+      s = solve_shooting(problem, options.shooting);
+      s.branch = "direct from the geodesic guess";
+    } else if (spec.continuation == "lambda") {
+      s = solve_continuation_in_lambda(problem, 0.0, options);
+    } else {
+      s = solve_continuation_in_T(problem, options);
+    }
     s.method = "shooting";
   }
   const auto& tr = s.trajectory;

@@ -87,6 +87,38 @@ def test_solver_failure_exit_code_1_with_json():
     assert "iterations" in d["message"] or "after" in d["message"]
 
 
+def test_multiple_shooting_reaches_the_shooting_solution():
+    """Multiple shooting and single shooting solve the same discrete equations, so their
+    trajectories agree to the solver tolerance amplified by the sweep's sensitivity (the free
+    body at T = 50: |dv/dr| ~ 10, so 1e-9 for |r| <= 1e-10 each)."""
+    args = [*FREE_BODY, "--lambda", "0.5", "--tol", "1e-10"]
+    single = solve(*args, "--method", "shooting")
+    multi = solve(*args, "--method", "multiple-shooting", "--segments", "5")
+    assert multi["method"] == "multiple-shooting" and multi["status"] == "converged"
+    assert multi["terminal_error"] < 1e-10
+    assert np.max(np.abs(np.array(multi["v"]) - np.array(single["v"]))) < 1e-9
+    assert np.max(np.abs(np.array(multi["g"]) - np.array(single["g"]))) < 1e-9
+
+
+def test_continuation_choices_on_the_long_horizon_oscillator():
+    """PAPER-NOTES erratum 4, measured through the CLI at T = 12 (200 iterations allowed):
+    direct shooting from the geodesic guess fails for lambda = 0 (exit 1, JSON with the failure)
+    and, for lambda = 1/2, converges after ~40 iterations to ANOTHER solution branch than the one
+    continuation reaches (v0 differs by ~0.19). Continuation in T and continuation in lambda from
+    lambda = 0 reach the same branch (v0 within 1e-7: both stop at |r| <= 1e-8; other branches
+    differ by O(0.1))."""
+    failed = run("solve", *OSCILLATOR, "--lambda", "0", "--tol", "1e-8", "--continuation", "none")
+    assert failed.returncode == 1
+    assert json.loads(failed.stdout)["status"] != "converged"
+    args = [*OSCILLATOR, "--lambda", "0.5", "--tol", "1e-8"]
+    direct = solve(*args, "--continuation", "none")
+    by_T = solve(*args, "--continuation", "T")
+    by_lambda = solve(*args, "--continuation", "lambda")
+    assert by_lambda["branch"].startswith("continued in lambda from lambda = 0 [continued in T from T = 3")
+    assert np.max(np.abs(np.array(by_T["v"][0]) - np.array(by_lambda["v"][0]))) < 1e-7
+    assert np.linalg.norm(np.array(direct["v"][0]) - np.array(by_T["v"][0])) > 0.1
+
+
 BAD_INPUTS = [
     (["--lambda", "nan"], "lambda"),
     (["--T", "0"], "T = 0"),
@@ -108,6 +140,9 @@ BAD_INPUTS = [
     (["--gT", "-1,0,0,0,1,0,0,0,1"], "determinant"),
     (["--gT", "1,0,0"], "gT = 1,0,0"),
     (["--bogus", "1"], "bogus"),
+    (["--method", "multiple-shooting", "--segments", "-2"], "segments = -2"),
+    (["--continuation", "sideways"], "continuation = \"sideways\""),
+    (["--method", "multiple-shooting", "--segments", "11"], "segments = 11"),
 ]
 
 

@@ -5,7 +5,8 @@
 //  * in T: halve the horizon until shooting from the geodesic guess converges, then lengthen
 //    it step by step (same step size h, so N scales with T), each solve starting from the
 //    previous (v0, xi0); a failed stage halves the increment.
-//  * in lambda: from a solution at lambda_start (e.g. the classical lambda = 0) to lambda.
+//  * in lambda: from a solution at lambda_start (e.g. the classical lambda = 0, itself found
+//    directly or by continuation in T) to lambda.
 // The result records the path in `branch`, e.g. "continued in T from T = 3 (4 stages)".
 
 #include <cmath>
@@ -134,6 +135,8 @@ TransportedSolution<G> solve_continuation_in_T(const TransportedProblem<G, L>& p
 }
 
 /// Continuation in lambda from lambda_start (default 0, the classical left Euler–Poincaré case).
+/// The start solution at lambda_start is itself found by solve_continuation_in_T (directly from
+/// the geodesic guess when that converges), so that long horizons work too.
 template <LieGroup G, ReducedLagrangian<G> L>
 TransportedSolution<G> solve_continuation_in_lambda(const TransportedProblem<G, L>& problem,
                                                     double lambda_start = 0.0,
@@ -147,22 +150,22 @@ TransportedSolution<G> solve_continuation_in_lambda(const TransportedProblem<G, 
     p.lambda = lambda;
     return p;
   };
-  const auto p0 = make(lambda_start);
-  TransportedSolution<G> first = solve_shooting(p0, detail::quick_shooting(options), geodesic_guess(p0), CovectorOf<G>::Zero());
+  TransportedSolution<G> first = solve_continuation_in_T(make(lambda_start), options);
   std::ostringstream path;
   int stages = 0;
   TransportedSolution<G> result = first;
   if (!first.converged) {
     result.status = "continuation-failed";
-    path << "no convergence at lambda = " << format_value(lambda_start) << " from the geodesic guess";
+    path << "no solution at lambda = " << format_value(lambda_start) << " (" << first.branch << ")";
   } else {
-    path << "continued in lambda from lambda = " << format_value(lambda_start);
+    path << "continued in lambda from lambda = " << format_value(lambda_start) << " [" << first.branch << "]";
     result = detail::continue_parameter<G>(make, lambda_start, problem.lambda, std::move(first), options, stages, path);
     path << " (" << stages << " stages)";
   }
   result.method = "continuation";
   result.branch = path.str();
-  result.message = "continuation in lambda: " + result.branch + "; last solve: " + result.message;
+  result.message = "continuation in lambda: " + result.branch + "; " + std::to_string(result.sweeps) +
+                   " sweeps in all; last solve: " + result.message;
   result.solve_time_s = detail::seconds_since(start_time);
   return result;
 }
