@@ -54,8 +54,25 @@ void finish(NonlinearSolveReport& report, SolveStatus status, const std::string&
 
 }  // namespace
 
+void NonlinearSolveOptions::validate() const {
+  const auto positive = [](double value, const char* name) {
+    require_finite(value, "NonlinearSolveOptions", name);
+    if (!(value > 0)) throw_invalid("NonlinearSolveOptions", name, format_value(value), "must be positive");
+  };
+  positive(tolerance, "tolerance");
+  positive(initial_damping, "initial_damping");
+  positive(step_tolerance, "step_tolerance");
+  positive(fd_step, "fd_step");
+  if (max_iterations < 1) {
+    throw_invalid("NonlinearSolveOptions", "max_iterations", std::to_string(max_iterations), "must be at least 1");
+  }
+}
+
 NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen::VectorXd& x0,
                                          const NonlinearSolveOptions& options) {
+  options.validate();
+  require_finite(x0, "levenberg_marquardt", "x0");
+  if (!f) throw std::invalid_argument("levenberg_marquardt: f is empty (no residual function)");
   NonlinearSolveReport report;
   report.x = x0;
   Eigen::VectorXd r;

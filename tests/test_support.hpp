@@ -4,7 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <initializer_list>
 #include <random>
+#include <stdexcept>
+#include <string>
+#include <string_view>
 
 #include "cartan/group.hpp"
 
@@ -35,6 +39,24 @@ ElementOf<G> random_element(std::mt19937& rng, double scale = 1.0) {
 template <class A, class B>
 double max_abs_diff(const A& a, const B& b) {
   return (a - b).cwiseAbs().maxCoeff();
+}
+
+/// Runs `call`, expecting std::invalid_argument whose message contains every fragment (the
+/// bad value's name and value, STYLE.md "errors name the value").
+template <class F>
+void expect_invalid(const F& call, std::initializer_list<std::string_view> fragments) {
+  try {
+    call();
+    ADD_FAILURE() << "no std::invalid_argument thrown";
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what();
+    for (std::string_view fragment : fragments) EXPECT_NE(message.find(fragment), std::string::npos) << message;
+  }
+}
+
+template <class F>
+void expect_invalid(const F& call, std::string_view fragment) {
+  expect_invalid(call, {fragment});
 }
 
 }  // namespace cartan::testing

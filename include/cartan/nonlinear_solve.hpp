@@ -33,6 +33,9 @@ struct NonlinearSolveOptions {
   double initial_damping = 1e-8; ///< tau: mu_0 = tau max diag(J^T J); small = Gauss–Newton-like
   double step_tolerance = 1e-15; ///< relative step size below which the solve has stalled
   double fd_step = 1e-7;         ///< relative step of forward-difference Jacobians
+
+  /// Throws std::invalid_argument naming the first value that is not finite and positive.
+  void validate() const;
 };
 
 struct NonlinearSolveReport {
@@ -56,7 +59,8 @@ using ResidualFunction =
 ResidualFunction with_forward_difference_jacobian(
     std::function<bool(const Eigen::VectorXd&, Eigen::VectorXd&)> f, double fd_step);
 
-/// Levenberg–Marquardt from x0. Never throws for numerical trouble: the report says what happened.
+/// Levenberg–Marquardt from x0. Throws std::invalid_argument for bad options, a non-finite x0 or
+/// an empty f; never throws for numerical trouble: the report says what happened.
 NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen::VectorXd& x0,
                                          const NonlinearSolveOptions& options = {});
 

@@ -168,17 +168,6 @@ TEST(EulerPoincare, H3OscillatorConservesEnergyAtOrderFour) {
 
 // ---- Input validation: std::invalid_argument naming the value. ---------------------------
 
-template <class F>
-void expect_invalid(const F& call, const std::vector<std::string>& fragments) {
-  try {
-    call();
-    FAIL() << "no exception";
-  } catch (const std::invalid_argument& e) {
-    const std::string message = e.what();
-    for (const auto& fragment : fragments) EXPECT_NE(message.find(fragment), std::string::npos) << message;
-  }
-}
-
 TEST(EulerPoincare, RejectsInvalidInput) {
   const RigidBody body(kInertia);
   const auto ep = [&](const SO3::Element& g0, const SO3::Tangent& v0, double T, int steps) {

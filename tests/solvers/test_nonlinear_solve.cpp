@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "cartan/nonlinear_solve.hpp"
+#include "test_support.hpp"
 
 namespace cartan {
 namespace {
@@ -63,6 +64,18 @@ TEST(LevenbergMarquardt, ReportsNonFiniteAndIterationLimit) {
   EXPECT_EQ(limited.status, SolveStatus::MaxIterations);
   EXPECT_EQ(limited.iterations, 1);
   EXPECT_NE(limited.message.find("max-iterations after 1 iterations"), std::string::npos) << limited.message;
+}
+
+// Bad options, a non-finite start and an empty function are errors naming the value.
+TEST(LevenbergMarquardt, RejectsBadInput) {
+  using testing::expect_invalid;
+  const Eigen::Vector2d start(-1.2, 1.0);
+  expect_invalid([&] { levenberg_marquardt(rosenbrock, start, {.tolerance = 0}); }, "tolerance = 0");
+  expect_invalid([&] { levenberg_marquardt(rosenbrock, start, {.tolerance = std::nan("")}); }, "tolerance");
+  expect_invalid([&] { levenberg_marquardt(rosenbrock, start, {.max_iterations = 0}); }, "max_iterations = 0");
+  expect_invalid([&] { levenberg_marquardt(rosenbrock, start, {.fd_step = -1e-7}); }, "fd_step");
+  expect_invalid([&] { levenberg_marquardt(rosenbrock, Eigen::Vector2d(1.0, INFINITY)); }, "x0");
+  expect_invalid([&] { levenberg_marquardt(ResidualFunction{}, start); }, "f is empty");
 }
 
 }  // namespace

@@ -458,16 +458,6 @@ TEST(OrderedExp, ConstantGeneratorIsTheMatrixExponential) {
 // ------------------------------------------------------------------------------------------
 // Bad input: std::invalid_argument whose message names the value.
 
-template <class F>
-void expect_invalid(const F& f, const std::string& needle) {
-  try {
-    f();
-    ADD_FAILURE() << "no exception; expected one mentioning '" << needle << "'";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-  }
-}
-
 TEST(TransportValidation, RejectsBadInput) {
   const auto conn = cartan_schouten<SO3>(0.5);
   auto u = [](double t) { return V3(t, 1, 0); };

@@ -191,15 +191,6 @@ TEST(MultipleShooting, FailuresAreReportedNotHidden) {
   EXPECT_NE(s.message.find("|r| history ["), std::string::npos) << s.message;
 }
 
-void expect_invalid(const std::function<void()>& call, const std::string& needle) {
-  try {
-    call();
-    ADD_FAILURE() << "accepted; expected an error naming '" << needle << "'";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-  }
-}
-
 TEST(MultipleShooting, RejectsBadOptions) {
   const auto problem = paper_free_body(0.5, 10);
   auto solve = [&](MultipleShootingOptions options) { return [=] { solve_multiple_shooting(problem, options); }; };

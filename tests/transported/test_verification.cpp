@@ -216,5 +216,16 @@ TEST(TransportedVerification, ContinuationInLambdaReachesTheContinuationInTBranc
   }
 }
 
+// The discrete action's inputs are checked (it used to read out of bounds on short inputs).
+TEST(TransportedVerification, ActionRejectsBadInput) {
+  const RigidBody body(paper_inertia());
+  const std::vector<SO3::Element> one{SO3::identity()}, two{SO3::identity(), SO3::identity()};
+  expect_invalid([&] { transported_action<SO3>(body, 0.5, 1.0, one); }, "g.size() = 1");
+  expect_invalid([&] { transported_action<SO3>(body, 0.5, -1.0, two); }, "T = -1");
+  expect_invalid([&] { transported_action<SO3>(body, std::nan(""), 1.0, two); }, "lambda");
+  const std::vector<Eigen::Vector3d> w_short{Eigen::Vector3d::Zero()};
+  expect_invalid([&] { transported_action_derivative<SO3>(body, 0.5, 1.0, two, w_short); }, "w.size() = 1");
+}
+
 }  // namespace
 }  // namespace cartan::testing

@@ -363,7 +363,8 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
     const double single = detail::single_sweep_residual(scheme, System::v0(*x), System::xi0(*x));
     if (single <= options.tolerance || tightenings == 3) break;
     ++tightenings;
-    lifted_tolerance = report.residual_norm * 0.5 * options.tolerance / single;  // 0 if single is inf
+    lifted_tolerance = report.residual_norm * 0.5 * options.tolerance / single;
+    if (!(lifted_tolerance > 0)) break;  // single is inf (its sweep failed) or |r| is exactly 0
   }
   const bool recorded = detail::record_solution(scheme, System::v0(*x), System::xi0(*x), nullptr, solution);
   const bool consistent = recorded && std::hypot(solution.terminal_error, solution.xi_terminal) <= options.tolerance;

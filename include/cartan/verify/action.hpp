@@ -9,14 +9,24 @@
 // whose derivatives along variations g_k -> g_k exp(e w(t_k)), w(0) = w(T) = 0, vanish as
 // h -> 0 at solutions of the paper's equations (at the scheme's order).
 
+#include <string>
 #include <vector>
 
+#include "cartan/errors.hpp"
 #include "cartan/lagrangian.hpp"
 
 namespace cartan {
 
+/// S_h of the path through g[0..N] over [0, T] (N >= 1). Throws std::invalid_argument for
+/// fewer than two nodes, a non-finite lambda, or T not positive and finite.
 template <LieGroup G, ReducedLagrangian<G> L>
 double transported_action(const L& lagrangian, double lambda, double T, const std::vector<ElementOf<G>>& g) {
+  require_finite(lambda, "transported_action", "lambda");
+  require_finite(T, "transported_action", "T");
+  if (!(T > 0)) throw_invalid("transported_action", "T", format_value(T), "must be positive");
+  if (g.size() < 2) {
+    throw_invalid("transported_action", "g.size()", std::to_string(g.size()), "must be at least 2 (one step)");
+  }
   const std::size_t steps = g.size() - 1;
   const double h = T / static_cast<double>(steps);
   ElementOf<G> transport = G::identity();  // h_k with P_k = Ad(h_k)
@@ -37,6 +47,12 @@ template <LieGroup G, ReducedLagrangian<G> L>
 double transported_action_derivative(const L& lagrangian, double lambda, double T,
                                      const std::vector<ElementOf<G>>& g, const std::vector<TangentOf<G>>& w,
                                      double epsilon = 1e-5) {
+  if (w.size() != g.size()) {
+    throw_invalid("transported_action_derivative", "w.size()", std::to_string(w.size()),
+                  "must equal g.size() = " + std::to_string(g.size()));
+  }
+  require_finite(epsilon, "transported_action_derivative", "epsilon");
+  if (!(epsilon > 0)) throw_invalid("transported_action_derivative", "epsilon", format_value(epsilon), "must be positive");
   auto varied = [&](double e) {
     std::vector<ElementOf<G>> out(g.size());
     for (std::size_t k = 0; k < g.size(); ++k) out[k] = G::compose(g[k], G::exp(TangentOf<G>(e * w[k])));
