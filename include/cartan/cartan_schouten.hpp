@@ -28,6 +28,7 @@ InvariantConnection<G> cartan_schouten(double lambda, Side side = Side::Left) {
 /// Closed form (tor-cur-lie-alg): T(v, w) = (2 lambda - 1)[v, w].
 template <LieGroup G>
 TangentOf<G> cartan_schouten_torsion(double lambda, const TangentOf<G>& v, const TangentOf<G>& w) {
+  require_finite(lambda, "cartan_schouten_torsion", "lambda");
   return (2 * lambda - 1) * bracket<G>(v, w);
 }
 
@@ -35,6 +36,7 @@ TangentOf<G> cartan_schouten_torsion(double lambda, const TangentOf<G>& v, const
 template <LieGroup G>
 TangentOf<G> cartan_schouten_curvature(double lambda, const TangentOf<G>& u, const TangentOf<G>& v,
                                        const TangentOf<G>& w) {
+  require_finite(lambda, "cartan_schouten_curvature", "lambda");
   return lambda * (lambda - 1) * bracket<G>(bracket<G>(u, v), w);
 }
 

@@ -48,6 +48,7 @@ struct SO3 {
   static Eigen::Matrix3d left_jacobian_inverse(const Tangent& v);
   /// Principal logarithm, |log R| in [0, pi]. Stable near 0 (series) and near pi (axis from
   /// the symmetric part of R). At exactly pi either of the two logarithms may be returned.
+  /// Throws std::invalid_argument (as validate) unless R is a rotation within kDefaultTolerance.
   static Tangent log(const Element& r);
 
   static MatrixRep hat(const Tangent& v);

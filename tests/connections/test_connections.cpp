@@ -170,6 +170,9 @@ TEST(InvariantConnection, RejectsBadInput) {
     EXPECT_NE(std::string(e.what()).find("not bilinear"), std::string::npos) << e.what();
   }
   EXPECT_THROW(cartan_schouten<SO3>(std::nan("")), std::invalid_argument);
+  const Eigen::Vector3d e1 = Eigen::Vector3d::UnitX(), e2 = Eigen::Vector3d::UnitY();
+  expect_invalid([&] { cartan_schouten_torsion<SO3>(INFINITY, e1, e2); }, "cartan_schouten_torsion: lambda = inf");
+  expect_invalid([&] { cartan_schouten_curvature<SO3>(std::nan(""), e1, e2, e1); }, "cartan_schouten_curvature: lambda");
 }
 
 }  // namespace

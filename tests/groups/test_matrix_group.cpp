@@ -291,7 +291,7 @@ struct NonFiniteBasis {
 TEST(MatrixLieGroup, RejectsBasisNotClosedUnderTheBracket) {
   using G = MatrixLieGroup<NotClosedBasis>;
   expect_invalid([] { G::check_basis(); },
-                                     {"MatrixLieGroup<so3-without-E3>", "[E1, E2] = [", "not in the span"});
+                 {"MatrixLieGroup<so3-without-E3>", "[E1, E2] = [", "not in the span"});
   // Every use of the basis reports it, not only the first.
   expect_invalid([] { (void)G::structure_constants(); }, {"[E1, E2]"});
   expect_invalid([] { (void)G::exp(Eigen::Vector2d(0.1, 0.2)); }, {"[E1, E2]"});
@@ -300,13 +300,13 @@ TEST(MatrixLieGroup, RejectsBasisNotClosedUnderTheBracket) {
 
 TEST(MatrixLieGroup, RejectsLinearlyDependentBasis) {
   expect_invalid([] { MatrixLieGroup<DependentBasis>::check_basis(); },
-                                     {"MatrixLieGroup<dependent>", "Gram matrix", "[2, 4; 4, 8]",
+                 {"MatrixLieGroup<dependent>", "Gram matrix", "[2, 4; 4, 8]",
                                       "not linearly independent"});
 }
 
 TEST(MatrixLieGroup, RejectsNonFiniteBasis) {
   expect_invalid([] { MatrixLieGroup<NonFiniteBasis>::check_basis(); },
-                                     {"MatrixLieGroup<non-finite>", "E1 = [0, nan", "non-finite"});
+                 {"MatrixLieGroup<non-finite>", "E1 = [0, nan", "non-finite"});
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -331,16 +331,17 @@ TEST(SE3, ValidateRejectsNonGroupMatrices) {
   SE3::Element bottom_row = g;
   bottom_row(3, 0) = 0.5;
   expect_invalid([&] { SE3::validate(bottom_row, "g0"); },
-                                     {"SE3: g0 = [", "0.5, 0, 0, 1]", "bottom row [0.5, 0, 0, 1], not [0, 0, 0, 1]"});
+                 {"SE3: g0 = [", "0.5, 0, 0, 1]", "bottom row [0.5, 0, 0, 1], not [0, 0, 0, 1]"});
   expect_invalid([&] { SE3Generic::validate(bottom_row, "g0"); },
-                                     {"MatrixLieGroup<se3-generic>: g0 = [", "0.5, 0, 0, 1]", "not in the group"});
+                 {"MatrixLieGroup<se3-generic>: g0 = [", "0.5, 0, 0, 1]", "not in the group"});
 
   SE3::Element scaled = g;
   scaled.topLeftCorner<3, 3>() *= 1.01;
+  expect_invalid([&] { SE3::log(scaled); }, {"SE3: log argument g = [", "not orthogonal"});
   expect_invalid([&] { SE3::validate(scaled, "gT"); },
-                                     {"SE3: gT = [", "invalid rotation block", "gT rotation block = [", "not orthogonal"});
+                 {"SE3: gT = [", "invalid rotation block", "gT rotation block = [", "not orthogonal"});
   expect_invalid([&] { SE3Generic::validate(scaled, "gT"); },
-                                     {"MatrixLieGroup<se3-generic>: gT = [", "not in the group"});
+                 {"MatrixLieGroup<se3-generic>: gT = [", "not in the group"});
 
   SE3::Element reflected = g;
   reflected.row(0) *= -1;
@@ -358,14 +359,15 @@ TEST(SE2, ValidateRejectsNonGroupMatrices) {
   SE2::Element bottom_row = g;
   bottom_row(2, 1) = -0.25;
   expect_invalid([&] { SE2::validate(bottom_row, "pose"); },
-                                     {"SE2: pose = [", "bottom row [0, -0.25, 1], not [0, 0, 1]"});
+                 {"SE2: pose = [", "bottom row [0, -0.25, 1], not [0, 0, 1]"});
   expect_invalid([&] { SE2Generic::validate(bottom_row, "pose"); },
-                                     {"MatrixLieGroup<se2-generic>: pose = [", "not in the group"});
+                 {"MatrixLieGroup<se2-generic>: pose = [", "not in the group"});
 
   SE2::Element sheared = g;
   sheared(0, 1) += 0.1;
+  expect_invalid([&] { SE2::log(sheared); }, {"SE2: log argument g = [", "not orthogonal"});
   expect_invalid([&] { SE2::validate(sheared, "pose"); },
-                                     {"SE2: pose = [", "invalid rotation block", "not orthogonal"});
+                 {"SE2: pose = [", "invalid rotation block", "not orthogonal"});
   expect_invalid([&] { SE2Generic::validate(sheared, "pose"); }, {"not in the group"});
 }
 

@@ -139,6 +139,10 @@ TEST(TransportedScheme, FailuresAreReportedNotHidden) {
 }
 
 TEST(TransportedScheme, RejectsBadProblems) {
+  auto bad_step = paper_free_body(0.5, 10);
+  bad_step.T = -2;
+  expect_invalid([&] { TransportedScheme<SO3, RigidBody>(bad_step, SchemeOrder::First); }, "T = -2");
+  expect_invalid([&] { TransportedScheme<SO3, RigidBody>(paper_free_body(0.5, 10), SchemeOrder{3}); }, "order = 3");
   auto problem = paper_free_body(0.5, 10);
   problem.T = 0;
   EXPECT_THROW(solve_shooting(problem), std::invalid_argument);

@@ -78,9 +78,15 @@ class TransportedScheme {
     LagrangianHessian<G> hessian;
   };
 
+  /// Throws std::invalid_argument for an invalid problem (TransportedProblem::validate) or order.
   TransportedScheme(const TransportedProblem<G, L>& problem, SchemeOrder order)
       : problem_(problem), order_(order), dt_(problem.step()), c_torsion_(2 * problem.lambda - 1),
-        c_curvature_(problem.lambda * (1 - problem.lambda)) {}
+        c_curvature_(problem.lambda * (1 - problem.lambda)) {
+    problem.validate();
+    if (order != SchemeOrder::First && order != SchemeOrder::Second) {
+      throw_invalid("TransportedScheme", "order", std::to_string(static_cast<int>(order)), "must be 1 or 2");
+    }
+  }
 
   const TransportedProblem<G, L>& problem() const { return problem_; }
   SchemeOrder order() const { return order_; }
