@@ -83,10 +83,10 @@ int main(int argc, char** argv) {
   solve->add_option("--gT", gT, "final element, as --g0");
   solve->add_option("--a0", a0, "so3: initial direction; gT = minimal rotation taking a0 to aT");
   solve->add_option("--aT", aT, "so3: final direction");
-  solve->add_option("--method", flags.method, "two-level | shooting (default shooting: augmented shooting with analytic Jacobian, continued in T when needed)");
+  solve->add_option("--method", flags.method, "two-level | shooting | collocation (default shooting: augmented shooting with analytic Jacobian, continued in T when needed; collocation: fourth-order adaptive collocation, heisenberg only)");
   solve->add_option("--order", flags.order, "1 (the paper's scheme) | 2 (second order) (default 1)");
   solve->add_option("--tol", flags.tol, "tolerance (default 1e-10)");
-  solve->add_option("--samples", flags.samples, "output samples (collocation; unused by the shooting methods)");
+  solve->add_option("--samples", flags.samples, "collocation: output at this many uniform times on [0, T] (0: the final mesh); unused by the shooting methods");
   solve->add_option("--max-iterations", flags.max_iterations, "iteration limit of each loop (default 200)");
   solve->add_option("--output", flags.output, "output file (default stdout)");
 
