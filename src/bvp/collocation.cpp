@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "cartan/bvp/collocation_jacobian.hpp"
 #include "cartan/errors.hpp"
 
 namespace cartan::bvp {
@@ -17,8 +18,7 @@ namespace {
 using Eigen::Index;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
-using SparseMatrix = Eigen::SparseMatrix<double>;
-using SparseSolver = Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>;
+using SparseSolver = Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>>;
 
 constexpr std::string_view kWhere = "solve_collocation";
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
@@ -139,48 +139,59 @@ bool evaluate(Model& model, const Iterate& shape, const VectorXd& z, Iterate& it
   return evaluate(model, shape.t, z.head(ny).reshaped(shape.y.rows(), shape.y.cols()), z.tail(z.size() - ny), it);
 }
 
-void add_block(std::vector<Eigen::Triplet<double>>& triplets, Index row, Index col, const MatrixXd& block) {
-  for (Index j = 0; j < block.cols(); ++j) {
-    for (Index i = 0; i < block.rows(); ++i) triplets.emplace_back(row + i, col + j, block(i, j));
-  }
-}
-
-/// The Jacobian of the residual with respect to (y_0, ..., y_{m-1}, p). Every block is stored
-/// in full, so the sparsity pattern depends on the mesh only.
-SparseMatrix jacobian(Model& model, const Iterate& it) {
+/// The Jacobian of the residual with respect to (y_0, ..., y_{m-1}, p), blockwise.
+void jacobian(Model& model, const Iterate& it, CollocationJacobian& jac) {
   const int n = model.n(), k = model.k();
   const Index m = it.nodes();
+  jac.resize(n, k, m);
   const MatrixXd eye = MatrixXd::Identity(n, n);
-  std::vector<MatrixXd> jy(static_cast<std::size_t>(m)), jp(static_cast<std::size_t>(m));
-  for (Index i = 0; i < m; ++i) {
-    const auto u = static_cast<std::size_t>(i);
-    model.rhs_jacobian(it.t[i], it.y.col(i), it.p, it.f.col(i), jy[u], jp[u]);
-  }
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(static_cast<std::size_t>((m - 1) * (2 * n * n + n * k) + (n + k) * (2 * n + k)));
-  MatrixXd jmy, jmp;
+  MatrixXd jy_left, jp_left, jy_right, jp_right, jmy, jmp;
+  model.rhs_jacobian(it.t[0], it.y.col(0), it.p, it.f.col(0), jy_right, jp_right);
   for (Index i = 0; i + 1 < m; ++i) {
-    const auto u = static_cast<std::size_t>(i);
+    std::swap(jy_left, jy_right);
+    std::swap(jp_left, jp_right);
+    model.rhs_jacobian(it.t[i + 1], it.y.col(i + 1), it.p, it.f.col(i + 1), jy_right, jp_right);
     const double h = it.h[i];
     model.rhs_jacobian(it.t[i] + h / 2, it.ymid.col(i), it.p, it.fmid.col(i), jmy, jmp);
     // dy_mid/dy_i = I/2 + h/8 J_i, dy_mid/dy_{i+1} = I/2 - h/8 J_{i+1}, dy_mid/dp = -h/8 (P_{i+1} - P_i).
-    add_block(triplets, n * i, n * i, -eye - h / 6 * jy[u] - h / 3 * jmy - h * h / 12 * jmy * jy[u]);
-    add_block(triplets, n * i, n * (i + 1), eye - h / 6 * jy[u + 1] - h / 3 * jmy + h * h / 12 * jmy * jy[u + 1]);
-    if (k > 0) {
-      add_block(triplets, n * i, n * m,
-                -h / 6 * (jp[u] + 4 * jmp + jp[u + 1]) + h * h / 12 * jmy * (jp[u + 1] - jp[u]));
-    }
+    jac.a(i) = -eye - h / 6 * jy_left - h / 3 * jmy - h * h / 12 * jmy * jy_left;
+    jac.b(i) = eye - h / 6 * jy_right - h / 3 * jmy + h * h / 12 * jmy * jy_right;
+    if (k > 0) jac.c(i) = -h / 6 * (jp_left + 4 * jmp + jp_right) + h * h / 12 * jmy * (jp_right - jp_left);
   }
-  MatrixXd dya, dyb, dp;
-  model.bc_jacobian(it.y.col(0), it.y.col(m - 1), it.p, it.residual.tail(n + k), dya, dyb, dp);
-  const Index bc_row = n * (m - 1);
-  add_block(triplets, bc_row, 0, dya);
-  add_block(triplets, bc_row, n * (m - 1), dyb);
-  if (k > 0) add_block(triplets, bc_row, n * m, dp);
-  SparseMatrix jac(n * m + k, n * m + k);
-  jac.setFromTriplets(triplets.begin(), triplets.end());
-  return jac;
+  model.bc_jacobian(it.y.col(0), it.y.col(m - 1), it.p, it.residual.tail(n + k), jac.Da, jac.Db, jac.Dp);
 }
+
+/// Factorises the Newton matrix with the chosen solver and solves with it.
+class LinearSolver {
+ public:
+  explicit LinearSolver(LinearSolverKind kind) : kind_(kind) {}
+  bool factorize(const CollocationJacobian& jac) {
+    if (kind_ == LinearSolverKind::BlockLU) {
+      const bool ok = block_.factorize(jac);
+      error_ = block_.error();
+      return ok;
+    }
+    const Eigen::SparseMatrix<double> sparse = jac.sparse();
+    if (!analysed_) {  // the pattern depends on the mesh only: every block is stored in full
+      sparse_.analyzePattern(sparse);
+      analysed_ = true;
+    }
+    sparse_.factorize(sparse);
+    error_ = sparse_.lastErrorMessage();
+    return sparse_.info() == Eigen::Success;
+  }
+  VectorXd solve(const VectorXd& rhs) const {
+    return kind_ == LinearSolverKind::BlockLU ? block_.solve(rhs) : VectorXd(sparse_.solve(rhs));
+  }
+  const std::string& error() const { return error_; }
+
+ private:
+  LinearSolverKind kind_;
+  BlockLU block_;
+  SparseSolver sparse_;
+  bool analysed_ = false;
+  std::string error_;
+};
 
 /// Largest collocation residual relative to its Newton target, and largest |bc|.
 struct ResidualSize {
@@ -229,8 +240,8 @@ std::string describe(const ResidualSize& size, const CollocationOptions& options
 /// most (1 - alpha/4) |dz| (natural monotonicity, affine invariant) or the trial has converged.
 NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& options, Counters& counters) {
   const int n = model.n();
-  SparseSolver solver;
-  bool analysed = false;
+  LinearSolver solver(options.linear_solver);
+  CollocationJacobian jac;
   Iterate trial;
   for (int iteration = 0;; ++iteration) {
     const ResidualSize size = residual_size(it, n, options.tol);
@@ -240,17 +251,12 @@ NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& option
                                            " iterations on " + std::to_string(it.nodes()) + " nodes: " +
                                            describe(size, options)};
     }
-    const SparseMatrix jac = jacobian(model, it);
+    jacobian(model, it, jac);
     ++counters.jacobians;
     ++counters.newton;
-    if (!analysed) {
-      solver.analyzePattern(jac);
-      analysed = true;
-    }
-    solver.factorize(jac);
-    if (solver.info() != Eigen::Success) {
+    if (!solver.factorize(jac)) {
       return {BvpStatus::SingularJacobian, "the collocation Jacobian is singular on " + std::to_string(it.nodes()) +
-                                               " nodes (" + solver.lastErrorMessage() + ")"};
+                                               " nodes (" + solver.error() + ")"};
     }
     const VectorXd step = solver.solve(it.residual);
     if (!step.allFinite()) {

@@ -168,6 +168,24 @@ TEST(Collocation, BoundaryLayerFromZeroGuessConcentratesNodes) {
   EXPECT_LE(max_error_at(r, uniform(-1, 1, 401), exact), 100 * tol);
 }
 
+// Both factorisations of the Newton matrix (structured block LU, Eigen's SparseLU) solve the
+// same linear systems, so the whole adaptive run takes the same path: same mesh, same Newton
+// count, solutions equal to rounding amplified by a few Newton steps (1e-10).
+TEST(Collocation, BlockAndSparseLUTakeTheSamePath) {
+  const ShockLayer shock{1e-2};
+  BvpResult r[2];
+  int j = 0;
+  for (LinearSolverKind kind : {LinearSolverKind::BlockLU, LinearSolverKind::SparseLU}) {
+    r[j] = solve_collocation(shock.system(), uniform(-1, 1, 5), MatrixXd::Zero(2, 5), VectorXd(0),
+                             {.tol = 1e-6, .linear_solver = kind});
+    ASSERT_TRUE(r[j].success()) << r[j].message;
+    ++j;
+  }
+  ASSERT_EQ(r[0].t.size(), r[1].t.size());
+  EXPECT_EQ(r[0].newton_iterations, r[1].newton_iterations);
+  EXPECT_LE((r[0].y - r[1].y).cwiseAbs().maxCoeff(), 1e-10);
+}
+
 // Warm start: continuing from a converged result at the same tolerance needs no Newton step and
 // no new node; continuing to a tighter tolerance refines from it and reaches that tolerance.
 TEST(Collocation, ContinuationFromAPreviousSolution) {

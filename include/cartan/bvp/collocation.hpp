@@ -11,7 +11,8 @@
 //      r_i   = y_{i+1} - y_i - h/6 (f_i + 4 f(t_i + h/2, y_mid) + f_{i+1}) = 0.
 //  * The n(m-1) collocation equations and the n + k boundary conditions are solved for all
 //    nodes and p at once by damped Newton (natural monotonicity test on the Newton correction)
-//    on the block-sparse Jacobian with Eigen's SparseLU. Jacobians of f and bc are the user's or
+//    on the block-sparse Jacobian (collocation_jacobian.hpp: a structured partial-pivoting LU,
+//    or Eigen's SparseLU). Jacobians of f and bc are the user's or
 //    forward differences with steps fd_step * max(1, |x_j|).
 //  * Error control: the residual rho(t) = S'(t) - f(t, S(t)), relative to 1 + |f|, is O(h^3);
 //    its RMS over each interval (5-point Lobatto quadrature; rho vanishes at both ends) must be
@@ -48,6 +49,10 @@ struct BvpSystem {
       bc_jacobian;
 };
 
+/// How the Newton matrix is factorised: the structured elimination of collocation_jacobian.hpp
+/// (default; fast on small blocks) or Eigen's general SparseLU (COLAMD ordering). Same result.
+enum class LinearSolverKind { BlockLU, SparseLU };
+
 struct CollocationOptions {
   double tol = 1e-3;              ///< max relative RMS residual per interval (>= 100 eps)
   double bc_tol = 0;              ///< max |bc| (0: use tol)
@@ -55,6 +60,7 @@ struct CollocationOptions {
   int max_newton_iterations = 20; ///< Newton iterations on one mesh
   int max_refinements = 40;       ///< mesh refinement rounds
   double fd_step = 1.4901161193847656e-08;  ///< sqrt(eps): forward-difference relative step
+  LinearSolverKind linear_solver = LinearSolverKind::BlockLU;
 
   /// Throws std::invalid_argument naming the bad option.
   void validate() const;
