@@ -91,6 +91,38 @@ TEST(HeisenbergBvp, GeneralStartMatchesTheAppendixInCoordinatesAtG0) {
   }
 }
 
+// The analytic Jacobian of f against central differences (step 1e-6: truncation ~1e-12 on
+// these O(1) second derivatives, rounding ~1e-10), for g0 != e, any lambda, unit and
+// non-unit inertia; and both Jacobians lead the solver to the same solution.
+TEST(HeisenbergBvp, AnalyticJacobianMatchesDifferences) {
+  std::mt19937 rng(kSeed);
+  const Eigen::Matrix3d inertia = Eigen::Vector3d(1.0, 2.0, 0.5).asDiagonal();
+  for (const H3Oscillator& l : {h3_oscillator(), H3Oscillator(inertia)}) {
+    for (double lambda : {0.0, 0.5, 1.0, 0.3, -0.7}) {
+      const H3Problem p{l, lambda, 1.0, 10, random_vector<Vector3d>(rng, 1.0), Vector3d(1, 0.5, 0.8)};
+      const BvpSystem s = heisenberg_transported_system(p);
+      const VectorXd y = random_vector<Eigen::Matrix<double, 9, 1>>(rng, 1.5);
+      Eigen::MatrixXd analytic(9, 9), none(9, 0), differences(9, 9);
+      s.rhs_jacobian(0.3, y, VectorXd(0), analytic, none);
+      constexpr double kStep = 1e-6;
+      for (int j = 0; j < 9; ++j) {
+        const VectorXd e = VectorXd::Unit(9, j) * kStep;
+        differences.col(j) = (rhs(s, y + e) - rhs(s, y - e)) / (2 * kStep);
+      }
+      EXPECT_LE((analytic - differences).cwiseAbs().maxCoeff(), 1e-8) << "lambda " << lambda;
+    }
+  }
+  const H3Problem p = h3_problem(0.5, Vector3d(0.3, -0.2, 0.5), Vector3d(1, 0.5, 0.8));
+  Eigen::VectorXd t;
+  Eigen::MatrixXd guess;
+  heisenberg_geodesic_guess(p, t, guess);
+  const BvpResult a = solve_collocation(heisenberg_transported_system(p, true), t, guess, VectorXd(0), {.tol = 1e-8});
+  const BvpResult d = solve_collocation(heisenberg_transported_system(p, false), t, guess, VectorXd(0), {.tol = 1e-8});
+  ASSERT_TRUE(a.success() && d.success()) << a.message << d.message;
+  ASSERT_EQ(a.t.size(), d.t.size());
+  EXPECT_LE((a.y - d.y).cwiseAbs().maxCoeff(), 1e-10);
+}
+
 // The collocation solution (tol 1e-10: error ~1e-12, negligible) and the order-2 transported
 // shooting solution solve the same continuous problem; their difference at the scheme's nodes
 // must shrink at the scheme's order 2 (within 0.25) for g0 != e.

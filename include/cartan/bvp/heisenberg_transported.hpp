@@ -32,9 +32,49 @@ inline Heisenberg::AlgebraMatrix heisenberg_transport(double lambda, const Heise
 template <Potential<Heisenberg> V>
 using HeisenbergNaturalProblem = TransportedProblem<Heisenberg, NaturalLagrangian<Heisenberg, V>>;
 
-/// The system above for the collocation solver (n = 9, no parameters; finite-difference Jacobians).
+/// Matrix of x -> ad*_x mu (linear in x): column i is ad*_{E_i} mu.
+inline Heisenberg::AlgebraMatrix coad_first(const Heisenberg::Tangent& mu) {
+  Heisenberg::AlgebraMatrix out;
+  for (int i = 0; i < 3; ++i) out.col(i) = coad<Heisenberg>(Heisenberg::Tangent::Unit(i), mu);
+  return out;
+}
+
+/// Analytic df/dy of the system below (blocks over g, v; nothing depends on xi). With
+/// Delta = g - g0: u = P v = v + lambda ad(v) Delta, so du/dg = lambda ad(v); g' = L(g) u with
+/// L(g) = d(L_g)_e, whose a-derivative adds u2 to c'; P^T zeta = zeta - lambda ad(Delta)^T zeta
+/// gives d/dg = P^T dzeta/dg - lambda coad_first(zeta), where dzeta/dg = -H L(g)^{-1} (H the
+/// potential's left Hessian: g exp(e E_i) moves the coordinates by L(g) E_i); and
+/// d(ad*_v I v)/dv = ad(v)^T I + coad_first(I v).
 template <Potential<Heisenberg> V>
-BvpSystem heisenberg_transported_system(const HeisenbergNaturalProblem<V>& problem) {
+void heisenberg_transported_jacobian(const HeisenbergNaturalProblem<V>& problem,
+                                     const Heisenberg::AlgebraMatrix& inertia_inverse, double t, ConstVectorRef y,
+                                     MatrixRef dfdy) {
+  using M3 = Heisenberg::AlgebraMatrix;
+  const Heisenberg::Element g = y.head<3>();
+  const Heisenberg::Tangent v = y.segment<3>(3);
+  const auto& l = problem.lagrangian;
+  const double lambda = problem.lambda;
+  const M3 transport = heisenberg_transport(lambda, problem.g0, g);
+  const Heisenberg::Tangent u = transport * v, mu = l.momentum(t, g, v);
+  const Heisenberg::Tangent zeta = l.group_gradient(t, g, v);
+  M3 translate = M3::Identity();  // L(g)
+  translate(2, 1) = g[0];
+  const M3 dzeta_dg = -potential_left_hessian<Heisenberg>(l.potential(), g) * translate.inverse();
+  const M3 dcoad_dv = Heisenberg::ad(v).transpose() * l.inertia() + coad_first(mu);
+  dfdy.setZero();
+  M3 dgdot_dg = lambda * translate * Heisenberg::ad(v);
+  dgdot_dg(2, 0) += u[1];
+  dfdy.block<3, 3>(0, 0) = dgdot_dg;
+  dfdy.block<3, 3>(0, 3) = translate * transport;
+  dfdy.block<3, 3>(3, 0) = inertia_inverse * (transport.transpose() * dzeta_dg - lambda * coad_first(zeta));
+  dfdy.block<3, 3>(3, 3) = -(2 * lambda - 1) * inertia_inverse * dcoad_dv;
+  dfdy.block<3, 3>(6, 3) = -dcoad_dv;
+}
+
+/// The system above for the collocation solver (n = 9, no parameters). The Jacobian of f is
+/// analytic unless `analytic_jacobian` is false (forward differences then).
+template <Potential<Heisenberg> V>
+BvpSystem heisenberg_transported_system(const HeisenbergNaturalProblem<V>& problem, bool analytic_jacobian = true) {
   BvpSystem s;
   s.n = 9;
   s.rhs = [problem](double t, ConstVectorRef y, ConstVectorRef, VectorRef dy) {
@@ -51,6 +91,19 @@ BvpSystem heisenberg_transported_system(const HeisenbergNaturalProblem<V>& probl
   s.bc = [g0 = problem.g0, gT = problem.gT](ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef, VectorRef r) {
     r << ya.head<3>() - g0, yb.head<3>() - gT, yb.tail<3>();
   };
+  s.bc_jacobian = [](ConstVectorRef, ConstVectorRef, ConstVectorRef, MatrixRef dya, MatrixRef dyb, MatrixRef) {
+    dya.setZero();
+    dyb.setZero();
+    dya.topLeftCorner<3, 3>().setIdentity();
+    dyb.bottomRows<6>().leftCols<3>().setIdentity();
+    dyb.bottomRightCorner<3, 3>().setIdentity();
+  };
+  if (analytic_jacobian) {
+    s.rhs_jacobian = [problem, inverse = Heisenberg::AlgebraMatrix(problem.lagrangian.inertia().inverse())](
+                         double t, ConstVectorRef y, ConstVectorRef, MatrixRef dfdy, MatrixRef) {
+      heisenberg_transported_jacobian(problem, inverse, t, y, dfdy);
+    };
+  }
   return s;
 }
 
