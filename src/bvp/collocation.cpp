@@ -28,8 +28,9 @@ constexpr double kNewtonFraction = 0.05;
 /// ... or at rounding level, this many ulps of the terms of r_i (needed when tol h is tiny).
 constexpr double kRoundingUlps = 16;
 constexpr int kMaxBacktracks = 10;
-/// Intervals whose residual exceeds this multiple of tol get two new nodes instead of one.
-constexpr double kTwoNodeFactor = 100;
+/// An interval with residual r > tol is split into ceil((r / tol)^(1/3)) pieces (the residual is
+/// O(h^3)), at least 2 and at most this many per round (the model is only asymptotic).
+constexpr int kMaxPieces = 6;
 
 /// The user's functions with evaluation counts and forward-difference Jacobians.
 class Model {
@@ -154,8 +155,10 @@ void jacobian(Model& model, const Iterate& it, CollocationJacobian& jac) {
     const double h = it.h[i];
     model.rhs_jacobian(it.t[i] + h / 2, it.ymid.col(i), it.p, it.fmid.col(i), jmy, jmp);
     // dy_mid/dy_i = I/2 + h/8 J_i, dy_mid/dy_{i+1} = I/2 - h/8 J_{i+1}, dy_mid/dp = -h/8 (P_{i+1} - P_i).
-    jac.a(i) = -eye - h / 6 * jy_left - h / 3 * jmy - h * h / 12 * jmy * jy_left;
-    jac.b(i) = eye - h / 6 * jy_right - h / 3 * jmy + h * h / 12 * jmy * jy_right;
+    jac.a(i) = -eye - h / 6 * jy_left - h / 3 * jmy;
+    jac.a(i).noalias() -= h * h / 12 * jmy * jy_left;
+    jac.b(i) = eye - h / 6 * jy_right - h / 3 * jmy;
+    jac.b(i).noalias() += h * h / 12 * jmy * jy_right;
     if (k > 0) jac.c(i) = -h / 6 * (jp_left + 4 * jmp + jp_right) + h * h / 12 * jmy * (jp_right - jp_left);
   }
   model.bc_jacobian(it.y.col(0), it.y.col(m - 1), it.p, it.residual.tail(n + k), jac.Da, jac.Db, jac.Dp);
@@ -402,7 +405,8 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
       }
       for (Index i = 0; i + 1 < m; ++i) {
         const double r = rms[i];
-        pieces[static_cast<std::size_t>(i)] = r <= options.tol ? 1 : r <= kTwoNodeFactor * options.tol ? 2 : 3;
+        pieces[static_cast<std::size_t>(i)] =
+            r <= options.tol ? 1 : std::clamp(static_cast<int>(std::ceil(std::cbrt(r / options.tol))), 2, kMaxPieces);
       }
       why = "residual " + format_value(rms.maxCoeff()) + " above tol = " + format_value(options.tol);
     }

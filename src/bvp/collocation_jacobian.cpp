@@ -74,6 +74,8 @@ bool BlockLU::factorize(const CollocationJacobian& J) {
       M.block(n, n, n, n) = J.B.middleCols(n * (j + 1), n);
       M.bottomRightCorner(n, k_) = J.C.middleCols(k_ * (j + 1), k_);
     }
+    // Unblocked partial pivoting on the n current columns (whole rows interchanged), then one
+    // triangular solve and one matrix product for the next and border columns (LAPACK getrf).
     step.swaps.resize(static_cast<std::size_t>(n));
     for (int c = 0; c < n; ++c) {
       Index pivot = c;
@@ -88,9 +90,12 @@ bool BlockLU::factorize(const CollocationJacobian& J) {
       }
       const Index below = M.rows() - c - 1;
       M.col(c).tail(below) /= diagonal;
-      M.bottomRightCorner(below, width - c - 1).noalias() -=
-          M.col(c).tail(below) * M.row(c).tail(width - c - 1);
+      M.block(c + 1, c + 1, below, n - c - 1).noalias() -= M.col(c).tail(below) * M.row(c).segment(c + 1, n - c - 1);
     }
+    const Index right = width - n;
+    M.topRightCorner(n, right) =
+        M.topLeftCorner(n, n).triangularView<Eigen::UnitLower>().solve(M.topRightCorner(n, right));
+    M.bottomRightCorner(fresh, right).noalias() -= M.bottomLeftCorner(fresh, n) * M.topRightCorner(n, right);
     carry_current = M.bottomRows(fresh).middleCols(n, n);
     carry_border = M.bottomRightCorner(fresh, q);
   }

@@ -16,8 +16,9 @@
 //    forward differences with steps fd_step * max(1, |x_j|).
 //  * Error control: the residual rho(t) = S'(t) - f(t, S(t)), relative to 1 + |f|, is O(h^3);
 //    its RMS over each interval (5-point Lobatto quadrature; rho vanishes at both ends) must be
-//    <= tol. Intervals above tol get one node (two if above 100 tol) and the solution is carried
-//    to the new mesh by S (warm start); the mesh never exceeds max_nodes.
+//    <= tol. An interval with residual r > tol is split into ceil((r / tol)^(1/3)) pieces (2 to
+//    6), the solution is carried to the new mesh by S (warm start); the mesh never exceeds
+//    max_nodes.
 // Numerical outcomes are reported in BvpResult; only invalid arguments throw.
 
 #include <Eigen/Core>
