@@ -6,12 +6,16 @@ Run by ctest (the `cli` test) with CARTAN_BIN pointing at the built `cartan` exe
 import json
 import os
 import subprocess
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
-from scipy.integrate import solve_bvp
 
 CARTAN = os.environ.get("CARTAN_BIN", "build/cartan")
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench" / "python"))
+import h3_scipy  # noqa: E402
+
 H3 = ["--group", "heisenberg", "--model", "oscillator", "--method", "collocation", "--T", "1"]
 
 
@@ -25,23 +29,8 @@ def collocation(lam, gT, tol="1e-8", samples="11", extra=()):
     return json.loads(result.stdout)
 
 
-def printed_system(lam):
-    """The six ODEs printed in the appendix (g0 = e, unit inertia)."""
-    def f(t, y):
-        a, b, c, v1, v2, v3 = y
-        return np.vstack([v1, v2, v3 + (1 - lam) * a * v2 + lam * b * v1,
-                          -a - lam * c * b + (2 * lam - 1) * v2 * v3,
-                          -b - (1 - lam) * c * a - (2 * lam - 1) * v1 * v3,
-                          -c])
-    return f
-
-
 def scipy_solution(lam, gT, tol):
-    gT = np.asarray(gT, dtype=float)
-    x = np.linspace(0, 1, 11)
-    guess = np.vstack([np.outer(gT, x), np.repeat(gT[:, None], x.size, axis=1)])
-    bc = lambda ya, yb: np.concatenate([ya[:3], yb[:3] - gT])
-    sol = solve_bvp(printed_system(lam), bc, x, guess, tol=tol, max_nodes=100000)
+    sol = h3_scipy.solve(lam, gT, tol)
     assert sol.status == 0, sol.message
     return sol
 
