@@ -10,8 +10,11 @@ with xi as three more states (nine equations, analytic Jacobian). Reported per c
 --repeat runs: SciPy's in-process time; cartan's in-process solve_time_s (from its JSON) and the
 wall time of the whole `cartan` process (start-up, solve, JSON output). Ratios = SciPy / cartan.
 The last column is the largest difference between the two solutions at 11 sample times.
+With --bench (build/bench/bench_collocation, Google Benchmark) the same cases are also timed warm
+in-process (mean over repeated solves, no process start-up) and compared with SciPy's times.
 
-Usage: /usr/bin/python3 bench/compare_collocation.py [--cartan build/cartan] [--repeat 5] [--markdown FILE]
+Usage: /usr/bin/python3 bench/compare_collocation.py [--cartan build/cartan] [--bench BINARY] [--repeat 5]
+       [--markdown FILE]
 """
 import argparse
 import json
@@ -51,9 +54,25 @@ def run_scipy(lam, gT):
     return sol, seconds
 
 
+def warm_comparison(binary, rows):
+    """Google Benchmark's warm in-process time of the same solves against the SciPy times above."""
+    out = subprocess.run([binary, "--benchmark_format=json", "--benchmark_min_time=0.2"], capture_output=True,
+                         text=True, check=True)
+    warm = {}
+    for b in json.loads(out.stdout)["benchmarks"]:
+        endpoint, lam2 = (int(x) for x in b["name"].split("/")[1:3])
+        warm[(ENDPOINTS[endpoint], lam2 / 2)] = b["real_time"] / 1e3  # ms -> s
+    scipy_total = sum(r[2] for r in rows)
+    warm_total = sum(warm[(r[0], r[1])] for r in rows)
+    per_case = ", ".join(f"{r[2] / warm[(r[0], r[1])]:.0f}" for r in rows)
+    return (f"Warm in-process (bench_collocation): cartan {warm_total * 1e3:.1f} ms for the {len(rows)} cases, "
+            f"ratio SciPy / cartan {scipy_total / warm_total:.1f} (per case: {per_case}).")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cartan", default="build/cartan")
+    parser.add_argument("--bench", help="bench_collocation binary for warm in-process times")
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--markdown")
     args = parser.parse_args()
@@ -81,6 +100,8 @@ def main():
     lines.append(f"\nTotals: SciPy {total[0] * 1e3:.1f} ms, cartan solve {total[1] * 1e3:.1f} ms "
                  f"(ratio {total[0] / total[1]:.1f}), cartan process {total[2] * 1e3:.1f} ms "
                  f"(ratio {total[0] / total[2]:.1f}); fastest of {args.repeat} alternating runs each, tol {TOL}.")
+    if args.bench:
+        lines.append("\n" + warm_comparison(args.bench, rows))
     text = "\n".join(lines)
     print(text)
     if args.markdown:

@@ -47,7 +47,7 @@ class Model {
   void bc(ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p, VectorRef out) const { s_.bc(ya, yb, p, out); }
 
   /// df/dy and df/dp at (t, y, p), where f0 = f(t, y, p).
-  void rhs_jacobian(double t, const VectorXd& y, const VectorXd& p, const VectorXd& f0, MatrixXd& dfdy,
+  void rhs_jacobian(double t, ConstVectorRef y, ConstVectorRef p, ConstVectorRef f0, MatrixXd& dfdy,
                     MatrixXd& dfdp) {
     dfdy.resize(n(), n());
     dfdp.resize(n(), k());
@@ -80,7 +80,7 @@ class Model {
  private:
   /// Forward differences of g at x (g(x) = g0), column j with step fd_step max(1, |x_j|).
   template <class Function>
-  void difference(const VectorXd& x, MatrixXd& out, const VectorXd& g0, const Function& g) const {
+  void difference(ConstVectorRef x, MatrixXd& out, ConstVectorRef g0, const Function& g) const {
     VectorXd xx = x;
     for (Index j = 0; j < x.size(); ++j) {
       xx[j] = x[j] + fd_step_ * std::max(1.0, std::abs(x[j]));
@@ -293,18 +293,20 @@ VectorXd rms_residuals(Model& model, const Iterate& it) {
   const CubicHermite s(it.t, it.y, it.f);
   const double offset = std::sqrt(3.0 / 7.0) / 2;
   VectorXd rms(it.nodes() - 1);
-  VectorXd f(n);
-  auto relative = [](const VectorXd& slope, const VectorXd& rate) {
-    return ((slope - rate).array() / (1 + rate.array().abs())).matrix().squaredNorm();
+  VectorXd f(n), value(n), slope(n);
+  auto relative = [](const VectorXd& dS, ConstVectorRef rate) {
+    return ((dS - rate).array() / (1 + rate.array().abs())).matrix().squaredNorm();
   };
   for (Index i = 0; i + 1 < it.nodes(); ++i) {
     const double h = it.h[i], mid = it.t[i] + h / 2;
     double outer = 0;
     for (double tt : {mid - offset * h, mid + offset * h}) {
-      model.rhs(tt, s.value(tt), it.p, f);
-      outer += relative(s.derivative(tt), f);
+      s.evaluate(tt, &value, &slope);
+      model.rhs(tt, value, it.p, f);
+      outer += relative(slope, f);
     }
-    rms[i] = std::sqrt(49.0 / 180.0 * outer + 16.0 / 45.0 * relative(s.derivative(mid), it.fmid.col(i)));
+    s.evaluate(mid, nullptr, &slope);
+    rms[i] = std::sqrt(49.0 / 180.0 * outer + 16.0 / 45.0 * relative(slope, it.fmid.col(i)));
   }
   return rms;
 }

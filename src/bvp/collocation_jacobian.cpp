@@ -111,30 +111,33 @@ bool BlockLU::factorize(const CollocationJacobian& J) {
 VectorXd BlockLU::solve(const VectorXd& rhs) const {
   const int n = n_, q = n_ + k_;
   const Index steps = static_cast<Index>(steps_.size());
-  std::vector<VectorXd> pivot_rhs(steps_.size());
-  VectorXd carry = rhs.head(n);
+  VectorXd pivot_rhs(n * steps);
+  VectorXd b(2 * n + k_);
+  b.head(n) = rhs.head(n);  // the rows carried into step 0: r_0
   for (Index j = 0; j < steps; ++j) {
     const Step& step = steps_[static_cast<std::size_t>(j)];
     const Index fresh = step.panel.rows() - n;
-    VectorXd b(n + fresh);
-    b << carry, rhs.segment(n * (j + 1), fresh);
+    b.segment(n, fresh) = rhs.segment(n * (j + 1), fresh);
     // The stored multipliers sit in their rows after all interchanges (as in LAPACK's getrf):
     // permute first, then eliminate.
+    const Index rows = n + fresh;
     for (int c = 0; c < n; ++c) std::swap(b[c], b[step.swaps[static_cast<std::size_t>(c)]]);
-    for (int c = 0; c < n; ++c) b.tail(b.size() - c - 1) -= step.panel.col(c).tail(b.size() - c - 1) * b[c];
-    pivot_rhs[static_cast<std::size_t>(j)] = b.head(n);
-    carry = b.tail(fresh);
+    for (int c = 0; c < n; ++c) b.segment(c + 1, rows - c - 1) -= step.panel.col(c).tail(rows - c - 1) * b[c];
+    pivot_rhs.segment(n * j, n) = b.head(n);
+    b.head(fresh) = b.segment(n, fresh).eval();  // carried rows
   }
-  const VectorXd border = border_.solve(carry);  // (y_0, p)
+  const VectorXd border = border_.solve(b.head(q));  // (y_0, p)
   VectorXd x(rhs.size());
   x.head(n) = border.head(n);
   x.tail(k_) = border.tail(k_);
-  VectorXd next = VectorXd::Zero(n);
+  VectorXd next = VectorXd::Zero(n), right(n);
   for (Index j = steps - 1; j >= 0; --j) {
     const MatrixXd& U = steps_[static_cast<std::size_t>(j)].panel;
-    const VectorXd right = pivot_rhs[static_cast<std::size_t>(j)] - U.block(0, n, n, n) * next -
-                           U.topRightCorner(n, q) * border;
-    next = U.topLeftCorner(n, n).triangularView<Eigen::Upper>().solve(right);
+    right = pivot_rhs.segment(n * j, n);
+    right.noalias() -= U.block(0, n, n, n) * next;
+    right.noalias() -= U.topRightCorner(n, q) * border;
+    U.topLeftCorner(n, n).triangularView<Eigen::Upper>().solveInPlace(right);
+    next = right;
     x.segment(n * (j + 1), n) = next;
   }
   return x;

@@ -19,17 +19,30 @@ class CubicHermite {
       : t_(std::move(t)), y_(std::move(y)), yp_(std::move(yp)) {}
 
   Eigen::VectorXd value(double t) const {
-    const auto [i, s, h] = locate(t);
-    const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
-    const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
-    return h00 * y_.col(i) + h * h10 * yp_.col(i) + h01 * y_.col(i + 1) + h * h11 * yp_.col(i + 1);
+    Eigen::VectorXd out(y_.rows());
+    evaluate(t, &out, nullptr);
+    return out;
   }
 
   Eigen::VectorXd derivative(double t) const {
+    Eigen::VectorXd out(y_.rows());
+    evaluate(t, nullptr, &out);
+    return out;
+  }
+
+  /// S(t) and/or S'(t) into preallocated vectors of size n (either may be null).
+  void evaluate(double t, Eigen::VectorXd* value, Eigen::VectorXd* derivative) const {
     const auto [i, s, h] = locate(t);
-    const double d00 = 6 * s * (s - 1), d10 = (1 - s) * (1 - 3 * s);
-    const double d01 = -d00, d11 = s * (3 * s - 2);
-    return (d00 * y_.col(i) + d01 * y_.col(i + 1)) / h + d10 * yp_.col(i) + d11 * yp_.col(i + 1);
+    if (value) {
+      const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
+      const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+      value->noalias() = h00 * y_.col(i) + h * h10 * yp_.col(i) + h01 * y_.col(i + 1) + h * h11 * yp_.col(i + 1);
+    }
+    if (derivative) {
+      const double d00 = 6 * s * (s - 1), d10 = (1 - s) * (1 - 3 * s);
+      const double d01 = -d00, d11 = s * (3 * s - 2);
+      derivative->noalias() = (d00 * y_.col(i) + d01 * y_.col(i + 1)) / h + d10 * yp_.col(i) + d11 * yp_.col(i + 1);
+    }
   }
 
   /// Values at several times, one column per time.
