@@ -31,8 +31,8 @@ nlohmann::json solve_by_collocation(const ProblemSpec& spec, const TransportedPr
   for (Eigen::Index j = 0; j < y.cols(); ++j) {
     mu.col(j) = problem.lagrangian.momentum(t[j], y.col(j).head<3>(), y.col(j).segment<3>(3));
   }
-  const Eigen::VectorXd last = r.y.col(r.y.cols() - 1);
-  const Heisenberg::Element g_end = last.head<3>();
+  const Eigen::MatrixXd xi = bvp::heisenberg_xi(problem, r, t);
+  const Heisenberg::Element g_end = r.y.col(r.y.cols() - 1).head<3>();
   return {
       {"status", r.success() ? "converged" : std::string(bvp::to_string(r.status))},
       {"message", r.message},
@@ -48,9 +48,9 @@ nlohmann::json solve_by_collocation(const ProblemSpec& spec, const TransportedPr
       {"g", column_rows(y, 0)},
       {"v", column_rows(y, 3)},
       {"mu", column_rows(mu, 0)},
-      {"xi", column_rows(y, 6)},
+      {"xi", column_rows(xi, 0)},
       {"terminal_error", Heisenberg::log(Heisenberg::compose(Heisenberg::inverse(problem.gT), g_end)).norm()},
-      {"xi_terminal", last.tail<3>().norm()},
+      {"xi_terminal", xi.col(xi.cols() - 1).norm()},
       {"iterations", {{"outer", r.refinements}, {"inner", r.newton_iterations}, {"sweeps", r.jacobian_evaluations}}},
       {"mesh_size", r.t.size()},
       {"max_residual", r.max_rms_residual},

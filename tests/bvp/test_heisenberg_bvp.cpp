@@ -44,17 +44,14 @@ VectorXd printed_system(double lambda, const VectorXd& y) {
   return out;
 }
 
-// g0 = e: the system is the printed one to rounding, for any real lambda, and xi' = -ad*_v mu
-// = (v3 v2, -v3 v1, 0) (ad-dual-Heis with mu = v).
+// g0 = e: the system is the printed one to rounding, for any real lambda.
 TEST(HeisenbergBvp, IdentityStartReproducesThePrintedSystem) {
   std::mt19937 rng(kSeed);
   for (double lambda : {0.0, 0.25, 0.5, 0.75, 1.0, -0.6, 1.7}) {
     const BvpSystem s = heisenberg_transported_system(h3_problem(lambda, Vector3d::Zero(), Vector3d(1, 0.5, 0.8)));
     for (int trial = 0; trial < 5; ++trial) {
-      const VectorXd y = random_vector<Eigen::Matrix<double, 9, 1>>(rng, 1.5);
-      const VectorXd dy = rhs(s, y);
-      EXPECT_LE((dy.head(6) - printed_system(lambda, y)).cwiseAbs().maxCoeff(), 1e-14) << "lambda " << lambda;
-      EXPECT_LE((dy.tail(3) - Vector3d(y[5] * y[4], -y[5] * y[3], 0)).cwiseAbs().maxCoeff(), 1e-14);
+      const VectorXd y = random_vector<Eigen::Matrix<double, 6, 1>>(rng, 1.5);
+      EXPECT_LE((rhs(s, y) - printed_system(lambda, y)).cwiseAbs().maxCoeff(), 1e-14) << "lambda " << lambda;
     }
   }
 }
@@ -71,7 +68,7 @@ TEST(HeisenbergBvp, GeneralStartMatchesTheAppendixInCoordinatesAtG0) {
     for (int trial = 0; trial < 5; ++trial) {
       const Vector3d g0 = random_vector<Vector3d>(rng, 1.0);
       const BvpSystem s = heisenberg_transported_system(h3_problem(lambda, g0, Vector3d(1, 0.5, 0.8)));
-      const VectorXd y = random_vector<Eigen::Matrix<double, 9, 1>>(rng, 1.5);
+      const VectorXd y = random_vector<Eigen::Matrix<double, 6, 1>>(rng, 1.5);
       const Vector3d g = y.head<3>(), v = y.segment<3>(3);
       const VectorXd dy = rhs(s, y);
       const Vector3d v_paper = Heisenberg::left_translate(g0, v);  // coordinate components at g0
@@ -101,12 +98,12 @@ TEST(HeisenbergBvp, AnalyticJacobianMatchesDifferences) {
     for (double lambda : {0.0, 0.5, 1.0, 0.3, -0.7}) {
       const H3Problem p{l, lambda, 1.0, 10, random_vector<Vector3d>(rng, 1.0), Vector3d(1, 0.5, 0.8)};
       const BvpSystem s = heisenberg_transported_system(p);
-      const VectorXd y = random_vector<Eigen::Matrix<double, 9, 1>>(rng, 1.5);
-      Eigen::MatrixXd analytic(9, 9), none(9, 0), differences(9, 9);
+      const VectorXd y = random_vector<Eigen::Matrix<double, 6, 1>>(rng, 1.5);
+      Eigen::MatrixXd analytic(6, 6), none(6, 0), differences(6, 6);
       s.rhs_jacobian(0.3, y, VectorXd(0), analytic, none);
       constexpr double kStep = 1e-6;
-      for (int j = 0; j < 9; ++j) {
-        const VectorXd e = VectorXd::Unit(9, j) * kStep;
+      for (int j = 0; j < 6; ++j) {
+        const VectorXd e = VectorXd::Unit(6, j) * kStep;
         differences.col(j) = (rhs(s, y + e) - rhs(s, y - e)) / (2 * kStep);
       }
       EXPECT_LE((analytic - differences).cwiseAbs().maxCoeff(), 1e-8) << "lambda " << lambda;
@@ -123,25 +120,28 @@ TEST(HeisenbergBvp, AnalyticJacobianMatchesDifferences) {
   EXPECT_LE((a.y - d.y).cwiseAbs().maxCoeff(), 1e-10);
 }
 
-// The collocation solution (tol 1e-10: error ~1e-12, negligible) and the order-2 transported
-// shooting solution solve the same continuous problem; their difference at the scheme's nodes
-// must shrink at the scheme's order 2 (within 0.25) for g0 != e.
+// The collocation solution (tol 1e-10: error ~1e-12, negligible; xi integrated along it) and the
+// order-2 transported shooting solution (xi as a state) solve the same continuous problem; their
+// difference at the scheme's nodes must shrink at the scheme's order 2 (within 0.25), g0 != e.
 TEST(HeisenbergBvp, AgreesWithTransportedShootingAtTheSchemesOrder) {
   const Vector3d g0(0.3, -0.2, 0.5), gT(1, 0.5, 0.8);
   for (double lambda : {0.0, 0.5, 1.0}) {
-    const BvpResult c = solve_heisenberg_collocation(h3_problem(lambda, g0, gT), {.tol = 1e-10, .max_nodes = 5000});
+    const H3Problem p = h3_problem(lambda, g0, gT);
+    const BvpResult c = solve_heisenberg_collocation(p, {.tol = 1e-10, .max_nodes = 5000});
     ASSERT_TRUE(c.success()) << c.message;
     std::vector<double> difference;
     for (int N : {50, 100, 200}) {
       const TransportedSolution<Heisenberg> s =
           solve_shooting(h3_problem(lambda, g0, gT, N), {.order = SchemeOrder::Second, .tolerance = 1e-13});
       ASSERT_TRUE(s.converged) << s.message;
+      const VectorXd times = Eigen::Map<const VectorXd>(s.trajectory.t.data(), static_cast<Eigen::Index>(s.trajectory.t.size()));
+      const Eigen::MatrixXd xi = heisenberg_xi(p, c, times);
       double worst = 0;
       for (std::size_t k = 0; k < s.trajectory.t.size(); ++k) {
         const VectorXd y = c(s.trajectory.t[k]);
         worst = std::max({worst, (y.head<3>() - s.trajectory.g[k]).cwiseAbs().maxCoeff(),
                           (y.segment<3>(3) - s.trajectory.v[k]).cwiseAbs().maxCoeff(),
-                          (y.tail<3>() - s.trajectory.xi[k]).cwiseAbs().maxCoeff()});
+                          (xi.col(static_cast<Eigen::Index>(k)) - s.trajectory.xi[k]).cwiseAbs().maxCoeff()});
       }
       difference.push_back(worst);
       RecordProperty("difference_lambda" + std::to_string(lambda) + "_N" + std::to_string(N), format_value(worst));

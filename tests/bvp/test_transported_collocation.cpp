@@ -18,8 +18,9 @@ namespace {
 
 using Eigen::VectorXd;
 
-// H3 with g and the transport element h as states must reproduce the closed-form transport
-// (para-trans-Heis) of heisenberg_transported.hpp: both solve the same BVP to tol 1e-10, whose
+// H3 with g, the transport element h and xi as states must reproduce the closed-form transport
+// (para-trans-Heis) of heisenberg_transported.hpp, with xi integrated along its solution: both
+// solve the same BVP to tol 1e-10, whose
 // errors (O(h^4), far below the residual) are ~1e-12; 1e-9 leaves room for the two meshes.
 TEST(TransportedCollocation, HeisenbergAgreesWithTheClosedFormSystem) {
   using Generic = TransportedCollocation<Heisenberg, HeisenbergQuadraticPotential>;
@@ -31,11 +32,13 @@ TEST(TransportedCollocation, HeisenbergAgreesWithTheClosedFormSystem) {
     const BvpResult closed = solve_heisenberg_collocation(p, options);
     ASSERT_TRUE(generic.success()) << generic.message;
     ASSERT_TRUE(closed.success()) << closed.message;
-    for (double t = 0; t <= 1.0; t += 0.05) {
-      const VectorXd a = generic(t), b = closed(t);
-      EXPECT_LE((a.segment<3>(Generic::kG) - b.head<3>()).cwiseAbs().maxCoeff(), 1e-9) << t;
-      EXPECT_LE((a.segment<3>(Generic::kV) - b.segment<3>(3)).cwiseAbs().maxCoeff(), 1e-9) << t;
-      EXPECT_LE((a.segment<3>(Generic::kXi) - b.tail<3>()).cwiseAbs().maxCoeff(), 1e-9) << t;
+    const VectorXd times = VectorXd::LinSpaced(21, 0, 1);
+    const Eigen::MatrixXd xi = heisenberg_xi(p, closed, times);  // quadrature vs xi as a state
+    for (Eigen::Index j = 0; j < times.size(); ++j) {
+      const VectorXd a = generic(times[j]), b = closed(times[j]);
+      EXPECT_LE((a.segment<3>(Generic::kG) - b.head<3>()).cwiseAbs().maxCoeff(), 1e-9) << times[j];
+      EXPECT_LE((a.segment<3>(Generic::kV) - b.segment<3>(3)).cwiseAbs().maxCoeff(), 1e-9) << times[j];
+      EXPECT_LE((a.segment<3>(Generic::kXi) - xi.col(j)).cwiseAbs().maxCoeff(), 1e-9) << times[j];
     }
   }
 }
