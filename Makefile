@@ -38,6 +38,7 @@ bench: build
 	mkdir -p out
 	$(BUILD)/bench/bench_transported --benchmark_min_time=0.2 | tee out/bench_transported.txt
 	/usr/bin/python3 bench/compare_with_python.py --cartan $(BUILD)/cartan --repeat 3 --markdown out/bench_compare.md
+	/usr/bin/python3 bench/compare_collocation.py --cartan $(BUILD)/cartan --bench $(BUILD)/bench/bench_collocation --markdown out/bench_collocation.md
 
 clean:
 	rm -rf $(BUILD) $(BUILD_ASAN) out

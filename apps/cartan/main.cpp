@@ -86,15 +86,16 @@ int main(int argc, char** argv) {
   solve->add_option("--a0", a0, "so3: initial direction; gT = minimal rotation taking a0 to aT");
   solve->add_option("--aT", aT, "so3: final direction");
   solve->add_option("--method", flags.method,
-                    "two-level | shooting | multiple-shooting (default shooting: augmented shooting with analytic "
-                    "Jacobian, continued in T when needed; multiple-shooting: lifted LM over --segments segments)");
+                    "two-level | shooting | multiple-shooting | collocation (default shooting: augmented shooting "
+                    "with analytic Jacobian, continued in T when needed; multiple-shooting: lifted LM over "
+                    "--segments segments; collocation: fourth-order adaptive collocation, heisenberg only)");
   solve->add_option("--continuation", flags.continuation,
                     "shooting: T (default; continue in T from a shorter horizon when direct shooting fails) | "
                     "lambda (continue in lambda from the lambda = 0 solution) | none (direct shooting only)");
   solve->add_option("--segments", flags.segments, "multiple-shooting: number of segments (default about 100 steps each, at most 16)");
   solve->add_option("--order", flags.order, "1 (the paper's scheme) | 2 (second order) (default 1)");
   solve->add_option("--tol", flags.tol, "tolerance (default 1e-10)");
-  solve->add_option("--samples", flags.samples, "output samples (collocation; unused by the shooting methods)");
+  solve->add_option("--samples", flags.samples, "collocation: output at this many uniform times on [0, T] (0: the final mesh); unused by the shooting methods");
   solve->add_option("--max-iterations", flags.max_iterations, "iteration limit of each loop (default 200)");
   solve->add_option("--output", flags.output, "output file (default stdout)");
 

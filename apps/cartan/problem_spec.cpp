@@ -80,7 +80,7 @@ void require_size(const std::string& name, const std::vector<double>& values, st
 }  // namespace
 
 const std::vector<std::string>& available_methods() {
-  static const std::vector<std::string> methods{"two-level", "shooting", "multiple-shooting"};
+  static const std::vector<std::string> methods{"two-level", "shooting", "multiple-shooting", "collocation"};
   return methods;
 }
 
@@ -148,6 +148,10 @@ void validate(ProblemSpec& spec) {
   if (spec.samples < 0) bad("samples", std::to_string(spec.samples), "must be non-negative");
   if (spec.segments < 0 || spec.segments > spec.N) {
     bad("segments", std::to_string(spec.segments), "must be between 1 and N (0: the default, about 100 steps each)");
+  }
+  if (spec.samples == 1) bad("samples", "1", "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");
+  if (spec.method == "collocation" && spec.group != "heisenberg") {
+    bad("method", "\"collocation\"", "is available for --group heisenberg only");
   }
   if (spec.inertia.empty()) spec.inertia = spec.group == "so3" ? std::vector<double>{2, 3, 4} : std::vector<double>{1, 1, 1};
   require_size("inertia", spec.inertia, 3, "the diagonal of the inertia");

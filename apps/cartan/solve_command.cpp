@@ -1,6 +1,7 @@
 #include "solve_command.hpp"
 
 #include "cartan/models/heisenberg_oscillator.hpp"
+#include "collocation_command.hpp"
 #include "cartan/models/rigid_body.hpp"
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/multiple_shooting.hpp"
@@ -95,6 +96,7 @@ nlohmann::json solve(const ProblemSpec& spec) {
     const Heisenberg::Element gT(spec.gT[0], spec.gT[1], spec.gT[2]);
     const TransportedProblem<Heisenberg, H3Oscillator> problem{H3Oscillator(inertia.asDiagonal().toDenseMatrix()),
                                                                spec.lambda, spec.T, spec.N, g0, gT};
+    if (spec.method == "collocation") return solve_by_collocation(spec, problem);
     return run(spec, problem);
   }
   const SO3::Element g0 = rotation(spec.g0, "g0");

@@ -1,0 +1,34 @@
+// The collocation solver on the paper's H3 oscillator BVP (appendix sec-app-H3) at tol 1e-8,
+// from the geodesic guess on 11 nodes, for the endpoints and lambdas of
+// bench/compare_collocation.py (which compares with SciPy's solve_bvp). In-process, warm: the
+// time of a solve without process start-up. Counters: final mesh size and Newton iterations.
+#include <benchmark/benchmark.h>
+
+#include <array>
+
+#include "cartan/bvp/heisenberg_transported.hpp"
+#include "cartan/models/heisenberg_oscillator.hpp"
+
+namespace {
+
+constexpr std::array<std::array<double, 3>, 3> kEndpoints{{{1, 0.5, 0.8}, {-1, 1, 0.5}, {0.5, -1, -1}}};
+
+void BM_H3Collocation(benchmark::State& state) {
+  const auto& gT = kEndpoints[static_cast<std::size_t>(state.range(0))];
+  const double lambda = static_cast<double>(state.range(1)) / 2;
+  const cartan::TransportedProblem<cartan::Heisenberg, cartan::H3Oscillator> problem{
+      cartan::h3_oscillator(), lambda, 1.0, 10, cartan::Heisenberg::identity(), Eigen::Vector3d(gT[0], gT[1], gT[2])};
+  cartan::bvp::BvpResult r;
+  for (auto _ : state) {
+    r = cartan::bvp::solve_heisenberg_collocation(problem, {.tol = 1e-8});
+    benchmark::DoNotOptimize(r.y.data());
+  }
+  if (!r.success()) state.SkipWithError(r.message.c_str());
+  state.counters["nodes"] = static_cast<double>(r.t.size());
+  state.counters["newton"] = r.newton_iterations;
+}
+BENCHMARK(BM_H3Collocation)->ArgsProduct({{0, 1, 2}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
