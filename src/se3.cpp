@@ -23,7 +23,6 @@ SE3::Element SE3::exp(const Tangent& v) {
 }
 
 SE3::Tangent SE3::log(const Element& g) {
-  validate(g, "log argument g");
   const Eigen::Vector3d w = SO3::log(rotation(g));
   Tangent v;
   v << SO3::left_jacobian_inverse(w) * translation(g), w;

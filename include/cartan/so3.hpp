@@ -48,7 +48,9 @@ struct SO3 {
   static Eigen::Matrix3d left_jacobian_inverse(const Tangent& v);
   /// Principal logarithm, |log R| in [0, pi]. Stable near 0 (series) and near pi (axis from
   /// the symmetric part of R). At exactly pi either of the two logarithms may be returned.
-  /// Throws std::invalid_argument (as validate) unless R is a rotation within kDefaultTolerance.
+  /// R is not checked: the formula is a smooth extension to matrices near SO(3), on which
+  /// ambient-coordinate solvers rely (bvp/transported_collocation.hpp evaluates log(gT^{-1} g(T))
+  /// during Newton iterations, off the group). Validate user input with validate/from_matrix.
   static Tangent log(const Element& r);
 
   static MatrixRep hat(const Tangent& v);
