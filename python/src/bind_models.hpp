@@ -1,0 +1,120 @@
+#pragma once
+// Built-in reduced Lagrangians and Hamiltonians (models/), their second derivatives
+// (lagrangian_hessian.hpp), and the classical Euler–Poincaré / Lie–Poisson integrators
+// (euler_poincare.hpp: eq:EP-left, eq:EP-right; lie_poisson.hpp: eq:LP-left, eq:LP-right) for
+// built-in and Python-defined models alike.
+
+#include <string>
+
+#include "bind_group.hpp"
+#include "cartan/euler_poincare.hpp"
+#include "cartan/lagrangian_hessian.hpp"
+#include "cartan/lie_poisson.hpp"
+#include "python_models.hpp"
+
+namespace cartan::python {
+
+Side parse_side(const std::string& side, std::string_view where);
+
+template <class... T>
+struct Types {};
+
+/// A symmetric positive-definite inertia from a (n, n) matrix or the (n,) diagonal.
+template <int N>
+Eigen::Matrix<double, N, N> inertia_matrix(const py::object& inertia, std::string_view where) {
+  const Array a = as_array(inertia, where, "inertia");
+  if (a.ndim() == 1) return to_eigen<Eigen::Matrix<double, N, 1>>(a, where, "inertia").asDiagonal();
+  return to_eigen<Eigen::Matrix<double, N, N>>(a, where, "inertia");
+}
+
+/// value/momentum/group_gradient/velocity/hessian of a built-in Lagrangian, with `group` and
+/// `side` (the trivialisation it is reduced on) as class attributes.
+template <LieGroup G, ReducedLagrangian<G> L, class Init>
+void bind_lagrangian(py::module_& m, const py::object& group, const char* name, const char* side, const char* doc,
+                     Init init) {
+  const Args<G> a{name};
+  py::class_<L> cls(m, name, doc);
+  init(cls);
+  cls.attr("group") = group;
+  cls.attr("side") = side;
+  cls.def("value", [a](const L& l, double t, const py::object& g, const py::object& v) {
+    return l.value(t, a.element(g, "value", "g"), a.tangent(v, "value", "v"));
+  }, py::arg("t"), py::arg("g"), py::arg("v"), "l(t, g, v).");
+  cls.def("momentum", [a](const L& l, double t, const py::object& g, const py::object& v) {
+    return to_numpy(l.momentum(t, a.element(g, "momentum", "g"), a.tangent(v, "momentum", "v")));
+  }, py::arg("t"), py::arg("g"), py::arg("v"), "mu = dl/dv (the reduced Legendre map).");
+  cls.def("group_gradient", [a](const L& l, double t, const py::object& g, const py::object& v) {
+    return to_numpy(l.group_gradient(t, a.element(g, "group_gradient", "g"), a.tangent(v, "group_gradient", "v")));
+  }, py::arg("t"), py::arg("g"), py::arg("v"), "zeta, the trivialised dl/dg at fixed v.");
+  cls.def("velocity", [a](const L& l, double t, const py::object& g, const py::object& mu) {
+    return to_numpy(l.velocity(t, a.element(g, "velocity", "g"), a.tangent(mu, "velocity", "mu")));
+  }, py::arg("t"), py::arg("g"), py::arg("mu"), "v with momentum(t, g, v) = mu (inverse Legendre map).");
+}
+
+template <LieGroup G, ReducedHamiltonian<G> H, class Init>
+void bind_hamiltonian(py::module_& m, const py::object& group, const char* name, const char* side, const char* doc,
+                      Init init) {
+  const Args<G> a{name};
+  py::class_<H> cls(m, name, doc);
+  init(cls);
+  cls.attr("group") = group;
+  cls.attr("side") = side;
+  cls.def("value", [a](const H& h, double t, const py::object& g, const py::object& mu) {
+    return h.value(t, a.element(g, "value", "g"), a.tangent(mu, "value", "mu"));
+  }, py::arg("t"), py::arg("g"), py::arg("mu"), "h(t, g, mu).");
+  cls.def("velocity", [a](const H& h, double t, const py::object& g, const py::object& mu) {
+    return to_numpy(h.velocity(t, a.element(g, "velocity", "g"), a.tangent(mu, "velocity", "mu")));
+  }, py::arg("t"), py::arg("g"), py::arg("mu"), "v = dh/dmu.");
+  cls.def("group_gradient", [a](const H& h, double t, const py::object& g, const py::object& mu) {
+    return to_numpy(h.group_gradient(t, a.element(g, "group_gradient", "g"), a.tangent(mu, "group_gradient", "mu")));
+  }, py::arg("t"), py::arg("g"), py::arg("mu"), "The trivialised dh/dg at fixed mu.");
+}
+
+/// A reduced trajectory (lie_group_integrator.hpp) as a dict of arrays t, g, v, mu.
+template <LieGroup G>
+py::dict trajectory_dict(const Trajectory<G>& tr) {
+  py::dict d;
+  d["t"] = to_numpy(tr.t);
+  d["g"] = to_numpy(tr.g);
+  d["v"] = to_numpy(tr.v);
+  d["mu"] = to_numpy(tr.mu);
+  return d;
+}
+
+/// Static methods of the group class that take a model, built-in (one of the listed types) or
+/// written in Python: _euler_poincare, _lie_poisson, _lagrangian_hessian.
+template <LieGroup G, class... Lagrangians, class... Hamiltonians>
+void bind_mechanics(GroupClass<G>& group, const std::string& name, Types<Lagrangians...>, Types<Hamiltonians...>) {
+  const Args<G> a{name};
+  group.def_static("_euler_poincare", [a](const std::string& side, const py::object& model, const py::object& g0,
+                                          const py::object& v0, double T, int steps) {
+    const Side s = parse_side(side, a.group + ".euler_poincare");
+    const ElementOf<G> g = a.element(g0, "euler_poincare", "g0");
+    const TangentOf<G> v = a.tangent(v0, "euler_poincare", "v0");
+    return trajectory_dict<G>(visit_model<PythonLagrangian<G>, Lagrangians...>(
+        model, [&](const auto& l) { return euler_poincare<G>(s, l, g, v, T, steps); }));
+  }, py::arg("side"), py::arg("lagrangian"), py::arg("g0"), py::arg("v0"), py::arg("T"), py::arg("steps"));
+  group.def_static("_lie_poisson", [a](const std::string& side, const py::object& model, const py::object& g0,
+                                       const py::object& mu0, double T, int steps) {
+    const Side s = parse_side(side, a.group + ".lie_poisson");
+    const ElementOf<G> g = a.element(g0, "lie_poisson", "g0");
+    const CovectorOf<G> mu = a.tangent(mu0, "lie_poisson", "mu0");
+    return trajectory_dict<G>(visit_model<PythonHamiltonian<G>, Hamiltonians...>(
+        model, [&](const auto& h) { return lie_poisson<G>(s, h, g, mu, T, steps); }));
+  }, py::arg("side"), py::arg("hamiltonian"), py::arg("g0"), py::arg("mu0"), py::arg("T"), py::arg("steps"));
+  group.def_static("_lagrangian_hessian", [a](const py::object& model, double t, const py::object& g0,
+                                              const py::object& v0) {
+    const ElementOf<G> g = a.element(g0, "lagrangian_hessian", "g");
+    const TangentOf<G> v = a.tangent(v0, "lagrangian_hessian", "v");
+    const LagrangianHessian<G> h = visit_model<PythonLagrangian<G>, Lagrangians...>(
+        model, [&](const auto& l) { return lagrangian_hessian<G>(l, t, g, v); });
+    py::dict d;
+    d["momentum_v"] = to_numpy(h.momentum_v);
+    d["momentum_g"] = to_numpy(h.momentum_g);
+    d["gradient_v"] = to_numpy(h.gradient_v);
+    d["gradient_g"] = to_numpy(h.gradient_g);
+    return d;
+  }, py::arg("lagrangian"), py::arg("t"), py::arg("g"), py::arg("v"));
+}
+
+}  // namespace cartan::python
