@@ -15,6 +15,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
 LAMBDAS = (0.0, 0.5, 1.0)
@@ -38,8 +39,16 @@ def unit(x):
     return x / np.linalg.norm(x)
 
 
+def clean_panes(ax):
+    """White panes and light grid lines (print-friendly)."""
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+        axis.set_pane_color((1.0, 1.0, 1.0, 0.0))
+        axis._axinfo["grid"].update(color="0.9", linewidth=0.5)
+
+
 def sphere_axes(fig, position):
     ax = fig.add_subplot(position, projection="3d")
+    clean_panes(ax)
     u, v = np.mgrid[0:2 * np.pi:37j, 0:np.pi:19j]
     ax.plot_wireframe(np.cos(u) * np.sin(v), np.sin(u) * np.sin(v), np.cos(v), color="0.82", linewidth=0.35)
     ax.set_box_aspect((1, 1, 1))
@@ -78,20 +87,25 @@ def heisenberg_figure(cartan, out, rows):
     fig = plt.figure(figsize=(5.6 * len(H3_ENDPOINTS), 5.4))
     for i, gT in enumerate(H3_ENDPOINTS):
         ax = fig.add_subplot(1, len(H3_ENDPOINTS), i + 1, projection="3d")
+        clean_panes(ax)
         for lam in LAMBDAS:
             r = cartan.solve(model, lam=lam, T=1, N=400, gT=gT, tol=1e-10, order=2)
             rows.append((f"H3 oscillator gT={gT}", lam, r))
             color, style = H3_STYLE[lam]
             ax.plot(*r.g.T, color=color, linestyle=style, linewidth=2.0, label=LABELS[lam])
-        ax.scatter([0], [0], [0], marker="o", facecolors="white", edgecolors="black", s=50, depthshade=False,
-                   label="start $e$")
-        ax.scatter(*np.array(gT)[:, None], marker="s", color="black", s=40, depthshade=False, label="target $g_T$")
+        ax.scatter([0], [0], [0], marker="o", facecolors="white", edgecolors="black", s=55, depthshade=False,
+                   label="start $e$", zorder=5)
+        ax.scatter(*np.array(gT)[:, None], marker="s", color="black", s=45, depthshade=False, label="target $g_T$",
+                   zorder=5)
         ax.set_xlabel("$a$"), ax.set_ylabel("$b$"), ax.set_zlabel("$c$")
-        ax.set_title(f"$g_T = ({gT[0]:g},\\ {gT[1]:g},\\ {gT[2]:g})$")
+        for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+            axis.set_major_locator(matplotlib.ticker.MaxNLocator(4))
+        ax.set_title(f"$g_T = ({gT[0]:g},\\ {gT[1]:g},\\ {gT[2]:g})$", pad=0)
         ax.view_init(elev=22, azim=-50)
-        ax.legend(loc="upper left", frameon=False)
+    handles, labels = ax.get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=len(labels), frameon=False)
     fig.suptitle("Harmonic oscillator on the Heisenberg group, $T = 1$ (second-order scheme, $N = 400$)")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.07, 1, 1))
     fig.savefig(out / "fig_heisenberg.png", dpi=160)
     plt.close(fig)
 
