@@ -94,8 +94,9 @@ def lie_poisson(hamiltonian, g0, mu0, T, steps, side="left", group=None):
 def lagrangian_hessian(lagrangian, t, g, v, group=None):
     """Second derivatives used by the tangent-linear sweeps, as a dict of (n, n) matrices
     momentum_v = d mu/dv, momentum_g = d mu/d gamma, gradient_v = d zeta/dv, gradient_g =
-    d zeta/d gamma (g perturbed as g exp(e gamma)). Analytic for built-in models, central
-    differences of momentum and group_gradient (step 1e-5) for Python-defined ones."""
+    d zeta/d gamma (g perturbed as g exp(e gamma)). Analytic for built-in models; for Python-defined
+    ones the object's own hessian(t, g, v) if it has one, else central differences of momentum and
+    group_gradient (step 1e-5)."""
     grp = _group_of(lagrangian, group, "lagrangian_hessian")
     return grp._lagrangian_hessian(lagrangian, t, g, v)
 
@@ -155,8 +156,10 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="shooting", order=1, tol
     `lagrangian` is a built-in left-reduced model (RigidBody, SO3Oscillator, H3Oscillator) or any
     object with methods value(t, g, v), momentum(t, g, v) (= dl/dv), group_gradient(t, g, v)
     (left-trivialised dl/dg) and velocity(t, g, mu) (the inverse Legendre map) taking and
-    returning NumPy arrays; its group is `group` or its `group` attribute. Its second derivatives
-    are taken by central differences (see :func:`lagrangian_hessian`).
+    returning NumPy arrays; its group is `group` or its `group` attribute. The tangent-linear
+    sweeps need second derivatives: from the object's optional method hessian(t, g, v) returning
+    a dict like :func:`lagrangian_hessian`'s, else by central differences of momentum and
+    group_gradient (24 extra callbacks per node on a 3-dimensional group).
 
     method (options as `cartan solve`: order, tol, max_iterations):
       "two-level"           the paper's scheme (inner LM shooting on v0, outer fixed point on xi);

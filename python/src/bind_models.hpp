@@ -27,16 +27,24 @@ Eigen::Matrix<double, N, N> inertia_matrix(const py::object& inertia, std::strin
   return to_eigen<Eigen::Matrix<double, N, N>>(a, where, "inertia");
 }
 
-/// value/momentum/group_gradient/velocity/hessian of a built-in Lagrangian, with `group` and
-/// `side` (the trivialisation it is reduced on) as class attributes.
+/// The class of a built-in model with its constructor and, as class attributes, its `group` and
+/// `side` (the trivialisation it is reduced on).
+template <class M, class Init>
+py::class_<M> model_class(py::module_& m, const py::object& group, const char* name, const char* side,
+                          const char* doc, Init init) {
+  py::class_<M> cls(m, name, doc);
+  init(cls);
+  cls.attr("group") = group;
+  cls.attr("side") = side;
+  return cls;
+}
+
+/// value/momentum/group_gradient/velocity of a built-in Lagrangian.
 template <LieGroup G, ReducedLagrangian<G> L, class Init>
 void bind_lagrangian(py::module_& m, const py::object& group, const char* name, const char* side, const char* doc,
                      Init init) {
   const Args<G> a{name};
-  py::class_<L> cls(m, name, doc);
-  init(cls);
-  cls.attr("group") = group;
-  cls.attr("side") = side;
+  auto cls = model_class<L>(m, group, name, side, doc, init);
   cls.def("value", [a](const L& l, double t, const py::object& g, const py::object& v) {
     return l.value(t, a.element(g, "value", "g"), a.tangent(v, "value", "v"));
   }, py::arg("t"), py::arg("g"), py::arg("v"), "l(t, g, v).");
@@ -51,14 +59,12 @@ void bind_lagrangian(py::module_& m, const py::object& group, const char* name, 
   }, py::arg("t"), py::arg("g"), py::arg("mu"), "v with momentum(t, g, v) = mu (inverse Legendre map).");
 }
 
+/// value/velocity/group_gradient of a built-in Hamiltonian.
 template <LieGroup G, ReducedHamiltonian<G> H, class Init>
 void bind_hamiltonian(py::module_& m, const py::object& group, const char* name, const char* side, const char* doc,
                       Init init) {
   const Args<G> a{name};
-  py::class_<H> cls(m, name, doc);
-  init(cls);
-  cls.attr("group") = group;
-  cls.attr("side") = side;
+  auto cls = model_class<H>(m, group, name, side, doc, init);
   cls.def("value", [a](const H& h, double t, const py::object& g, const py::object& mu) {
     return h.value(t, a.element(g, "value", "g"), a.tangent(mu, "value", "mu"));
   }, py::arg("t"), py::arg("g"), py::arg("mu"), "h(t, g, mu).");

@@ -34,21 +34,22 @@ void rethrow_callback_error(const CallbackState& state) {
   if (state.first_error) std::rethrow_exception(state.first_error);
 }
 
-PythonModel::PythonModel(const py::object& object, std::string_view kind, std::initializer_list<const char*> methods)
+PythonModel::PythonModel(const py::object& object, std::string_view kind, std::initializer_list<const char*> required,
+                         std::initializer_list<const char*> optional)
     : object_(object), kind_(kind) {
-  for (const char* method : methods) {
+  std::string needs;
+  for (const char* m : required) needs += (needs.empty() ? "" : ", ") + std::string(m);
+  for (const char* method : required) {
     if (!py::hasattr(object, method)) {
       throw_invalid(kind_, "object", py::repr(object).cast<std::string>(),
-                    std::string("has no method ") + method + " (a " + kind_ + " needs " +
-                        [&] {
-                          std::string list;
-                          for (const char* m : methods) list += (list.empty() ? "" : ", ") + std::string(m);
-                          return list;
-                        }() +
-                        ")");
+                    std::string("has no method ") + method + " (a " + kind_ + " needs " + needs + ")");
     }
     names_.emplace_back(method);
     methods_.push_back(object.attr(method));
+  }
+  for (const char* method : optional) {
+    names_.emplace_back(method);
+    methods_.push_back(py::hasattr(object, method) ? py::object(object.attr(method)) : py::object(py::none()));
   }
 }
 

@@ -42,6 +42,16 @@ class PySO3Oscillator(PyRigidBody):
         return -vee_skew(g)
 
 
+class PySO3OscillatorWithHessian(PySO3Oscillator):
+    """The oscillator with analytic second derivatives (the optional `hessian` callback):
+    d mu/dv = I, and d zeta/d gamma has columns -vee(Skew(g hat(e_i))) (g -> g exp(e gamma))."""
+
+    def hessian(self, t, g, v):
+        gradient_g = -np.column_stack([vee_skew(g @ cartan.SO3.hat(e)) for e in np.eye(3)])
+        zero = np.zeros((3, 3))
+        return dict(momentum_v=self.inertia, momentum_g=zero, gradient_v=zero, gradient_g=gradient_g)
+
+
 class PyH3Oscillator:
     """l = 1/2 |v|^2 - 1/2 (a^2 + b^2 + c^2) on the Heisenberg group; dV . w = (a, b, c) .
     (w1, w2, w3 + a w2) by (left-Heis)."""
