@@ -39,24 +39,33 @@ py::class_<M> model_class(py::module_& m, const py::object& group, const char* n
   return cls;
 }
 
+/// Binds `name(t, g, <x>)` of a model class as f(model, t, g, x), with g an element and x an
+/// algebra vector or covector, converted (and shape-checked) by `a`.
+template <LieGroup G, class M, class F>
+void def_model_method(py::class_<M>& cls, const Args<G>& a, const char* name, const char* x, F f, const char* doc) {
+  cls.def(name, [a, name, x, f](const M& model, double t, const py::object& g, const py::object& value) {
+    return f(model, t, a.element(g, name, "g"), a.tangent(value, name, x));
+  }, py::arg("t"), py::arg("g"), py::arg(x), doc);
+}
+
 /// value/momentum/group_gradient/velocity of a built-in Lagrangian.
 template <LieGroup G, ReducedLagrangian<G> L, class Init>
 void bind_lagrangian(py::module_& m, const py::object& group, const char* name, const char* side, const char* doc,
                      Init init) {
   const Args<G> a{name};
   auto cls = model_class<L>(m, group, name, side, doc, init);
-  cls.def("value", [a](const L& l, double t, const py::object& g, const py::object& v) {
-    return l.value(t, a.element(g, "value", "g"), a.tangent(v, "value", "v"));
-  }, py::arg("t"), py::arg("g"), py::arg("v"), "l(t, g, v).");
-  cls.def("momentum", [a](const L& l, double t, const py::object& g, const py::object& v) {
-    return to_numpy(l.momentum(t, a.element(g, "momentum", "g"), a.tangent(v, "momentum", "v")));
-  }, py::arg("t"), py::arg("g"), py::arg("v"), "mu = dl/dv (the reduced Legendre map).");
-  cls.def("group_gradient", [a](const L& l, double t, const py::object& g, const py::object& v) {
-    return to_numpy(l.group_gradient(t, a.element(g, "group_gradient", "g"), a.tangent(v, "group_gradient", "v")));
-  }, py::arg("t"), py::arg("g"), py::arg("v"), "zeta, the trivialised dl/dg at fixed v.");
-  cls.def("velocity", [a](const L& l, double t, const py::object& g, const py::object& mu) {
-    return to_numpy(l.velocity(t, a.element(g, "velocity", "g"), a.tangent(mu, "velocity", "mu")));
-  }, py::arg("t"), py::arg("g"), py::arg("mu"), "v with momentum(t, g, v) = mu (inverse Legendre map).");
+  def_model_method(cls, a, "value", "v", [](const L& l, double t, const auto& g, const auto& v) {
+    return l.value(t, g, v);
+  }, "l(t, g, v).");
+  def_model_method(cls, a, "momentum", "v", [](const L& l, double t, const auto& g, const auto& v) {
+    return to_numpy(l.momentum(t, g, v));
+  }, "mu = dl/dv (the reduced Legendre map).");
+  def_model_method(cls, a, "group_gradient", "v", [](const L& l, double t, const auto& g, const auto& v) {
+    return to_numpy(l.group_gradient(t, g, v));
+  }, "zeta, the trivialised dl/dg at fixed v.");
+  def_model_method(cls, a, "velocity", "mu", [](const L& l, double t, const auto& g, const auto& mu) {
+    return to_numpy(l.velocity(t, g, mu));
+  }, "v with momentum(t, g, v) = mu (inverse Legendre map).");
 }
 
 /// value/velocity/group_gradient of a built-in Hamiltonian.
@@ -65,15 +74,15 @@ void bind_hamiltonian(py::module_& m, const py::object& group, const char* name,
                       Init init) {
   const Args<G> a{name};
   auto cls = model_class<H>(m, group, name, side, doc, init);
-  cls.def("value", [a](const H& h, double t, const py::object& g, const py::object& mu) {
-    return h.value(t, a.element(g, "value", "g"), a.tangent(mu, "value", "mu"));
-  }, py::arg("t"), py::arg("g"), py::arg("mu"), "h(t, g, mu).");
-  cls.def("velocity", [a](const H& h, double t, const py::object& g, const py::object& mu) {
-    return to_numpy(h.velocity(t, a.element(g, "velocity", "g"), a.tangent(mu, "velocity", "mu")));
-  }, py::arg("t"), py::arg("g"), py::arg("mu"), "v = dh/dmu.");
-  cls.def("group_gradient", [a](const H& h, double t, const py::object& g, const py::object& mu) {
-    return to_numpy(h.group_gradient(t, a.element(g, "group_gradient", "g"), a.tangent(mu, "group_gradient", "mu")));
-  }, py::arg("t"), py::arg("g"), py::arg("mu"), "The trivialised dh/dg at fixed mu.");
+  def_model_method(cls, a, "value", "mu", [](const H& h, double t, const auto& g, const auto& mu) {
+    return h.value(t, g, mu);
+  }, "h(t, g, mu).");
+  def_model_method(cls, a, "velocity", "mu", [](const H& h, double t, const auto& g, const auto& mu) {
+    return to_numpy(h.velocity(t, g, mu));
+  }, "v = dh/dmu.");
+  def_model_method(cls, a, "group_gradient", "mu", [](const H& h, double t, const auto& g, const auto& mu) {
+    return to_numpy(h.group_gradient(t, g, mu));
+  }, "The trivialised dh/dg at fixed mu.");
 }
 
 /// A reduced trajectory (lie_group_integrator.hpp) as a dict of arrays t, g, v, mu.
