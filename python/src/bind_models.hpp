@@ -1,0 +1,135 @@
+#pragma once
+// Built-in reduced Lagrangians and Hamiltonians (models/), their second derivatives
+// (lagrangian_hessian.hpp), and the classical Euler–Poincaré / Lie–Poisson integrators
+// (euler_poincare.hpp: eq:EP-left, eq:EP-right; lie_poisson.hpp: eq:LP-left, eq:LP-right) for
+// built-in and Python-defined models alike.
+
+#include <string>
+
+#include "bind_group.hpp"
+#include "cartan/euler_poincare.hpp"
+#include "cartan/lagrangian_hessian.hpp"
+#include "cartan/lie_poisson.hpp"
+#include "python_models.hpp"
+
+namespace cartan::python {
+
+Side parse_side(const std::string& side, std::string_view where);
+
+template <class... T>
+struct Types {};
+
+/// A symmetric positive-definite inertia from a (n, n) matrix or the (n,) diagonal.
+template <int N>
+Eigen::Matrix<double, N, N> inertia_matrix(const py::object& inertia, std::string_view where) {
+  const Array a = as_array(inertia, where, "inertia");
+  if (a.ndim() == 1) return to_eigen<Eigen::Matrix<double, N, 1>>(a, where, "inertia").asDiagonal();
+  return to_eigen<Eigen::Matrix<double, N, N>>(a, where, "inertia");
+}
+
+/// The class of a built-in model with its constructor and, as class attributes, its `group` and
+/// `side` (the trivialisation it is reduced on).
+template <class M, class Init>
+py::class_<M> model_class(py::module_& m, const py::object& group, const char* name, const char* side,
+                          const char* doc, Init init) {
+  py::class_<M> cls(m, name, doc);
+  init(cls);
+  cls.attr("group") = group;
+  cls.attr("side") = side;
+  return cls;
+}
+
+/// Binds `name(t, g, <x>)` of a model class as f(model, t, g, x), with g an element and x an
+/// algebra vector or covector, converted (and shape-checked) by `a`.
+template <LieGroup G, class M, class F>
+void def_model_method(py::class_<M>& cls, const Args<G>& a, const char* name, const char* x, F f, const char* doc) {
+  cls.def(name, [a, name, x, f](const M& model, double t, const py::object& g, const py::object& value) {
+    return f(model, t, a.element(g, name, "g"), a.tangent(value, name, x));
+  }, py::arg("t"), py::arg("g"), py::arg(x), doc);
+}
+
+/// value/momentum/group_gradient/velocity of a built-in Lagrangian.
+template <LieGroup G, ReducedLagrangian<G> L, class Init>
+void bind_lagrangian(py::module_& m, const py::object& group, const char* name, const char* side, const char* doc,
+                     Init init) {
+  const Args<G> a{name};
+  auto cls = model_class<L>(m, group, name, side, doc, init);
+  def_model_method(cls, a, "value", "v", [](const L& l, double t, const auto& g, const auto& v) {
+    return l.value(t, g, v);
+  }, "l(t, g, v).");
+  def_model_method(cls, a, "momentum", "v", [](const L& l, double t, const auto& g, const auto& v) {
+    return to_numpy(l.momentum(t, g, v));
+  }, "mu = dl/dv (the reduced Legendre map).");
+  def_model_method(cls, a, "group_gradient", "v", [](const L& l, double t, const auto& g, const auto& v) {
+    return to_numpy(l.group_gradient(t, g, v));
+  }, "zeta, the trivialised dl/dg at fixed v.");
+  def_model_method(cls, a, "velocity", "mu", [](const L& l, double t, const auto& g, const auto& mu) {
+    return to_numpy(l.velocity(t, g, mu));
+  }, "v with momentum(t, g, v) = mu (inverse Legendre map).");
+}
+
+/// value/velocity/group_gradient of a built-in Hamiltonian.
+template <LieGroup G, ReducedHamiltonian<G> H, class Init>
+void bind_hamiltonian(py::module_& m, const py::object& group, const char* name, const char* side, const char* doc,
+                      Init init) {
+  const Args<G> a{name};
+  auto cls = model_class<H>(m, group, name, side, doc, init);
+  def_model_method(cls, a, "value", "mu", [](const H& h, double t, const auto& g, const auto& mu) {
+    return h.value(t, g, mu);
+  }, "h(t, g, mu).");
+  def_model_method(cls, a, "velocity", "mu", [](const H& h, double t, const auto& g, const auto& mu) {
+    return to_numpy(h.velocity(t, g, mu));
+  }, "v = dh/dmu.");
+  def_model_method(cls, a, "group_gradient", "mu", [](const H& h, double t, const auto& g, const auto& mu) {
+    return to_numpy(h.group_gradient(t, g, mu));
+  }, "The trivialised dh/dg at fixed mu.");
+}
+
+/// A reduced trajectory (lie_group_integrator.hpp) as a dict of arrays t, g, v, mu.
+template <LieGroup G>
+py::dict trajectory_dict(const Trajectory<G>& tr) {
+  py::dict d;
+  d["t"] = to_numpy(tr.t);
+  d["g"] = to_numpy(tr.g);
+  d["v"] = to_numpy(tr.v);
+  d["mu"] = to_numpy(tr.mu);
+  return d;
+}
+
+/// Static methods of the group class that take a model, built-in (one of the listed types) or
+/// written in Python: _euler_poincare, _lie_poisson, _lagrangian_hessian.
+template <LieGroup G, class... Lagrangians, class... Hamiltonians>
+void bind_mechanics(GroupClass<G>& group, const std::string& name, Types<Lagrangians...>, Types<Hamiltonians...>) {
+  const Args<G> a{name};
+  group.def_static("_euler_poincare", [a](const std::string& side, const py::object& model, const py::object& g0,
+                                          const py::object& v0, double T, int steps) {
+    const Side s = parse_side(side, a.group + ".euler_poincare");
+    const ElementOf<G> g = a.element(g0, "euler_poincare", "g0");
+    const TangentOf<G> v = a.tangent(v0, "euler_poincare", "v0");
+    return trajectory_dict<G>(visit_model<PythonLagrangian<G>, Lagrangians...>(
+        model, [&](const auto& l) { return euler_poincare<G>(s, l, g, v, T, steps); }));
+  }, py::arg("side"), py::arg("lagrangian"), py::arg("g0"), py::arg("v0"), py::arg("T"), py::arg("steps"));
+  group.def_static("_lie_poisson", [a](const std::string& side, const py::object& model, const py::object& g0,
+                                       const py::object& mu0, double T, int steps) {
+    const Side s = parse_side(side, a.group + ".lie_poisson");
+    const ElementOf<G> g = a.element(g0, "lie_poisson", "g0");
+    const CovectorOf<G> mu = a.tangent(mu0, "lie_poisson", "mu0");
+    return trajectory_dict<G>(visit_model<PythonHamiltonian<G>, Hamiltonians...>(
+        model, [&](const auto& h) { return lie_poisson<G>(s, h, g, mu, T, steps); }));
+  }, py::arg("side"), py::arg("hamiltonian"), py::arg("g0"), py::arg("mu0"), py::arg("T"), py::arg("steps"));
+  group.def_static("_lagrangian_hessian", [a](const py::object& model, double t, const py::object& g0,
+                                              const py::object& v0) {
+    const ElementOf<G> g = a.element(g0, "lagrangian_hessian", "g");
+    const TangentOf<G> v = a.tangent(v0, "lagrangian_hessian", "v");
+    const LagrangianHessian<G> h = visit_model<PythonLagrangian<G>, Lagrangians...>(
+        model, [&](const auto& l) { return lagrangian_hessian<G>(l, t, g, v); });
+    py::dict d;
+    d["momentum_v"] = to_numpy(h.momentum_v);
+    d["momentum_g"] = to_numpy(h.momentum_g);
+    d["gradient_v"] = to_numpy(h.gradient_v);
+    d["gradient_g"] = to_numpy(h.gradient_g);
+    return d;
+  }, py::arg("lagrangian"), py::arg("t"), py::arg("g"), py::arg("v"));
+}
+
+}  // namespace cartan::python

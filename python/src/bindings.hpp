@@ -1,0 +1,11 @@
+#pragma once
+// One function per group, each in its own translation unit (they compile in parallel).
+
+#include <pybind11/pybind11.h>
+
+namespace cartan::python {
+void bind_so3(pybind11::module_& m);
+void bind_heisenberg(pybind11::module_& m);
+void bind_se3(pybind11::module_& m);
+void bind_se2(pybind11::module_& m);
+}  // namespace cartan::python

@@ -1,0 +1,99 @@
+#pragma once
+// NumPy <-> Eigen for the bindings. Inputs are taken as Python objects and converted here, so
+// that a wrong shape raises ValueError (std::invalid_argument) naming the argument, in the
+// library's message format "<where>: <name> = <value> <problem>", rather than pybind11's
+// TypeError about overloads. Outputs are fresh NumPy arrays: vectors 1-D, matrices 2-D
+// (row-major, as docs/conventions.md), sequences of them stacked along a new first axis.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <Eigen/Core>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cartan/errors.hpp"
+
+namespace cartan::python {
+
+namespace py = pybind11;
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// "(3,)" or "(3, 3)".
+std::string shape_text(const py::array& a);
+/// The shape an Eigen type is read from and written to: (rows,) for vectors, (rows, cols) else.
+std::string shape_text(Eigen::Index rows, Eigen::Index cols, bool vector);
+
+/// Any array-like as a C-contiguous double array; throws std::invalid_argument if it is not one.
+Array as_array(const py::handle& obj, std::string_view where, std::string_view name);
+
+/// A fixed-size Eigen vector (from a 1-D array of its length) or matrix (from a 2-D array of its
+/// shape). Throws std::invalid_argument naming `where` and `name` on any other shape.
+template <class T>
+T to_eigen(const py::handle& obj, std::string_view where, std::string_view name) {
+  constexpr Eigen::Index rows = T::RowsAtCompileTime, cols = T::ColsAtCompileTime;
+  constexpr bool vector = cols == 1;
+  static_assert(rows > 0 && cols > 0, "to_eigen converts to fixed-size Eigen types only");
+  const Array a = as_array(obj, where, name);
+  const bool fits = vector ? (a.ndim() == 1 && a.shape(0) == rows)
+                           : (a.ndim() == 2 && a.shape(0) == rows && a.shape(1) == cols);
+  if (!fits) {
+    throw_invalid(where, name, "array of shape " + shape_text(a),
+                  "must have shape " + shape_text(rows, cols, vector));
+  }
+  T out;
+  const double* data = a.data();
+  for (Eigen::Index i = 0; i < rows; ++i) {
+    for (Eigen::Index j = 0; j < cols; ++j) out(i, j) = data[i * cols + j];
+  }
+  return out;
+}
+
+/// A sequence of fixed-size Eigen objects from an array with one more leading axis.
+template <class T>
+std::vector<T> to_eigen_list(const py::handle& obj, std::string_view where, std::string_view name) {
+  const Array a = as_array(obj, where, name);
+  if (a.ndim() < 1) throw_invalid(where, name, "array of shape " + shape_text(a), "must have a leading axis");
+  std::vector<T> out;
+  out.reserve(static_cast<std::size_t>(a.shape(0)));
+  for (py::ssize_t k = 0; k < a.shape(0); ++k) {
+    out.push_back(to_eigen<T>(a[py::int_(k)], where, std::string(name) + "[" + std::to_string(k) + "]"));
+  }
+  return out;
+}
+
+/// One Eigen object as a NumPy array ((rows,) for vectors, (rows, cols) otherwise).
+template <class Derived>
+py::array_t<double> to_numpy(const Eigen::DenseBase<Derived>& x) {
+  const Eigen::Index rows = x.rows(), cols = x.cols();
+  const bool vector = Derived::ColsAtCompileTime == 1;
+  py::array_t<double> out(vector ? std::vector<py::ssize_t>{rows} : std::vector<py::ssize_t>{rows, cols});
+  double* data = out.mutable_data();
+  for (Eigen::Index i = 0; i < rows; ++i) {
+    for (Eigen::Index j = 0; j < cols; ++j) data[i * cols + j] = x(i, j);
+  }
+  return out;
+}
+
+/// A sequence of same-shaped Eigen objects stacked along a new first axis.
+template <class T>
+py::array_t<double> to_numpy(const std::vector<T>& xs) {
+  constexpr Eigen::Index rows = T::RowsAtCompileTime, cols = T::ColsAtCompileTime;
+  const auto count = static_cast<py::ssize_t>(xs.size());
+  py::array_t<double> out(cols == 1 ? std::vector<py::ssize_t>{count, rows}
+                                    : std::vector<py::ssize_t>{count, rows, cols});
+  double* data = out.mutable_data();
+  for (const T& x : xs) {
+    for (Eigen::Index i = 0; i < rows; ++i) {
+      for (Eigen::Index j = 0; j < cols; ++j) *data++ = x(i, j);
+    }
+  }
+  return out;
+}
+
+inline py::array_t<double> to_numpy(const std::vector<double>& xs) {
+  return py::array_t<double>(static_cast<py::ssize_t>(xs.size()), xs.data());
+}
+
+}  // namespace cartan::python

@@ -1,0 +1,163 @@
+#pragma once
+// Reduced Lagrangians and Hamiltonians written in Python, adapted to the C++ concepts
+// (lagrangian.hpp): any object with methods
+//   Lagrangian:  value(t, g, v), momentum(t, g, v), group_gradient(t, g, v), velocity(t, g, mu)
+//   Hamiltonian: value(t, g, mu), velocity(t, g, mu), group_gradient(t, g, mu)
+// taking and returning NumPy arrays in the group's conventions (docs/conventions.md). The
+// second derivatives that tangent-linear sweeps need come from an optional method
+// hessian(t, g, v) or else from the library's central differences of momentum and
+// group_gradient (lagrangian_hessian_fd, lagrangian_hessian.hpp).
+//
+// Errors. The solvers treat an exception in a sweep as a failed evaluation and go on (a
+// rejected Levenberg–Marquardt step). A Python error is a bug in user code, not a numerical
+// outcome, so the first one is kept in the shared CallbackState, every later callback fails at
+// once, and the binding re-raises the original exception after the solver returns
+// (rethrow_callback_error). Callbacks run with the GIL held.
+
+#include <exception>
+#include <memory>
+#include <optional>
+#include <type_traits>
+#include <string>
+#include <utility>
+
+#include "cartan/group.hpp"
+#include "cartan/lagrangian.hpp"
+#include "cartan/lagrangian_hessian.hpp"
+#include "convert.hpp"
+
+namespace cartan::python {
+
+/// The first exception raised by a Python callback; shared by the copies of a model that the
+/// solvers make (problems are copied by continuation).
+struct CallbackState {
+  std::exception_ptr first_error;
+};
+
+/// Re-raises the first callback error, if any (a Python exception keeps its type and traceback).
+void rethrow_callback_error(const CallbackState& state);
+
+/// Converts a callback's return value; `where` names the method ("Lagrangian.momentum").
+template <class R>
+struct FromPython {
+  static R convert(const py::object& value, const std::string& where) {
+    return to_eigen<R>(value, where, "return value");
+  }
+};
+
+template <>
+struct FromPython<double> {
+  static double convert(const py::object& value, const std::string&) { return value.cast<double>(); }
+};
+
+/// The optional `hessian(t, g, v)` callback returns a dict of (n, n) arrays with the keys of
+/// LagrangianHessian (what cartan.lagrangian_hessian returns).
+template <LieGroup G>
+struct FromPython<LagrangianHessian<G>> {
+  static LagrangianHessian<G> convert(const py::object& value, const std::string& where) {
+    const auto matrix = [&](const char* key) {
+      return to_eigen<AlgebraMatrixOf<G>>(value[py::str(key)], where, std::string("return value[\"") + key + "\"]");
+    };
+    return {matrix("momentum_v"), matrix("momentum_g"), matrix("gradient_v"), matrix("gradient_g")};
+  }
+};
+
+/// The Python object and its methods, looked up once (optional ones may be missing).
+class PythonModel {
+ public:
+  PythonModel(const py::object& object, std::string_view kind, std::initializer_list<const char*> required,
+              std::initializer_list<const char*> optional = {});
+  const CallbackState& state() const { return *state_; }
+  const py::object& object() const { return object_; }
+
+ protected:
+  bool has(std::size_t index) const { return !methods_[index].is_none(); }
+
+  /// Calls method `index` with (t, g, x) and converts the result to R, recording failures.
+  template <class R, class E, class X>
+  R call(std::size_t index, double t, const E& g, const X& x) const {
+    if (state_->first_error) throw std::runtime_error(kind_ + ": an earlier callback failed");
+    try {
+      return FromPython<R>::convert(methods_[index](t, to_numpy(g), to_numpy(x)), kind_ + "." + names_[index]);
+    } catch (...) {
+      state_->first_error = std::current_exception();
+      throw;
+    }
+  }
+
+ private:
+  py::object object_;
+  std::string kind_;
+  std::vector<std::string> names_;
+  std::vector<py::object> methods_;
+  std::shared_ptr<CallbackState> state_ = std::make_shared<CallbackState>();
+};
+
+template <LieGroup G>
+class PythonLagrangian : public PythonModel {
+ public:
+  explicit PythonLagrangian(const py::object& object)
+      : PythonModel(object, "Lagrangian", {"value", "momentum", "group_gradient", "velocity"}, {"hessian"}) {}
+
+  double value(double t, const ElementOf<G>& g, const TangentOf<G>& v) const { return call<double>(0, t, g, v); }
+  CovectorOf<G> momentum(double t, const ElementOf<G>& g, const TangentOf<G>& v) const {
+    return call<CovectorOf<G>>(1, t, g, v);
+  }
+  CovectorOf<G> group_gradient(double t, const ElementOf<G>& g, const TangentOf<G>& v) const {
+    return call<CovectorOf<G>>(2, t, g, v);
+  }
+  TangentOf<G> velocity(double t, const ElementOf<G>& g, const CovectorOf<G>& mu) const {
+    return call<TangentOf<G>>(3, t, g, mu);
+  }
+  /// Second derivatives for the tangent-linear sweeps: the object's `hessian` if it has one,
+  /// else central differences of momentum and group_gradient (lagrangian_hessian_fd).
+  LagrangianHessian<G> hessian(double t, const ElementOf<G>& g, const TangentOf<G>& v) const {
+    if (!has(4)) return lagrangian_hessian_fd<G>(*this, t, g, v);
+    return call<LagrangianHessian<G>>(4, t, g, v);
+  }
+};
+
+template <LieGroup G>
+class PythonHamiltonian : public PythonModel {
+ public:
+  explicit PythonHamiltonian(const py::object& object)
+      : PythonModel(object, "Hamiltonian", {"value", "velocity", "group_gradient"}) {}
+
+  double value(double t, const ElementOf<G>& g, const CovectorOf<G>& mu) const { return call<double>(0, t, g, mu); }
+  TangentOf<G> velocity(double t, const ElementOf<G>& g, const CovectorOf<G>& mu) const {
+    return call<TangentOf<G>>(1, t, g, mu);
+  }
+  CovectorOf<G> group_gradient(double t, const ElementOf<G>& g, const CovectorOf<G>& mu) const {
+    return call<CovectorOf<G>>(2, t, g, mu);
+  }
+};
+
+/// Runs f(model) for the built-in model type that `object` is an instance of (a C++ class bound
+/// to Python), or for the Python adapter Fallback(object) when it is none of them. Built-in
+/// models run without the GIL; Python ones hold it, and their first callback error is re-raised.
+template <class Fallback, class... Builtin, class F>
+auto visit_model(const py::handle& object, F&& f) {
+  using R = decltype(f(std::declval<const Fallback&>()));
+  std::optional<R> out;
+  const auto try_one = [&]<class M>(std::type_identity<M>) {
+    if (out || !py::isinstance<M>(object)) return;
+    const M& model = object.cast<const M&>();
+    py::gil_scoped_release release;
+    out.emplace(f(model));
+  };
+  (try_one(std::type_identity<Builtin>{}), ...);
+  (void)try_one;  // no built-in models for this group
+  if (out) return std::move(*out);
+  const Fallback model(py::reinterpret_borrow<py::object>(object));
+  std::optional<R> result;
+  try {
+    result.emplace(f(model));
+  } catch (...) {
+    rethrow_callback_error(model.state());
+    throw;
+  }
+  rethrow_callback_error(model.state());
+  return std::move(*result);
+}
+
+}  // namespace cartan::python

@@ -1,0 +1,16 @@
+"""examples/python_tour.py runs and reports what it claims (same solution as the built-in model)."""
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def test_python_tour_runs():
+    out = subprocess.run([sys.executable, str(ROOT / "examples" / "python_tour.py")], capture_output=True, text=True,
+                         timeout=600, env=dict(os.environ))
+    assert out.returncode == 0, out.stderr
+    assert "same solution as the built-in model: True" in out.stdout
+    assert "status='converged'" in out.stdout
+    assert "transport P(0 -> 1) is orthogonal: True" in out.stdout

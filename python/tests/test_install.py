@@ -1,0 +1,25 @@
+"""`cmake --install <build> --component python` gives a package that imports from the install
+prefix alone (not from the build tree)."""
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+BUILD = os.environ.get("CARTAN_BUILD_DIR", str(ROOT / "build"))
+CMAKE = os.environ.get("CMAKE_COMMAND", "cmake")
+
+
+def test_installed_package_imports(tmp_path):
+    prefix = tmp_path / "prefix"
+    subprocess.run([CMAKE, "--install", BUILD, "--component", "python", "--prefix", str(prefix)], check=True,
+                   capture_output=True, text=True)
+    sites = list(prefix.glob("lib*/python3*/site-packages"))
+    assert len(sites) == 1, sites
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    env["PYTHONPATH"] = str(sites[0])
+    code = "import cartan; print(cartan.__file__); print(cartan.SO3.log(cartan.SO3.exp([0.1, 0.2, 0.3])))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, cwd=tmp_path)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.startswith(str(sites[0] / "cartan"))
+    assert "[0.1 0.2 0.3]" in out.stdout

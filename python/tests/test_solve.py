@@ -1,0 +1,251 @@
+"""The transported-velocity solvers from Python: agreement with the `cartan solve` CLI, Python-
+defined Lagrangians against the built-in models, every method on one problem, and errors.
+
+Tolerances (theory):
+* Module vs CLI: the same C++ code on the same inputs (gT from the same minimal rotation), so the
+  solutions agree to the rounding of the JSON round trip (17 significant digits): 1e-12.
+* Python Lagrangian vs built-in: both are roots of the same discrete equations (same formulas in
+  the callbacks up to rounding). They differ only in the Jacobian used by Levenberg-Marquardt:
+  the built-in models have analytic second derivatives, Python ones central differences
+  (relative error ~1e-10). An inexact Jacobian changes the iterates, not the root: each run stops
+  with |r| <= tol = 1e-10, and near the root |dx| <= |J^-1| |r|, so with |J^-1| <= 10 the
+  trajectories agree to 1e-9. In practice LM converges quadratically past the tolerance and
+  both runs land on the same rounding-level root: measured <= 6e-13 (printed with pytest -s).
+* Different methods (two-level vs shooting): the same discrete solution (PAPER-NOTES erratum 4:
+  difference <= 1e-10 at tight tolerances); at the tolerances used here, 1e-7."""
+import json
+import os
+import subprocess
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import cartan
+from python_models import PyH3Oscillator, PyRigidBody, PySO3Oscillator, PySO3OscillatorWithHessian
+
+ROOT = Path(__file__).resolve().parents[2]
+CARTAN_BIN = os.environ.get("CARTAN_BIN", str(ROOT / "build" / "cartan"))
+INERTIA = [2.0, 3.0, 4.0]
+A0, AT = np.array([-1.0, -1, -1]), np.array([0.9, 1.0, 1.0])
+GT = cartan.SO3.minimal_rotation(A0, AT)
+
+
+def cli(*args):
+    out = subprocess.run([CARTAN_BIN, "solve", *args], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    return json.loads(out.stdout)
+
+
+def assert_same_solution(a, b, atol):
+    for key in ("t", "g", "v", "mu", "xi"):
+        np.testing.assert_allclose(np.asarray(getattr(a, key)), np.asarray(getattr(b, key)), atol=atol, err_msg=key)
+
+
+@pytest.mark.parametrize("method", ["shooting", "two-level"])
+def test_free_body_matches_cli_json(method):
+    d = cli("--model", "free-rigid-body", "--lambda", "0.5", "--T", "50", "--N", "1000", "--a0=-1,-1,-1",
+            "--aT", "0.9,1,1", "--tol", "1e-8", "--method", method)
+    r = cartan.solve(cartan.RigidBody(INERTIA), lam=0.5, T=50, N=1000, gT=GT, tol=1e-8, method=method)
+    assert r.success and r.status == d["status"] == "converged"
+    assert (r.method, r.branch) == (d["method"], d["branch"])
+    assert (r.outer_iterations, r.inner_iterations, r.sweeps) == tuple(d["iterations"][k] for k in ("outer", "inner", "sweeps"))
+    assert r.g.shape == (1001, 3, 3)
+    np.testing.assert_allclose(r.g.reshape(-1, 9), np.array(d["g"]), atol=1e-12)  # JSON rows are row-major
+    for key in ("t", "v", "mu", "xi"):
+        np.testing.assert_allclose(getattr(r, key), np.array(d[key]), atol=1e-12, err_msg=key)
+    assert r.terminal_error == pytest.approx(d["terminal_error"], abs=1e-15) and r.terminal_error < 1e-8
+
+
+def test_heisenberg_oscillator_matches_cli_json():
+    d = cli("--group", "heisenberg", "--model", "oscillator", "--lambda", "0.5", "--T", "1", "--N", "200", "--gT",
+            "1,0.5,0.8", "--order", "2")
+    r = cartan.solve(cartan.H3Oscillator(), lam=0.5, T=1, N=200, gT=[1, 0.5, 0.8], order=2)
+    assert r.success and r.g.shape == (201, 3)
+    for key in ("g", "v", "mu", "xi"):
+        np.testing.assert_allclose(getattr(r, key), np.array(d[key]), atol=1e-12, err_msg=key)
+
+
+def timed_solve(model, **kwargs):
+    start = time.perf_counter()
+    r = cartan.solve(model, **kwargs)
+    return r, time.perf_counter() - start
+
+
+@pytest.mark.parametrize("lam", [0.0, 0.5, 1.0])
+def test_python_free_rigid_body_equals_builtin(lam):
+    kwargs = dict(lam=lam, T=50, N=1000, gT=GT, tol=1e-10)
+    a, ta = timed_solve(cartan.RigidBody(INERTIA), **kwargs)
+    b, tb = timed_solve(PyRigidBody(INERTIA), **kwargs)
+    assert a.success and b.success and b.branch == a.branch
+    diff = max(np.abs(getattr(a, k) - getattr(b, k)).max() for k in ("g", "v", "mu", "xi"))
+    print(f"\nfree body lam={lam}: max difference {diff:.2e}; built-in {ta:.3f} s, Python {tb:.3f} s "
+          f"({b.sweeps} sweeps)")
+    assert_same_solution(a, b, atol=1e-9)
+
+
+@pytest.mark.parametrize("lam", [0.0, 0.5, 1.0])
+def test_python_so3_oscillator_equals_builtin(lam):
+    # A horizon where shooting converges directly and one (the paper's T = 12) that needs
+    # continuation in T: the Python model must follow the same branch.
+    for T, N in ((3.0, 200), (12.0, 800)):
+        kwargs = dict(lam=lam, T=T, N=N, gT=cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1]), tol=1e-10)
+        a, ta = timed_solve(cartan.SO3Oscillator(INERTIA), **kwargs)
+        b, tb = timed_solve(PySO3Oscillator(INERTIA), **kwargs)
+        assert a.success and b.success and b.branch == a.branch, (a.branch, b.branch)
+        diff = max(np.abs(getattr(a, k) - getattr(b, k)).max() for k in ("g", "v", "mu", "xi"))
+        print(f"\noscillator lam={lam} T={T}: max difference {diff:.2e}; built-in {ta:.3f} s, Python {tb:.3f} s "
+              f"({b.sweeps} sweeps; {a.branch})")
+        assert_same_solution(a, b, atol=1e-9)
+
+
+def test_python_h3_oscillator_equals_builtin():
+    kwargs = dict(lam=0.5, T=1, N=200, gT=[1, 0.5, 0.8], tol=1e-10, order=2)
+    a = cartan.solve(cartan.H3Oscillator(), **kwargs)
+    b = cartan.solve(PyH3Oscillator(), **kwargs)
+    assert a.success and b.success
+    assert_same_solution(a, b, atol=1e-9)
+
+
+@pytest.mark.parametrize("model, python", [(cartan.SO3Oscillator(INERTIA), PySO3Oscillator(INERTIA)),
+                                           (cartan.H3Oscillator(), PyH3Oscillator())])
+def test_finite_difference_hessian_of_python_models(model, python):
+    # Central differences with step 1e-5: truncation ~1e-10 |l'''|, rounding ~1e-16/1e-5 = 1e-11,
+    # against the built-in analytic second derivatives (lagrangian_hessian.hpp): 1e-8.
+    group = model.group
+    rng = np.random.default_rng(3)
+    for _ in range(3):
+        g, v = group.exp(rng.normal(size=3)), rng.normal(size=3)
+        exact = cartan.lagrangian_hessian(model, 0.0, g, v)
+        fd = cartan.lagrangian_hessian(python, 0.0, g, v)
+        assert set(exact) == {"momentum_v", "momentum_g", "gradient_v", "gradient_g"}
+        for key in exact:
+            np.testing.assert_allclose(fd[key], exact[key], atol=1e-8, err_msg=key)
+        assert np.abs(exact["gradient_g"]).max() > 0.1  # the potential's Hessian is really exercised
+
+
+def test_optional_python_hessian_is_used_and_exact():
+    g, v = cartan.SO3.exp([0.4, -1.1, 0.6]), np.array([0.2, -0.3, 0.5])
+    exact = cartan.lagrangian_hessian(cartan.SO3Oscillator(INERTIA), 0.0, g, v)
+    given = cartan.lagrangian_hessian(PySO3OscillatorWithHessian(INERTIA), 0.0, g, v)
+    for key in exact:  # the same formulas: rounding only
+        np.testing.assert_allclose(given[key], exact[key], atol=1e-15, err_msg=key)
+    kwargs = dict(lam=0.5, T=12, N=800, gT=cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1]), tol=1e-10)
+    a, ta = timed_solve(cartan.SO3Oscillator(INERTIA), **kwargs)
+    b, tb = timed_solve(PySO3OscillatorWithHessian(INERTIA), **kwargs)
+    print(f"\noscillator lam=0.5 T=12 with a Python hessian: built-in {ta:.3f} s, Python {tb:.3f} s")
+    assert b.success and b.branch == a.branch and (b.sweeps, b.inner_iterations) == (a.sweeps, a.inner_iterations)
+    assert_same_solution(a, b, atol=1e-12)  # same Jacobians up to rounding: same iterates
+
+    class BadHessian(PySO3Oscillator):
+        def hessian(self, t, g, v):
+            return dict(momentum_v=np.eye(3))
+
+    with pytest.raises(KeyError, match="momentum_g"):
+        cartan.solve(BadHessian(INERTIA), **kwargs)
+
+
+def test_every_method_reaches_the_same_discrete_solution():
+    kwargs = dict(lam=0.5, T=3.0, N=150, gT=cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1]))
+    model = cartan.SO3Oscillator(INERTIA)
+    ref = cartan.solve(model, method="single-shooting", tol=1e-12, **kwargs)
+    assert ref.success and ref.branch == "direct from the geodesic guess"
+    results = {
+        "two-level": cartan.solve(model, method="two-level", tol=1e-11, **kwargs),
+        "shooting": cartan.solve(model, method="shooting", tol=1e-12, **kwargs),
+        "multiple-shooting": cartan.solve(model, method="multiple-shooting", segments=3, tol=1e-12, **kwargs),
+        "continuation-lambda": cartan.solve(model, method="continuation-lambda", lambda_start=0.0, tol=1e-12,
+                                            **kwargs),
+        "guess": cartan.solve(model, method="single-shooting", v0=ref.v0, xi0=ref.xi0, tol=1e-12, **kwargs),
+    }
+    for name, r in results.items():
+        assert r.success, (name, r.message)
+        assert_same_solution(r, ref, atol=1e-7)
+    assert results["two-level"].outer_iterations > 1 and results["two-level"].method == "two-level"
+    assert results["multiple-shooting"].method == "multiple-shooting"
+    assert results["continuation-lambda"].branch.startswith("continued in lambda from lambda = 0")
+    assert results["guess"].branch == "from the given guess" and results["guess"].inner_iterations <= 1
+    assert set(cartan.METHODS) == {"two-level", "shooting", "single-shooting", "multiple-shooting",
+                                   "continuation-lambda"}
+
+
+def test_failure_is_a_result_not_an_exception():
+    r = cartan.solve(cartan.SO3Oscillator(INERTIA), lam=0.0, T=12, N=800, method="single-shooting", max_iterations=3,
+                     gT=cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1]))
+    assert not r.success and r.status != "converged" and "shooting" in r.message
+
+
+def test_solver_errors_raise_value_error_with_the_cpp_message():
+    model = cartan.RigidBody(INERTIA)
+    with pytest.raises(ValueError, match=r'^cartan\.solve: method = "newton" is not one of: two-level, shooting, '):
+        cartan.solve(model, lam=0.5, T=1, N=10, gT=GT, method="newton")
+    with pytest.raises(ValueError, match=r"^TransportedProblem: T = -1 must be positive$"):
+        cartan.solve(model, lam=0.5, T=-1, N=10, gT=GT)
+    with pytest.raises(ValueError, match=r"^TransportedProblem: N = 0 must be at least 1$"):
+        cartan.solve(model, lam=0.5, T=1, N=0, gT=GT)
+    with pytest.raises(ValueError, match=r"^SO3: gT = \[2, 0, 0; .* is not orthogonal"):
+        cartan.solve(model, lam=0.5, T=1, N=10, gT=np.diag([2.0, 1, 1]))
+    with pytest.raises(ValueError, match=r'^cartan\.solve: v0 = \(given\) is not an option of method "shooting"$'):
+        cartan.solve(model, lam=0.5, T=1, N=10, gT=GT, v0=np.zeros(3))
+    with pytest.raises(ValueError, match=r"^cartan\.solve: order = 3 must be 1 or 2$"):
+        cartan.solve(model, lam=0.5, T=1, N=10, gT=GT, order=3)
+    with pytest.raises(ValueError, match=r"^ShootingOptions: tolerance = -1 must be positive$"):
+        cartan.solve(model, lam=0.5, T=1, N=10, gT=GT, tol=-1)
+    with pytest.raises(ValueError, match=r"^cartan\.solve: lagrangian = SpatialRigidBody is right-reduced"):
+        cartan.solve(cartan.SpatialRigidBody(INERTIA), lam=0.5, T=1, N=10, gT=GT)
+
+
+def test_python_callback_errors_propagate():
+    class Broken(PyRigidBody):
+        def group_gradient(self, t, g, v):
+            raise ZeroDivisionError("user bug")
+
+    with pytest.raises(ZeroDivisionError, match="user bug"):
+        cartan.solve(Broken(INERTIA), lam=0.5, T=1, N=10, gT=GT)
+
+    class WrongShape(PyRigidBody):
+        def momentum(self, t, g, v):
+            return np.zeros(2)
+
+    with pytest.raises(ValueError, match=r"^Lagrangian\.momentum: return value = array of shape \(2,\) must have "
+                                         r"shape \(3,\)$"):
+        cartan.solve(WrongShape(INERTIA), lam=0.5, T=1, N=10, gT=GT, method="two-level")
+
+
+class PyKineticEnergy:
+    """l = 1/2 v.I v on any group, written in Python (free motion for a left-invariant metric)."""
+
+    def __init__(self, group, inertia):
+        self.group, self.inertia = group, np.asarray(inertia, dtype=float)
+
+    def value(self, t, g, v):
+        return 0.5 * v @ (self.inertia * v)
+
+    def momentum(self, t, g, v):
+        return self.inertia * v
+
+    def group_gradient(self, t, g, v):
+        return np.zeros(self.group.dim)
+
+    def velocity(self, t, g, mu):
+        return mu / self.inertia
+
+
+@pytest.mark.parametrize("group", [cartan.SE2, cartan.SE3], ids=lambda g: g.name)
+def test_python_lagrangian_on_other_groups_reproduces_the_classical_limit(group):
+    # lam = 0 is the classical left Euler-Poincare equation (PAPER-NOTES "Independent checks"):
+    # shoot to the end point of an accurate RKMK4 trajectory (1000 steps, error ~1e-12) and
+    # recover its initial velocity; the second-order scheme's error must fall as h^2.
+    inertia = np.linspace(1.0, 2.5, group.dim)
+    model = PyKineticEnergy(group, inertia)
+    v0 = np.linspace(0.8, -0.6, group.dim)
+    reference = cartan.euler_poincare(model, group.identity(), v0, T=1.0, steps=1000)
+    errors = []
+    for n in (25, 50):
+        r = cartan.solve(model, lam=0.0, T=1.0, N=n, gT=reference.g[-1], order=2, tol=1e-12)
+        assert r.success, r.message
+        errors.append(np.abs(r.v0 - v0).max())
+    order = np.log2(errors[0] / errors[1])
+    print(f"\n{group.name}: |v0 - v0_ref| = {errors}, order {order:.2f}")
+    assert errors[1] < 1e-2 and 1.8 < order < 2.3
