@@ -33,29 +33,21 @@ nlohmann::json solve_by_collocation(const ProblemSpec& spec, const TransportedPr
   }
   const Eigen::MatrixXd xi = bvp::heisenberg_xi(problem, r, t);
   const Heisenberg::Element g_end = r.y.col(r.y.cols() - 1).head<3>();
-  return {
-      {"status", r.success() ? "converged" : std::string(bvp::to_string(r.status))},
-      {"message", r.message},
-      {"group", spec.group},
-      {"model", spec.model},
-      {"lambda", spec.lambda},
-      {"T", spec.T},
-      {"N", spec.N},
-      {"method", "collocation"},
-      {"order", 4},
-      {"branch", "direct from the geodesic guess on a uniform mesh of N intervals"},
-      {"t", std::vector<double>(t.begin(), t.end())},
-      {"g", column_rows(y, 0)},
-      {"v", column_rows(y, 3)},
-      {"mu", column_rows(mu, 0)},
-      {"xi", column_rows(xi, 0)},
-      {"terminal_error", Heisenberg::log(Heisenberg::compose(Heisenberg::inverse(problem.gT), g_end)).norm()},
-      {"xi_terminal", xi.col(xi.cols() - 1).norm()},
-      {"iterations", {{"outer", r.refinements}, {"inner", r.newton_iterations}, {"sweeps", r.jacobian_evaluations}}},
-      {"mesh_size", r.t.size()},
-      {"max_residual", r.max_rms_residual},
-      {"solve_time_s", seconds},
-  };
+  nlohmann::json out =
+      result_header(spec, r.success() ? "converged" : std::string(bvp::to_string(r.status)), r.message, "collocation",
+                    4, "direct from the geodesic guess on a uniform mesh of N intervals");
+  out["t"] = std::vector<double>(t.begin(), t.end());
+  out["g"] = column_rows(y, 0);
+  out["v"] = column_rows(y, 3);
+  out["mu"] = column_rows(mu, 0);
+  out["xi"] = column_rows(xi, 0);
+  out["terminal_error"] = Heisenberg::log(Heisenberg::compose(Heisenberg::inverse(problem.gT), g_end)).norm();
+  out["xi_terminal"] = xi.col(xi.cols() - 1).norm();
+  out["iterations"] = {{"outer", r.refinements}, {"inner", r.newton_iterations}, {"sweeps", r.jacobian_evaluations}};
+  out["mesh_size"] = r.t.size();
+  out["max_residual"] = r.max_rms_residual;
+  out["solve_time_s"] = seconds;
+  return out;
 }
 
 }  // namespace cartan::cli

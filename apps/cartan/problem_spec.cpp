@@ -79,6 +79,13 @@ void require_size(const std::string& name, const std::vector<double>& values, st
 
 }  // namespace
 
+nlohmann::json result_header(const ProblemSpec& spec, const std::string& status, const std::string& message,
+                             const std::string& method, int order, const std::string& branch) {
+  return {{"status", status}, {"message", message}, {"group", spec.group}, {"model", spec.model},
+          {"lambda", spec.lambda}, {"T", spec.T}, {"N", spec.N}, {"method", method}, {"order", order},
+          {"branch", branch}};
+}
+
 const std::vector<std::string>& available_methods() {
   static const std::vector<std::string> methods{"two-level", "shooting", "multiple-shooting", "collocation"};
   return methods;

@@ -41,6 +41,11 @@ std::vector<double> parse_list(const std::string& text, const std::string& name)
 /// naming the first bad value.
 void validate(ProblemSpec& spec);
 
+/// The part of a `cartan solve` result every method shares: status, message, group, model,
+/// lambda, T, N, method, order, branch. Each method adds its trajectory and diagnostics.
+nlohmann::json result_header(const ProblemSpec& spec, const std::string& status, const std::string& message,
+                             const std::string& method, int order, const std::string& branch);
+
 /// The methods `cartan solve` accepts.
 const std::vector<std::string>& available_methods();
 

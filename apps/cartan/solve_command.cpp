@@ -64,27 +64,17 @@ nlohmann::json run(const ProblemSpec& spec, const TransportedProblem<G, L>& prob
     s.method = "shooting";
   }
   const auto& tr = s.trajectory;
-  return {
-      {"status", s.status},
-      {"message", s.message},
-      {"group", spec.group},
-      {"model", spec.model},
-      {"lambda", spec.lambda},
-      {"T", spec.T},
-      {"N", spec.N},
-      {"method", s.method},
-      {"order", spec.order},
-      {"branch", s.branch},
-      {"t", tr.t},
-      {"g", rows(tr.g)},
-      {"v", rows(tr.v)},
-      {"mu", rows(tr.mu)},
-      {"xi", rows(tr.xi)},
-      {"terminal_error", s.terminal_error},
-      {"xi_terminal", s.xi_terminal},
-      {"iterations", {{"outer", s.outer_iterations}, {"inner", s.inner_iterations}, {"sweeps", s.sweeps}}},
-      {"solve_time_s", s.solve_time_s},
-  };
+  nlohmann::json out = result_header(spec, s.status, s.message, s.method, spec.order, s.branch);
+  out["t"] = tr.t;
+  out["g"] = rows(tr.g);
+  out["v"] = rows(tr.v);
+  out["mu"] = rows(tr.mu);
+  out["xi"] = rows(tr.xi);
+  out["terminal_error"] = s.terminal_error;
+  out["xi_terminal"] = s.xi_terminal;
+  out["iterations"] = {{"outer", s.outer_iterations}, {"inner", s.inner_iterations}, {"sweeps", s.sweeps}};
+  out["solve_time_s"] = s.solve_time_s;
+  return out;
 }
 
 }  // namespace
