@@ -157,9 +157,6 @@ void validate(ProblemSpec& spec) {
     bad("segments", std::to_string(spec.segments), "must be between 1 and N (0: the default, about 100 steps each)");
   }
   if (spec.samples == 1) bad("samples", "1", "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");
-  if (spec.method == "collocation" && spec.group != "heisenberg") {
-    bad("method", "\"collocation\"", "is available for --group heisenberg only");
-  }
   if (spec.inertia.empty()) spec.inertia = spec.group == "so3" ? std::vector<double>{2, 3, 4} : std::vector<double>{1, 1, 1};
   require_size("inertia", spec.inertia, 3, "the diagonal of the inertia");
   for (double x : spec.inertia) {

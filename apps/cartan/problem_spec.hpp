@@ -20,10 +20,10 @@ struct ProblemSpec {
   std::vector<double> g0;               ///< so3: 9 numbers row-major; heisenberg: a,b,c
   std::vector<double> gT;
   std::vector<double> a0, aT;           ///< so3 only: gT = minimal rotation taking a0 to aT
-  std::string method = "shooting";      ///< two-level | shooting (with continuation in T as fallback) | multiple-shooting
+  std::string method = "shooting";      ///< two-level | shooting (with continuation in T as fallback) | multiple-shooting | collocation
   int order = 1;
   double tol = 1e-10;
-  int samples = 0;                      ///< reserved for collocation output sampling
+  int samples = 0;                      ///< collocation: output at this many uniform times (0: the final mesh)
   std::string continuation = "T";       ///< shooting: T (when direct fails) | lambda (from lambda = 0) | none
   int segments = 0;                     ///< multiple shooting: number of segments (0: default_segments(N))
   int max_iterations = 200;

@@ -1,11 +1,12 @@
 #include "solve_command.hpp"
 
 #include "cartan/models/heisenberg_oscillator.hpp"
-#include "collocation_command.hpp"
 #include "cartan/models/rigid_body.hpp"
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/multiple_shooting.hpp"
 #include "cartan/transported/two_level.hpp"
+#include "collocation_command.hpp"
+#include "json_rows.hpp"
 
 namespace cartan::cli {
 
@@ -23,19 +24,6 @@ SO3::Element rotation(const std::vector<double>& rowmajor, const std::string& na
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string(e.what()).replace(0, std::string("SO3: matrix").size(), "cartan solve: " + name));
   }
-}
-
-nlohmann::json rows(const std::vector<SO3::Element>& g) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& m : g) out.push_back({m(0, 0), m(0, 1), m(0, 2), m(1, 0), m(1, 1), m(1, 2), m(2, 0), m(2, 1), m(2, 2)});
-  return out;
-}
-
-template <class Vec>
-nlohmann::json rows(const std::vector<Vec>& x) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& v : x) out.push_back({v[0], v[1], v[2]});
-  return out;
 }
 
 template <LieGroup G, ReducedLagrangian<G> L>
@@ -95,9 +83,11 @@ nlohmann::json solve(const ProblemSpec& spec) {
                               : SO3::minimal_rotation(Eigen::Vector3d(spec.a0.data()), Eigen::Vector3d(spec.aT.data()));
   const Eigen::Matrix3d inertia_matrix = inertia.asDiagonal();
   if (spec.model == "oscillator") {
-    return run(spec, TransportedProblem<SO3, SO3Oscillator>{SO3Oscillator(inertia_matrix), spec.lambda, spec.T, spec.N, g0, gT});
+    const TransportedProblem<SO3, SO3Oscillator> problem{SO3Oscillator(inertia_matrix), spec.lambda, spec.T, spec.N, g0, gT};
+    return spec.method == "collocation" ? solve_by_collocation(spec, problem) : run(spec, problem);
   }
-  return run(spec, TransportedProblem<SO3, RigidBody>{RigidBody(inertia_matrix), spec.lambda, spec.T, spec.N, g0, gT});
+  const TransportedProblem<SO3, RigidBody> problem{RigidBody(inertia_matrix), spec.lambda, spec.T, spec.N, g0, gT};
+  return spec.method == "collocation" ? solve_by_collocation(spec, problem) : run(spec, problem);
 }
 
 }  // namespace cartan::cli

@@ -43,6 +43,33 @@ TEST(TransportedCollocation, HeisenbergAgreesWithTheClosedFormSystem) {
   }
 }
 
+// guess_from rebuilds the transport element along a discrete path: along the geodesic
+// g(t) = g0 exp(t u) it must give h(t) = exp(-lambda t u) and reproduce geodesic_guess (the
+// products of exact exponentials of one direction differ only by rounding, ~1e-15 per step).
+TEST(TransportedCollocation, GuessFromATrajectoryRebuildsTheTransport) {
+  using Collocation = TransportedCollocation<SO3, ZeroPotential<SO3>>;
+  const auto problem = testing::paper_free_body(0.3, 40, 5.0);
+  VectorXd t_geodesic, t;
+  Eigen::MatrixXd y_geodesic, y;
+  Collocation::geodesic_guess(problem, t_geodesic, y_geodesic);
+  TransportedTrajectory<SO3> path;
+  for (Eigen::Index i = 0; i < t_geodesic.size(); ++i) {
+    SchemeNode<SO3> node;
+    node.t = t_geodesic[i];
+    node.g = Collocation::element(y_geodesic.col(i), Collocation::kG);
+    node.v = y_geodesic.col(i).segment<3>(Collocation::kV);
+    node.xi.setZero();
+    node.mu.setZero();
+    node.transport = SO3::identity();
+    path.push(node);
+  }
+  Collocation::guess_from(problem, path, t, y);
+  EXPECT_EQ(t, t_geodesic);
+  EXPECT_LE((y - y_geodesic).cwiseAbs().maxCoeff(), 1e-13);
+  path.t.resize(1);
+  testing::expect_invalid([&] { Collocation::guess_from(problem, path, t, y); }, "trajectory.t.size() = 1");
+}
+
 /// Max over the shooting solution's nodes of the difference to the collocation solution in
 /// g (matrix entries), v and xi.
 template <class Collocation>

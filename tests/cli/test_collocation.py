@@ -1,6 +1,6 @@
-"""`cartan solve --method collocation` (the H3 transported BVP): the output contract, exit codes,
-bad input, and agreement with SciPy's solve_bvp on the paper's printed system (appendix
-sec-app-H3, g0 = e) at sample times.
+"""`cartan solve --method collocation`: the output contract, exit codes, bad input, agreement with
+SciPy's solve_bvp on the paper's printed H3 system (appendix sec-app-H3, g0 = e) at sample
+times, and on SO(3) agreement with the shooting solvers' order-2 scheme.
 
 Run by ctest (the `cli` test) with CARTAN_BIN pointing at the built `cartan` executable."""
 import json
@@ -81,7 +81,7 @@ def test_solver_failure_exit_code_1_with_json():
 
 
 @pytest.mark.parametrize("args,needle", [
-    (["--group", "so3", "--a0", "1,0,0", "--aT", "0,1,0"], "collocation\" is available for --group heisenberg only"),
+    (["--group", "so3", "--a0", "1,0,0", "--aT", "-1,0,0"], "are antiparallel"),
     (["--group", "heisenberg", "--model", "oscillator", "--gT", "1,0.5,0.8", "--samples", "1"], "samples = 1"),
     (["--group", "heisenberg", "--model", "oscillator", "--gT", "1,0.5,0.8", "--samples", "-2"], "samples = -2"),
     (["--group", "heisenberg", "--model", "oscillator", "--gT", "1,0.5,0.8", "--tol", "0"], "tol = 0"),
@@ -91,3 +91,69 @@ def test_bad_input_exit_code_2(args, needle):
     result = run("--method", "collocation", "--T", "1", *args)
     assert result.returncode == 2, (result.returncode, result.stderr)
     assert needle in result.stderr, result.stderr
+
+
+SO3_FREE_BODY = ["--group", "so3", "--model", "free-rigid-body", "--T", "5", "--a0=-1,-1,-1", "--aT", "0.9,1,1"]
+A0 = -np.ones(3) / np.sqrt(3)
+AT = np.array([0.9, 1, 1]) / np.sqrt(2.81)
+
+
+def so3_solve(*args):
+    result = run(*SO3_FREE_BODY, *args)
+    assert result.returncode == 0, result.stderr + result.stdout[:500]
+    return json.loads(result.stdout)
+
+
+def so3_collocation(lam, samples="0"):
+    return so3_solve("--method", "collocation", "--N", "20", "--tol", "1e-10", "--samples", samples,
+                     "--lambda", str(lam))
+
+
+@pytest.mark.parametrize("lam", [0, 0.5, 1])
+def test_so3_free_body_reaches_the_continuous_solution_of_the_shooting_scheme(lam):
+    """The paper's free body (T = 5). Collocation (residual 1e-10: error ~1e-12) and the order-2
+    shooting scheme approximate the same continuous solution, so their difference at the shooting
+    nodes (the collocation's dense output sampled there) shrinks by 4 when N doubles (order 2,
+    within 2^0.25). g is row-major, takes a0 to aT, and stays orthogonal to the collocation
+    accuracy."""
+    c = so3_collocation(lam)
+    assert c["status"] == "converged" and c["method"] == "collocation" and c["order"] == 4
+    assert c["branch"].startswith("direct from the geodesic guess")
+    assert np.linalg.norm(np.array(c["g"][-1]).reshape(3, 3) @ A0 - AT) < 1e-10
+    assert c["group_defect"] < 1e-9 and c["terminal_error"] < 1e-10
+    differences = []
+    for N in [50, 100, 200]:
+        shooting = so3_solve("--order", "2", "--tol", "1e-13", "--lambda", str(lam), "--N", str(N))
+        dense = so3_collocation(lam, samples=str(N + 1))
+        assert np.allclose(dense["t"], shooting["t"], atol=1e-12)
+        differences.append(np.max(np.abs(np.array(dense["v"]) - np.array(shooting["v"]))))
+    orders = np.log2(np.array(differences[:-1]) / np.array(differences[1:]))
+    assert np.all(np.abs(orders - 2) < 0.25), (differences, orders)
+
+
+def test_so3_symmetry_of_the_free_body_holds_for_the_collocation_solution():
+    """Inversion maps lambda to 1 - lambda and the reflection diag(-1,1,1) fixes the inertia and
+    maps gT to gT^-1 (the paper's endpoints): v0(1) = diag(-1,1,1) v0(0) and v0(1/2) has first
+    component 0, to the collocation accuracy (tol 1e-10; errors ~1e-12)."""
+    v0 = {lam: np.array(so3_collocation(lam)["v"][0]) for lam in [0, 0.5, 1]}
+    assert np.max(np.abs(v0[1] - np.array([-1, 1, 1]) * v0[0])) < 1e-8
+    assert abs(v0[0.5][0]) < 1e-8
+
+
+def test_so3_long_horizon_falls_back_to_the_shooting_branch():
+    """The paper's oscillator at T = 12: collocation from the geodesic guess fails (as shooting
+    does), so the CLI starts again from the order-2 shooting solution continued in T; the result
+    says so and is close to that solution (their difference is the order-2 discretisation error
+    at N = 800, ~1e-5). With --continuation none the failure is reported (exit 1)."""
+    oscillator = ["--group", "so3", "--model", "oscillator", "--T", "12", "--N", "800", "--a0=-0.7,-1,-0.7",
+                  "--aT", "0.8,0.8,1", "--lambda", "0"]
+    result = run(*oscillator, "--method", "collocation", "--tol", "1e-6", "--samples", "801")
+    assert result.returncode == 0, result.stderr
+    c = json.loads(result.stdout)
+    assert c["branch"].startswith("from the order-2 shooting solution (continued in T from T = 3"), c["branch"]
+    result = run(*oscillator, "--order", "2", "--tol", "1e-10")
+    assert result.returncode == 0, result.stderr
+    shooting = json.loads(result.stdout)
+    assert np.max(np.abs(np.array(c["v"]) - np.array(shooting["v"]))) < 1e-3
+    direct = run(*oscillator, "--method", "collocation", "--continuation", "none", "--tol", "1e-6", timeout=300)
+    assert direct.returncode == 1 and json.loads(direct.stdout)["status"] != "converged"

@@ -13,8 +13,10 @@
 // printed system; this generic form agrees with it (tests/bvp).
 
 #include "cartan/bvp/collocation.hpp"
+#include "cartan/errors.hpp"
 #include "cartan/models/natural_system.hpp"
 #include "cartan/transported/problem.hpp"
+#include "cartan/transported/scheme.hpp"
 
 namespace cartan::bvp {
 
@@ -74,6 +76,31 @@ class TransportedCollocation {
       y.col(i).template segment<kElement>(kG) = g.reshaped();
       y.col(i).template segment<kElement>(kH) = h.reshaped();
       y.col(i).template segment<kDim>(kV) = u;
+    }
+  }
+
+  /// An initial guess from a discrete solution (e.g. a shooting solver's, whose solution branch
+  /// the collocation then refines): its nodes as the mesh, g, v, xi as given, and the transport
+  /// element rebuilt along the piecewise-geodesic path, h_{k+1} = exp(-lambda dt u_k) h_k with
+  /// u_k = log(g_k^{-1} g_{k+1}) / dt (disc-exp, exact on each geodesic step).
+  static void guess_from(const Problem& problem, const TransportedTrajectory<G>& trajectory, Eigen::VectorXd& t,
+                         Eigen::MatrixXd& y) {
+    const auto m = static_cast<Eigen::Index>(trajectory.t.size());
+    if (m < 2) throw_invalid("TransportedCollocation::guess_from", "trajectory.t.size()", std::to_string(m), "must be at least 2");
+    t = Eigen::Map<const Eigen::VectorXd>(trajectory.t.data(), m);
+    y.setZero(kStates, m);
+    ElementOf<G> h = G::identity();
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      y.col(i).template segment<kElement>(kG) = trajectory.g[k].reshaped();
+      y.col(i).template segment<kElement>(kH) = h.reshaped();
+      y.col(i).template segment<kDim>(kV) = trajectory.v[k];
+      y.col(i).template segment<kDim>(kXi) = trajectory.xi[k];
+      if (i + 1 < m) {
+        const double dt = t[i + 1] - t[i];
+        const TangentOf<G> u = G::log(G::compose(G::inverse(trajectory.g[k]), trajectory.g[k + 1])) / dt;
+        h = G::compose(G::exp(TangentOf<G>(-problem.lambda * dt * u)), h);
+      }
     }
   }
 
