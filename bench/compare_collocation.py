@@ -60,13 +60,16 @@ def warm_comparison(binary, rows):
                          text=True, check=True)
     warm = {}
     for b in json.loads(out.stdout)["benchmarks"]:
-        endpoint, lam2 = (int(x) for x in b["name"].split("/")[1:3])
-        warm[(ENDPOINTS[endpoint], lam2 / 2)] = b["real_time"] / 1e3  # ms -> s
+        endpoint, lam2, reuse = (int(x) for x in b["name"].split("/")[1:4])
+        warm[(ENDPOINTS[endpoint], lam2 / 2, reuse)] = b["real_time"] / 1e3  # ms -> s
     scipy_total = sum(r[2] for r in rows)
-    warm_total = sum(warm[(r[0], r[1])] for r in rows)
-    per_case = ", ".join(f"{r[2] / warm[(r[0], r[1])]:.0f}" for r in rows)
-    return (f"Warm in-process (bench_collocation): cartan {warm_total * 1e3:.1f} ms for the {len(rows)} cases, "
-            f"ratio SciPy / cartan {scipy_total / warm_total:.1f} (per case: {per_case}).")
+    lines = []
+    for reuse, label in [(1, "reusing the Newton matrix (default)"), (0, "a fresh Jacobian every Newton step")]:
+        warm_total = sum(warm[(r[0], r[1], reuse)] for r in rows)
+        per_case = ", ".join(f"{r[2] / warm[(r[0], r[1], reuse)]:.0f}" for r in rows)
+        lines.append(f"Warm in-process (bench_collocation), {label}: cartan {warm_total * 1e3:.1f} ms for the "
+                     f"{len(rows)} cases, ratio SciPy / cartan {scipy_total / warm_total:.1f} (per case: {per_case}).")
+    return "\n".join(lines)
 
 
 def main():

@@ -186,6 +186,26 @@ TEST(Collocation, BlockAndSparseLUTakeTheSamePath) {
   EXPECT_LE((r[0].y - r[1].y).cwiseAbs().maxCoeff(), 1e-10);
 }
 
+// Reusing the Newton matrix (chord steps while Newton contracts by 4 or more) changes the
+// iterates but not the convergence test, so both runs meet the same residual bound: same
+// accuracy against the exact solution (the error bound 100 tol of the test above), fewer
+// Jacobians with reuse, and at least one chord step taken (more Newton iterations than
+// Jacobians) — otherwise the option would be untested.
+TEST(Collocation, ReusingTheNewtonMatrixKeepsTheAccuracyWithFewerJacobians) {
+  const ShockLayer shock{1e-2};
+  const auto exact = [&](double x) { return shock.exact(x); };
+  BvpResult r[2];
+  for (int reuse : {0, 1}) {
+    r[reuse] = solve_collocation(shock.system(), uniform(-1, 1, 5), MatrixXd::Zero(2, 5), VectorXd(0),
+                                 {.tol = 1e-6, .reuse_jacobian = reuse == 1});
+    ASSERT_TRUE(r[reuse].success()) << r[reuse].message;
+    EXPECT_LE(max_error_at(r[reuse], uniform(-1, 1, 401), exact), 100 * 1e-6) << reuse;
+  }
+  EXPECT_EQ(r[0].newton_iterations, r[0].jacobian_evaluations);
+  EXPECT_LT(r[1].jacobian_evaluations, r[0].jacobian_evaluations);
+  EXPECT_GT(r[1].newton_iterations, r[1].jacobian_evaluations);
+}
+
 // Warm start: continuing from a converged result at the same tolerance needs no Newton step and
 // no new node; continuing to a tighter tolerance refines from it and reaches that tolerance.
 TEST(Collocation, ContinuationFromAPreviousSolution) {

@@ -13,7 +13,8 @@
 //    nodes and p at once by damped Newton (natural monotonicity test on the Newton correction)
 //    on the block-sparse Jacobian (collocation_jacobian.hpp: a structured partial-pivoting LU,
 //    or Eigen's SparseLU). Jacobians of f and bc are the user's or
-//    forward differences with steps fd_step * max(1, |x_j|).
+//    forward differences with steps fd_step * max(1, |x_j|). While Newton contracts by 4 or more
+//    per full step, the factorised matrix is reused (chord steps; reuse_jacobian).
 //  * Error control: the residual rho(t) = S'(t) - f(t, S(t)), relative to 1 + |f|, is O(h^3);
 //    its RMS over each interval (5-point Lobatto quadrature; rho vanishes at both ends) must be
 //    <= tol. An interval with residual r > tol is split into ceil((r / tol)^(1/3)) pieces (2 to
@@ -62,6 +63,9 @@ struct CollocationOptions {
   int max_refinements = 40;       ///< mesh refinement rounds
   double fd_step = 1.4901161193847656e-08;  ///< sqrt(eps): forward-difference relative step
   LinearSolverKind linear_solver = LinearSolverKind::BlockLU;
+  /// Reuse the factorised Newton matrix while Newton contracts fast (chord steps); false: a
+  /// fresh Jacobian every iteration. Same convergence test either way.
+  bool reuse_jacobian = true;
 
   /// Throws std::invalid_argument naming the bad option.
   void validate() const;
