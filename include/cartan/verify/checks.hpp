@@ -145,8 +145,9 @@ class TrajectoryChecks {
   ///   g:  u - P v = 0,                       u = g^{-1} g' (from log(g_k^{-1} g_{k+-1}))
   ///   mu: mu' - P^T zeta + (2 lambda - 1) ad*_v mu + lambda (1 - lambda) ad*_v xi = 0
   ///   xi: xi' + ad*_v mu = 0
-  /// Each equation's residual is relative to the largest sum of the magnitudes of its terms over
-  /// the samples; the largest of the three is returned. Needs at least 3 samples (else 0).
+  /// Each equation's residual is relative to the largest sum of the magnitudes of its terms (and
+  /// |v| |mu| in the covector equations) over the samples; the largest of the three is returned.
+  /// Needs at least 3 samples (else 0).
   Residual equation_residual() const {
     double worst[3] = {0, 0, 0}, scale[3] = {0, 0, 0}, where[3] = {0, 0, 0};
     const double torsion = 2 * lambda_ - 1, curvature = lambda_ * (1 - lambda_);
@@ -163,10 +164,13 @@ class TrajectoryChecks {
       const double residual[3] = {(u - pv).norm(),
                                   (dmu - force + torsion * coad_mu + curvature * coad_xi).norm(),
                                   (dxi + coad_mu).norm()};
+      // |v| |mu| bounds ad*_v mu up to a constant: the size the coadjoint terms have before the
+      // cancellation in the bracket (so rounding in a steady rotation is not compared with 0).
+      const double coadjoint_size = x_.v[k].norm() * x_.mu[k].norm();
       const double terms[3] = {u.norm() + pv.norm(),
-                               dmu.norm() + force.norm() + std::abs(torsion) * coad_mu.norm() +
+                               dmu.norm() + force.norm() + coadjoint_size + std::abs(torsion) * coad_mu.norm() +
                                    std::abs(curvature) * coad_xi.norm(),
-                               dxi.norm() + coad_mu.norm()};
+                               dxi.norm() + coadjoint_size + coad_mu.norm()};
       for (int i = 0; i < 3; ++i) {
         scale[i] = std::max(scale[i], terms[i]);
         if (residual[i] > worst[i]) worst[i] = residual[i], where[i] = x_.t[k];
