@@ -21,4 +21,7 @@ struct Command {
 /// `cartan solve` (solve_cli.cpp).
 Command add_solve_command(CLI::App& tool);
 
+/// `cartan verify` (verify_cli.cpp).
+Command add_verify_command(CLI::App& tool);
+
 }  // namespace cartan::cli

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include "cartan/errors.hpp"
+#include "cartan/so3.hpp"
 
 namespace cartan::cli {
 
@@ -79,11 +80,20 @@ void require_size(const std::string& name, const std::vector<double>& values, st
 
 }  // namespace
 
+std::vector<double> final_element(const ProblemSpec& spec) {
+  if (spec.a0.empty()) return spec.gT;
+  const SO3::Element r = SO3::minimal_rotation(Eigen::Vector3d(spec.a0.data()), Eigen::Vector3d(spec.aT.data()));
+  std::vector<double> out(9);
+  for (int i = 0; i < 9; ++i) out[static_cast<std::size_t>(i)] = r(i / 3, i % 3);  // row-major
+  return out;
+}
+
 nlohmann::json result_header(const ProblemSpec& spec, const std::string& status, const std::string& message,
                              const std::string& method, int order, const std::string& branch) {
   return {{"status", status}, {"message", message}, {"group", spec.group}, {"model", spec.model},
           {"lambda", spec.lambda}, {"T", spec.T}, {"N", spec.N}, {"method", method}, {"order", order},
-          {"branch", branch}};
+          {"branch", branch}, {"inertia", spec.inertia}, {"g0", spec.g0}, {"gT", final_element(spec)},
+          {"tol", spec.tol}};
 }
 
 const std::vector<std::string>& available_methods() {

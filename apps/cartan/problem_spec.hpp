@@ -41,8 +41,13 @@ std::vector<double> parse_list(const std::string& text, const std::string& name)
 /// naming the first bad value.
 void validate(ProblemSpec& spec);
 
+/// The final element of a validated spec as its numbers (so3: row-major): gT, or for so3 with
+/// a0/aT the minimal rotation taking a0 to aT.
+std::vector<double> final_element(const ProblemSpec& spec);
+
 /// The part of a `cartan solve` result every method shares: status, message, group, model,
-/// lambda, T, N, method, order, branch. Each method adds its trajectory and diagnostics.
+/// lambda, T, N, method, order, branch, and what rebuilds the problem (`cartan verify`):
+/// inertia, g0, gT (final_element), tol. Each method adds its trajectory and diagnostics.
 nlohmann::json result_header(const ProblemSpec& spec, const std::string& status, const std::string& message,
                              const std::string& method, int order, const std::string& branch);
 
