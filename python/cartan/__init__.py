@@ -222,7 +222,7 @@ class BvpResult:
     status_name: str
     message: str
     success: bool
-    x: np.ndarray
+    x: np.ndarray = field(repr=False)
     y: np.ndarray = field(repr=False)
     yp: np.ndarray = field(repr=False)
     p: Optional[np.ndarray]
