@@ -22,7 +22,12 @@ Models
 Integrators
     :func:`euler_poincare` (eq:EP-left, eq:EP-right), :func:`lie_poisson` (eq:LP-left, eq:LP-right).
 The transported-velocity boundary-value problem (eq:reduced-system)
-    :func:`solve` with ``method`` one of :data:`METHODS`; returns a :class:`SolveResult`.
+    :func:`solve` with ``method`` one of :data:`METHODS` (shooting solvers of the discrete scheme,
+    or "collocation" of the continuous problem); returns a :class:`SolveResult`.
+General two-point boundary-value problems
+    :func:`solve_bvp`, fourth-order adaptive collocation with scipy.integrate.solve_bvp's
+    arguments (fun, bc, x, y, p, fun_jac, bc_jac, tol, max_nodes, bc_tol); returns a
+    :class:`BvpResult` whose ``sol`` is the dense output (:class:`BvpSolution`).
 
 Errors: invalid input raises ValueError with the C++ library's message; an exception raised in
 a Python callback during a solve is re-raised unchanged when the solver returns.
@@ -32,8 +37,10 @@ from typing import Optional
 
 import numpy as np
 
+from . import _cartan
 from ._cartan import (  # noqa: F401  (re-exported)
     SE2,
+    BvpSolution,
     SE3,
     SO3,
     H3Oscillator,
@@ -56,6 +63,7 @@ __all__ = [
     "RigidBody", "SO3Oscillator", "SpatialRigidBody", "H3Oscillator",
     "RigidBodyHamiltonian", "SO3OscillatorHamiltonian", "SpatialRigidBodyHamiltonian", "H3OscillatorHamiltonian",
     "Trajectory", "SolveResult", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve",
+    "BvpResult", "BvpSolution", "solve_bvp",
 ]
 
 
@@ -113,6 +121,12 @@ class SolveResult:
     outer_iterations, inner_iterations, sweeps: work done; terminal_error = |log(gT^-1 g_N)|,
     xi_terminal = |xi_N|; branch: how the solution was reached (e.g. "continued in T from
     T = 3 (6 stages)"); solve_time: seconds in the solver.
+
+    method="collocation": status "converged" or max-nodes-exceeded, singular-jacobian,
+    not-converged; order 4; t the final mesh or the `samples` uniform times (then N + 1 is not the
+    number of rows); outer_iterations = mesh refinements, inner_iterations = Newton iterations,
+    sweeps = Jacobian evaluations; v0, xi0 the solution's values at t = 0; the message gives the
+    mesh size and the largest residual.
     """
     status: str
     message: str
@@ -148,7 +162,8 @@ class SolveResult:
 
 
 def solve(lagrangian, *, lam, T, N, gT, g0=None, method="shooting", order=1, tol=1e-10, max_iterations=200,
-          segments: Optional[int] = None, lambda_start: Optional[float] = None, v0=None, xi0=None, group=None):
+          segments: Optional[int] = None, lambda_start: Optional[float] = None, v0=None, xi0=None, group=None,
+          samples: Optional[int] = None, max_nodes: Optional[int] = None):
     """Solves the transported-velocity boundary-value problem of the Cartan-Schouten connection
     of parameter `lam` (eq:reduced-system; paper §6-7) on [0, T] with N steps, g(0) = g0
     (default: the identity), g(T) = gT, with the discrete scheme of order 1 (the paper's) or 2.
@@ -169,6 +184,15 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="shooting", order=1, tol
       "single-shooting"     augmented shooting from the guess (v0, xi0) only.
       "multiple-shooting"   lifted Levenberg-Marquardt over `segments` segments; accepts v0, xi0.
       "continuation-lambda" shooting continued in lambda from `lambda_start` (default 0).
+      "collocation"         the continuous problem (not the discrete scheme) by fourth-order adaptive
+                            collocation from the geodesic guess on a uniform mesh of N intervals, as
+                            `cartan solve --method collocation`: tol bounds the relative RMS residual
+                            per interval, max_iterations the Newton iterations per mesh; `samples`
+                            (default 0: the final mesh; else >= 2 uniform times on [0, T]) and
+                            `max_nodes` (default 20000). H3Oscillator uses the closed-form H3 system
+                            (xi by exact quadrature), RigidBody and SO3Oscillator the generic one with
+                            g and the transport as states (g leaves SO(3) by the discretisation error).
+                            Built-in models only; `order` is unused (the method has order 4).
     v0, xi0: initial guesses where accepted (default: the geodesic guess log(g0^-1 gT)/T and 0).
     """
     if getattr(lagrangian, "side", "left") != "left":
@@ -176,5 +200,62 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="shooting", order=1, tol
                          "the transported-velocity problem needs a left-reduced Lagrangian")
     grp = _group_of(lagrangian, group, "solve")
     d = grp._solve(lagrangian, lam, T, N, g0, gT, method, order, tol, max_iterations, segments, lambda_start,
-                   v0, xi0)
+                   v0, xi0, samples, max_nodes)
     return SolveResult(**d)
+
+
+@dataclass
+class BvpResult:
+    """The result of :func:`solve_bvp`, with scipy.integrate.solve_bvp's fields:
+
+    status: 0 success, 1 max_nodes exceeded, 2 singular collocation Jacobian, 3 not converged
+    (Newton or mesh refinement failed, or f/bc not finite; SciPy's 3 is the narrower "bc_tol not
+    met"); status_name: "success", "max-nodes-exceeded", "singular-jacobian", "not-converged";
+    message; success: status == 0; x (m,) the final mesh; y (n, m) and yp (n, m) = f(x, y, p) at
+    it; p (k,) or None; sol: the C^1 cubic dense output (sol(x), sol(x, 1) for y');
+    rms_residuals (m - 1,) relative RMS residual per interval; niter: meshes solved.
+    cartan's counters: max_rms_residual, max_bc_residual, newton_iterations,
+    jacobian_evaluations, rhs_evaluations (calls of fun, finite differences included),
+    solve_time (seconds).
+    """
+    status: int
+    status_name: str
+    message: str
+    success: bool
+    x: np.ndarray = field(repr=False)
+    y: np.ndarray = field(repr=False)
+    yp: np.ndarray = field(repr=False)
+    p: Optional[np.ndarray]
+    sol: BvpSolution = field(repr=False)
+    rms_residuals: np.ndarray = field(repr=False)
+    niter: int
+    max_rms_residual: float
+    max_bc_residual: float
+    newton_iterations: int
+    jacobian_evaluations: int
+    rhs_evaluations: int
+    solve_time: float
+
+
+def solve_bvp(fun, bc, x, y, p=None, *, fun_jac=None, bc_jac=None, tol=1e-3, max_nodes=1000, bc_tol=None,
+              max_newton_iterations=20, max_refinements=40, fd_step=2.0 ** -26, linear_solver="block-lu"):
+    """Solves y' = fun(x, y[, p]) on [x[0], x[-1]] with bc(y(a), y(b)[, p]) = 0 (n + k conditions)
+    by fourth-order adaptive collocation (the three-stage Lobatto IIIA scheme of SciPy's solve_bvp;
+    include/cartan/bvp/collocation.hpp) from the guess y (n, m) on the mesh x (m,) and p (k,).
+
+    Arguments follow scipy.integrate.solve_bvp, so a SciPy script ports by changing the import:
+    fun(x, y[, p]) -> (n,) or (n, 1); bc(ya, yb[, p]) -> (n + k,); fun_jac(x, y[, p]) -> df_dy
+    (n, n[, 1]) or, with p, (df_dy, df_dp (n, k[, 1])); bc_jac(ya, yb[, p]) -> (dbc_dya, dbc_dyb[,
+    dbc_dp]). Without fun_jac/bc_jac the Jacobians are forward differences (relative step
+    fd_step). Differences from SciPy: fun and fun_jac are called for one point at a time, with
+    SciPy's vectorised shapes for m = 1 (x (1,), y (n, 1)), so a vectorised SciPy function works
+    unchanged, and so does a pointwise one; the singular term S and `verbose` are not supported.
+    tol bounds each interval's relative RMS residual of the collocation polynomial, bc_tol
+    (default tol) the boundary residuals, max_nodes the mesh; max_newton_iterations (per mesh),
+    max_refinements, linear_solver ("block-lu" or "sparse-lu") are cartan's.
+
+    Failures to converge are reported in the result's status; invalid arguments raise ValueError;
+    an exception raised by a callback stops the solve and is re-raised unchanged.
+    """
+    return BvpResult(**_cartan._solve_bvp(fun, bc, x, y, p, fun_jac, bc_jac, tol, max_nodes, bc_tol,
+                                          max_newton_iterations, max_refinements, fd_step, linear_solver))

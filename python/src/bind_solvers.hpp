@@ -9,16 +9,21 @@
 //   single-shooting      augmented shooting from the guess only (no continuation)
 //   multiple-shooting    lifted LM over segments of the same scheme
 //   continuation-lambda  augmented shooting continued in lambda from lambda_start
-// Options have the CLI's names and defaults (apps/cartan): order, tol, max_iterations.
+//   collocation          fourth-order adaptive collocation of the continuous BVP (bvp/), for the
+//                        built-in natural Lagrangians (H3: the closed-form system; other groups:
+//                        the generic one), output at the final mesh or `samples` uniform times
+// Options have the CLI's names and defaults (apps/cartan): order, tol, max_iterations, samples.
 
 #include <array>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <pybind11/stl.h>
 
 #include "bind_models.hpp"
+#include "cartan/bvp/transported_solution.hpp"
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/multiple_shooting.hpp"
 #include "cartan/transported/two_level.hpp"
@@ -34,6 +39,8 @@ struct SolveRequest {
   std::optional<int> segments;        ///< multiple-shooting only
   std::optional<double> lambda_start;  ///< continuation-lambda only
   bool has_v0 = false, has_xi0 = false;
+  std::optional<int> samples;          ///< collocation only (0: the final mesh)
+  std::optional<int> max_nodes;        ///< collocation only
 
   SchemeOrder scheme_order() const { return order == 2 ? SchemeOrder::Second : SchemeOrder::First; }
   ShootingOptions shooting() const { return {.order = scheme_order(), .tolerance = tol, .max_iterations = max_iterations}; }
@@ -46,7 +53,38 @@ struct Guess {
 };
 
 /// Which optional inputs a method accepts.
-enum Accepts : unsigned { kNone = 0, kV0 = 1, kXi0 = 2, kSegments = 4, kLambdaStart = 8 };
+enum Accepts : unsigned { kNone = 0, kV0 = 1, kXi0 = 2, kSegments = 4, kLambdaStart = 8, kSamples = 16, kMaxNodes = 32 };
+
+/// Mesh limit of collocation when max_nodes is not given (as `cartan solve --method collocation`).
+inline constexpr int kCollocationMaxNodes = 20000;
+
+/// The potential V of a NaturalLagrangian<G, V> (void for any other Lagrangian).
+template <class L>
+struct NaturalPotentialOf {
+  using type = void;
+};
+template <LieGroup G, Potential<G> V>
+struct NaturalPotentialOf<NaturalLagrangian<G, V>> {
+  using type = V;
+};
+
+/// The transported BVP by collocation: on H3 the closed-form system (as the CLI), on other
+/// groups the generic one; both need mu = I v with a constant inertia (natural Lagrangians).
+template <LieGroup G, ReducedLagrangian<G> L>
+TransportedSolution<G> solve_by_collocation(const TransportedProblem<G, L>& p, const SolveRequest& r) {
+  const bvp::CollocationOptions options{.tol = r.tol, .max_nodes = r.max_nodes.value_or(kCollocationMaxNodes),
+                                        .max_newton_iterations = r.max_iterations};
+  using V = typename NaturalPotentialOf<L>::type;
+  if constexpr (std::is_void_v<V>) {
+    throw_invalid("cartan.solve", "method", "\"collocation\"",
+                  "needs a built-in natural Lagrangian (RigidBody, SO3Oscillator, H3Oscillator), "
+                  "not one written in Python (its Legendre map may depend on g)");
+  } else if constexpr (std::is_same_v<G, Heisenberg>) {
+    return bvp::solve_heisenberg_transported(p, options, r.samples.value_or(0));
+  } else {
+    return bvp::solve_transported_by_collocation(p, options, r.samples.value_or(0));
+  }
+}
 
 template <LieGroup G, ReducedLagrangian<G> L>
 struct Method {
@@ -65,9 +103,9 @@ inline const char* guess_branch(bool given) {
 }
 
 template <LieGroup G, ReducedLagrangian<G> L>
-const std::array<Method<G, L>, 5>& method_table() {
+const std::array<Method<G, L>, 6>& method_table() {
   using P = TransportedProblem<G, L>;
-  static const std::array<Method<G, L>, 5> table{{
+  static const std::array<Method<G, L>, 6> table{{
       {"two-level", kV0, [](const P& p, const SolveRequest& r, const Guess<G>& guess) {
          auto s = solve_two_level(p, {.order = r.scheme_order(), .tolerance = r.tol, .max_outer = r.max_iterations,
                                       .max_inner = r.max_iterations}, v0_or_geodesic(p, guess));
@@ -91,6 +129,9 @@ const std::array<Method<G, L>, 5>& method_table() {
        }},
       {"continuation-lambda", kLambdaStart, [](const P& p, const SolveRequest& r, const Guess<G>&) {
          return solve_continuation_in_lambda(p, r.lambda_start.value_or(0.0), {.shooting = r.shooting()});
+       }},
+      {"collocation", kSamples | kMaxNodes, [](const P& p, const SolveRequest& r, const Guess<G>&) {
+         return solve_by_collocation(p, r);
        }},
   }};
   return table;
@@ -162,8 +203,10 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
   group.def_static("_solve", [a](const py::object& model, double lambda, double T, int N, const py::object& g0,
                                  const py::object& gT, const std::string& method, int order, double tol,
                                  int max_iterations, std::optional<int> segments, std::optional<double> lambda_start,
-                                 const py::object& v0, const py::object& xi0) {
-    const SolveRequest request{method, order, tol, max_iterations, segments, lambda_start, !v0.is_none(), !xi0.is_none()};
+                                 const py::object& v0, const py::object& xi0, std::optional<int> samples,
+                                 std::optional<int> max_nodes) {
+    const SolveRequest request{method,   order,        tol,           max_iterations, segments,
+                               lambda_start, !v0.is_none(), !xi0.is_none(), samples,   max_nodes};
     Guess<G> guess;
     if (request.has_v0) guess.v0 = a.tangent(v0, "solve", "v0");
     if (request.has_xi0) guess.xi0 = a.tangent(xi0, "solve", "xi0");
@@ -177,7 +220,7 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
     return solution_dict(s, a.group, lambda, T, N);
   }, py::arg("lagrangian"), py::arg("lam"), py::arg("T"), py::arg("N"), py::arg("g0"), py::arg("gT"),
      py::arg("method"), py::arg("order"), py::arg("tol"), py::arg("max_iterations"), py::arg("segments"),
-     py::arg("lambda_start"), py::arg("v0"), py::arg("xi0"));
+     py::arg("lambda_start"), py::arg("v0"), py::arg("xi0"), py::arg("samples"), py::arg("max_nodes"));
 }
 
 }  // namespace cartan::python

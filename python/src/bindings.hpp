@@ -8,4 +8,5 @@ void bind_so3(pybind11::module_& m);
 void bind_heisenberg(pybind11::module_& m);
 void bind_se3(pybind11::module_& m);
 void bind_se2(pybind11::module_& m);
+void bind_bvp(pybind11::module_& m);  ///< solve_bvp and its dense output
 }  // namespace cartan::python

@@ -85,6 +85,8 @@ void check_request(const SolveRequest& request, const std::vector<std::string>& 
   refuse(request.has_xi0, kXi0, "xi0", "(given)");
   refuse(request.segments.has_value(), kSegments, "segments", std::to_string(request.segments.value_or(0)));
   refuse(request.lambda_start.has_value(), kLambdaStart, "lambda_start", format_value(request.lambda_start.value_or(0)));
+  refuse(request.samples.has_value(), kSamples, "samples", std::to_string(request.samples.value_or(0)));
+  refuse(request.max_nodes.has_value(), kMaxNodes, "max_nodes", std::to_string(request.max_nodes.value_or(0)));
 }
 
 }  // namespace cartan::python
@@ -95,4 +97,5 @@ PYBIND11_MODULE(_cartan, m) {
   cartan::python::bind_heisenberg(m);
   cartan::python::bind_se3(m);
   cartan::python::bind_se2(m);
+  cartan::python::bind_bvp(m);
 }

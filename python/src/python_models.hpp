@@ -12,7 +12,8 @@
 // rejected Levenberg–Marquardt step). A Python error is a bug in user code, not a numerical
 // outcome, so the first one is kept in the shared CallbackState, every later callback fails at
 // once, and the binding re-raises the original exception after the solver returns
-// (rethrow_callback_error). Callbacks run with the GIL held.
+// (guarded_callback, run_with_callbacks; cartan.solve_bvp's callbacks use the same two).
+// Callbacks run with the GIL held.
 
 #include <exception>
 #include <memory>
@@ -36,6 +37,35 @@ struct CallbackState {
 
 /// Re-raises the first callback error, if any (a Python exception keeps its type and traceback).
 void rethrow_callback_error(const CallbackState& state);
+
+/// Runs one callback f() on behalf of `who` ("Lagrangian.momentum"), recording its first
+/// exception in `state`; once one is recorded, every later callback fails at once.
+template <class F>
+auto guarded_callback(CallbackState& state, const std::string& who, F&& f) {
+  if (state.first_error) throw std::runtime_error(who + ": an earlier callback failed");
+  try {
+    return f();
+  } catch (...) {
+    state.first_error = std::current_exception();
+    throw;
+  }
+}
+
+/// Runs a solver f() whose callbacks are guarded by `state` and returns its result; the first
+/// callback error, if any, is re-raised in place of whatever the solver made of it.
+template <class F>
+auto run_with_callbacks(const CallbackState& state, F&& f) {
+  using R = decltype(f());
+  std::optional<R> result;
+  try {
+    result.emplace(f());
+  } catch (...) {
+    rethrow_callback_error(state);
+    throw;
+  }
+  rethrow_callback_error(state);
+  return std::move(*result);
+}
 
 /// Converts a callback's return value; `where` names the method ("Lagrangian.momentum").
 template <class R>
@@ -76,13 +106,10 @@ class PythonModel {
   /// Calls method `index` with (t, g, x) and converts the result to R, recording failures.
   template <class R, class E, class X>
   R call(std::size_t index, double t, const E& g, const X& x) const {
-    if (state_->first_error) throw std::runtime_error(kind_ + ": an earlier callback failed");
-    try {
-      return FromPython<R>::convert(methods_[index](t, to_numpy(g), to_numpy(x)), kind_ + "." + names_[index]);
-    } catch (...) {
-      state_->first_error = std::current_exception();
-      throw;
-    }
+    const std::string who = kind_ + "." + names_[index];
+    return guarded_callback(*state_, who, [&] {
+      return FromPython<R>::convert(methods_[index](t, to_numpy(g), to_numpy(x)), who);
+    });
   }
 
  private:
@@ -149,15 +176,7 @@ auto visit_model(const py::handle& object, F&& f) {
   (void)try_one;  // no built-in models for this group
   if (out) return std::move(*out);
   const Fallback model(py::reinterpret_borrow<py::object>(object));
-  std::optional<R> result;
-  try {
-    result.emplace(f(model));
-  } catch (...) {
-    rethrow_callback_error(model.state());
-    throw;
-  }
-  rethrow_callback_error(model.state());
-  return std::move(*result);
+  return run_with_callbacks(model.state(), [&] { return f(model); });
 }
 
 }  // namespace cartan::python

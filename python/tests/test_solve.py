@@ -166,8 +166,9 @@ def test_every_method_reaches_the_same_discrete_solution():
     assert results["multiple-shooting"].method == "multiple-shooting"
     assert results["continuation-lambda"].branch.startswith("continued in lambda from lambda = 0")
     assert results["guess"].branch == "from the given guess" and results["guess"].inner_iterations <= 1
+    # "collocation" solves the continuous problem, not the discrete one: tested in test_bvp.py.
     assert set(cartan.METHODS) == {"two-level", "shooting", "single-shooting", "multiple-shooting",
-                                   "continuation-lambda"}
+                                   "continuation-lambda", "collocation"}
 
 
 def test_failure_is_a_result_not_an_exception():

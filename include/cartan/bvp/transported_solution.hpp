@@ -1,0 +1,124 @@
+#pragma once
+// The collocation solution of the transported-velocity BVP (eq:reduced-system) in the form the
+// shooting solvers return (TransportedSolution, transported/solution.hpp): g, v, mu, xi at the
+// final mesh or at uniform output times, read from the solution's cubic interpolant. One
+// function per formulation: the closed-form H3 system (heisenberg_transported.hpp, xi integrated
+// along the solution) and the generic one (transported_collocation.hpp, xi a state).
+
+#include <chrono>
+#include <functional>
+#include <string>
+
+#include "cartan/bvp/heisenberg_transported.hpp"
+#include "cartan/bvp/transported_collocation.hpp"
+#include "cartan/errors.hpp"
+#include "cartan/transported/solution.hpp"
+
+namespace cartan::bvp {
+
+/// The collocation scheme's order (Lobatto IIIA, collocation.hpp), reported as `order`.
+inline constexpr int kCollocationOrder = 4;
+
+/// Throws std::invalid_argument unless samples is 0 or at least 2 (as `cartan solve --samples`).
+inline void check_samples(int samples) {
+  if (samples < 0 || samples == 1) {
+    throw_invalid("collocation", "samples", std::to_string(samples),
+                  "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");
+  }
+}
+
+/// Output times: the final mesh (samples == 0) or `samples` uniform times on [0, T].
+inline Eigen::VectorXd output_times(const BvpResult& result, int samples, double T) {
+  return samples == 0 ? result.t : Eigen::VectorXd::LinSpaced(samples, 0, T);
+}
+
+/// The transported state (g, v, xi) at output time j, given the interpolated state y there.
+template <LieGroup G>
+struct TransportedState {
+  ElementOf<G> g;
+  TangentOf<G> v;
+  CovectorOf<G> xi;
+};
+template <LieGroup G>
+using StateReader = std::function<TransportedState<G>(Eigen::Index j, const Eigen::VectorXd& y)>;
+
+/// The solution at `times` with mu = momentum(t, g, v), the endpoint errors |log(gT^{-1} g(T))|
+/// and |xi(T)| (times must end at T), and the counters: outer = mesh refinements, inner = Newton
+/// iterations, sweeps = Jacobian evaluations (as `cartan solve --method collocation`).
+template <LieGroup G, ReducedLagrangian<G> L>
+TransportedSolution<G> collocation_solution(const TransportedProblem<G, L>& problem, const BvpResult& result,
+                                            const Eigen::VectorXd& times, const StateReader<G>& read) {
+  TransportedSolution<G> s;
+  s.converged = result.success();
+  s.status = s.converged ? "converged" : std::string(to_string(result.status));
+  s.message = result.message;
+  s.method = "collocation";
+  s.branch = "direct from the geodesic guess on a uniform mesh of N intervals";
+  s.order = kCollocationOrder;
+  const CubicHermite interpolant = result.interpolant();
+  auto& tr = s.trajectory;
+  tr.reserve(static_cast<std::size_t>(times.size()));
+  for (Eigen::Index j = 0; j < times.size(); ++j) {
+    const TransportedState<G> x = read(j, interpolant.value(times[j]));
+    tr.t.push_back(times[j]);
+    tr.g.push_back(x.g);
+    tr.v.push_back(x.v);
+    tr.mu.push_back(problem.lagrangian.momentum(times[j], x.g, x.v));
+    tr.xi.push_back(x.xi);
+  }
+  if (!tr.t.empty()) {
+    s.v0 = tr.v.front();
+    s.xi0 = tr.xi.front();
+    s.terminal_error = G::log(G::compose(G::inverse(problem.gT), tr.g.back())).norm();
+    s.xi_terminal = tr.xi.back().norm();
+  }
+  s.outer_iterations = result.refinements;
+  s.inner_iterations = result.newton_iterations;
+  s.sweeps = result.jacobian_evaluations;
+  return s;
+}
+
+/// Seconds spent in f().
+template <class F>
+auto timed(double& seconds, F&& f) {
+  const auto start = std::chrono::steady_clock::now();
+  auto out = f();
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+/// H3 by the closed-form system (solve_heisenberg_collocation), xi by exact quadrature.
+template <Potential<Heisenberg> V>
+TransportedSolution<Heisenberg> solve_heisenberg_transported(const HeisenbergNaturalProblem<V>& problem,
+                                                             const CollocationOptions& options, int samples) {
+  check_samples(samples);
+  double seconds = 0;
+  const BvpResult r = timed(seconds, [&] { return solve_heisenberg_collocation(problem, options); });
+  const Eigen::VectorXd times = output_times(r, samples, problem.T);
+  const Eigen::MatrixXd xi = heisenberg_xi(problem, r, times);
+  auto s = collocation_solution<Heisenberg>(problem, r, times, [&](Eigen::Index j, const Eigen::VectorXd& y) {
+    return TransportedState<Heisenberg>{y.head<3>(), y.segment<3>(3), xi.col(j)};
+  });
+  s.solve_time_s = seconds;
+  return s;
+}
+
+/// Any group by the generic system (TransportedCollocation), xi read from the state.
+template <LieGroup G, Potential<G> V>
+TransportedSolution<G> solve_transported_by_collocation(
+    const TransportedProblem<G, NaturalLagrangian<G, V>>& problem, const CollocationOptions& options, int samples) {
+  using C = TransportedCollocation<G, V>;
+  check_samples(samples);
+  double seconds = 0;
+  const BvpResult r = timed(seconds, [&] { return C::solve(problem, options); });
+  auto s = collocation_solution<G>(problem, r, output_times(r, samples, problem.T),
+                                   [](Eigen::Index, const Eigen::VectorXd& y) {
+                                     return TransportedState<G>{C::element(y, C::kG),
+                                                                y.template segment<C::kDim>(C::kV),
+                                                                y.template segment<C::kDim>(C::kXi)};
+                                   });
+  s.solve_time_s = seconds;
+  return s;
+}
+
+}  // namespace cartan::bvp

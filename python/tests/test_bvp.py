@@ -1,0 +1,291 @@
+"""Collocation from Python: cartan.solve_bvp against scipy.integrate.solve_bvp and closed forms,
+its failure statuses and errors, and cartan.solve(method="collocation") against the CLI and the
+shooting solvers.
+
+Tolerances (theory; measured values are printed with pytest -s):
+* solve_bvp vs a closed form: both cartan and SciPy control the relative RMS residual of the
+  collocation cubic per interval (<= tol); the global error is that residual propagated by the
+  problem's Green's function, of size tol times an O(1) constant here. We require 10 tol.
+* Order 4: on a uniform mesh frozen by max_nodes = m (refinement is refused, Newton still
+  converges to the tolerance 1e-12), the nodal error of the three-stage Lobatto IIIA scheme is
+  O(h^4); halving h divides it by 16, log2 ratio 4 within 0.3 (the asymptotic constant).
+* Mathieu eigenvalue: at tol 1e-6 both cartan and SciPy give the eigenvalue to about tol / 10
+  relative (measured: cartan 4.6e-9 from scipy.special.mathieu_a); we require 1e-7 against both,
+  and the eigenfunctions (|y| <= 4, |y'| <= 20) within 1e-5.
+* Module vs CLI: the same C++ code on the same inputs; the JSON round trip keeps 17 digits: 1e-10
+  (measured: 0, bit for bit).
+* Collocation vs shooting: collocation at tol 1e-10 is the continuous solution to ~1e-11; the
+  order-2 scheme differs from it by C h^2, so the difference shrinks by 4 when N doubles: log2
+  ratio 2 within 0.25, as tests/bvp/test_transported_collocation.cpp.
+"""
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+import scipy.integrate
+import scipy.special
+
+import cartan
+
+ROOT = Path(__file__).resolve().parents[2]
+CARTAN_BIN = os.environ.get("CARTAN_BIN", str(ROOT / "build" / "cartan"))
+
+
+# y'' = 3/2 y^2, y(0) = 4, y(1) = 1 (Ascher, Mattheij & Russell): one solution is 4 / (1 + x)^2.
+def ascher_fun(x, y):
+    return np.vstack((y[1], 1.5 * y[0] ** 2))
+
+
+def ascher_bc(ya, yb):
+    return np.array([ya[0] - 4, yb[0] - 1])
+
+
+def ascher_exact(x):
+    return np.vstack((4 / (1 + x) ** 2, -8 / (1 + x) ** 3))
+
+
+def ascher_guess(m):
+    x = np.linspace(0, 1, m)
+    return x, np.vstack((4 - 3 * x, -3 * np.ones_like(x)))
+
+
+def test_closed_form_and_scipy_agree():
+    x, y = ascher_guess(5)
+    tol = 1e-6
+    r = cartan.solve_bvp(ascher_fun, ascher_bc, x, y, tol=tol)
+    s = scipy.integrate.solve_bvp(ascher_fun, ascher_bc, x, y, tol=tol)
+    assert r.success and r.status == 0 and r.status_name == "success" and s.success
+    grid = np.linspace(0, 1, 101)
+    error = np.abs(r.sol(grid) - ascher_exact(grid)).max()
+    versus_scipy = np.abs(r.sol(grid) - s.sol(grid)).max()
+    print(f"\nAscher: cartan error {error:.2e}, SciPy error {np.abs(s.sol(grid) - ascher_exact(grid)).max():.2e}, "
+          f"difference {versus_scipy:.2e}; meshes {r.x.size} / {s.x.size}")
+    assert error < 10 * tol and versus_scipy < 20 * tol
+    assert r.y.shape == (2, r.x.size) and r.yp.shape == r.y.shape and r.rms_residuals.shape == (r.x.size - 1,)
+    assert r.p is None and r.niter >= 1 and r.rms_residuals.max() <= tol
+    np.testing.assert_allclose(r.yp, ascher_fun(r.x, r.y), rtol=1e-14)  # yp = f at the nodes
+    np.testing.assert_allclose(r.sol(r.x), r.y, atol=1e-14)  # the dense output interpolates the nodes
+    np.testing.assert_allclose(r.sol(0.5), r.sol(np.array([0.5]))[:, 0], atol=0)  # scalar -> (n,)
+    np.testing.assert_allclose(r.sol(grid, 1), ascher_fun(grid, r.sol(grid)), atol=20 * tol)  # S' ~ f
+
+
+def test_fourth_order_on_frozen_meshes():
+    errors = []
+    for m in (11, 21, 41):
+        x, y = ascher_guess(m)
+        r = cartan.solve_bvp(ascher_fun, ascher_bc, x, y, tol=1e-12, max_nodes=m)
+        assert r.status in (0, 1) and r.x.size == m, r.message  # the mesh is not refined
+        errors.append(np.abs(r.y - ascher_exact(r.x)).max())
+    rates = np.log2(np.array(errors[:-1]) / np.array(errors[1:]))
+    print(f"\nnodal errors {errors}, log2 ratios {rates}")
+    assert np.all(np.abs(rates - 4) < 0.3)
+
+
+# The Mathieu equation y'' + (k - 2 q cos 2x) y = 0 on [0, pi], y'(0) = y'(pi) = 0, normalised by
+# y(0) = 1; k is the unknown parameter (the eigenvalue a_4(q), from the guess cos 4x).
+Q = 5.0
+
+
+def mathieu_fun(x, y, p):
+    return np.vstack((y[1], -(p[0] - 2 * Q * np.cos(2 * x)) * y[0]))
+
+
+def mathieu_bc(ya, yb, p):
+    return np.array([ya[0] - 1, ya[1], yb[1]])
+
+
+def mathieu_fun_jac(x, y, p):
+    df_dy = np.array([[np.zeros_like(x), np.ones_like(x)], [-(p[0] - 2 * Q * np.cos(2 * x)), np.zeros_like(x)]])
+    df_dp = np.array([[np.zeros_like(x)], [-y[0]]])
+    return df_dy, df_dp
+
+
+def mathieu_bc_jac(ya, yb, p):
+    dya = np.array([[1.0, 0], [0, 1], [0, 0]])
+    dyb = np.array([[0.0, 0], [0, 0], [0, 1]])
+    return dya, dyb, np.zeros((3, 1))
+
+
+@pytest.mark.parametrize("jacobians", [False, True])
+def test_mathieu_eigenvalue(jacobians):
+    x = np.linspace(0, np.pi, 5)
+    y = np.vstack((np.cos(4 * x), -4 * np.sin(4 * x)))
+    extra = dict(fun_jac=mathieu_fun_jac, bc_jac=mathieu_bc_jac) if jacobians else {}
+    r = cartan.solve_bvp(mathieu_fun, mathieu_bc, x, y, p=[15], tol=1e-6, **extra)
+    s = scipy.integrate.solve_bvp(mathieu_fun, mathieu_bc, x, y, p=[15], tol=1e-6, **extra)
+    exact = scipy.special.mathieu_a(4, Q)
+    print(f"\nMathieu a_4({Q}): cartan {r.p[0]:.12f}, SciPy {s.p[0]:.12f}, scipy.special {exact:.12f}; "
+          f"fun calls {r.rhs_evaluations}")
+    assert r.success, r.message
+    assert r.p.shape == (1,)
+    assert r.p[0] == pytest.approx(exact, rel=1e-7) and r.p[0] == pytest.approx(s.p[0], rel=1e-7)
+    grid = np.linspace(0, np.pi, 50)
+    np.testing.assert_allclose(r.sol(grid), s.sol(grid), atol=1e-5)
+
+
+def test_analytic_jacobians_save_calls_but_not_accuracy():
+    x = np.linspace(0, np.pi, 5)
+    y = np.vstack((np.cos(4 * x), -4 * np.sin(4 * x)))
+    fd = cartan.solve_bvp(mathieu_fun, mathieu_bc, x, y, p=[15], tol=1e-6)
+    exact = cartan.solve_bvp(mathieu_fun, mathieu_bc, x, y, p=[15], tol=1e-6, fun_jac=mathieu_fun_jac,
+                             bc_jac=mathieu_bc_jac)
+    assert fd.success and exact.success
+    # Forward differences (error ~1e-8 relative) perturb Newton's path and so possibly the mesh,
+    # not the continuous solution: both are within ~tol / 10 of the eigenvalue (see above).
+    assert exact.p[0] == pytest.approx(fd.p[0], rel=1e-7)
+    print(f"\nfun calls: {fd.rhs_evaluations} with forward differences, {exact.rhs_evaluations} with fun_jac")
+    assert exact.rhs_evaluations < fd.rhs_evaluations
+
+
+def test_pointwise_functions_work_too():
+    r = cartan.solve_bvp(lambda x, y: [y[1], 1.5 * y[0] ** 2], lambda ya, yb: [ya[0] - 4, yb[0] - 1],
+                         *ascher_guess(5), tol=1e-6)
+    assert r.success and np.abs(r.sol(0.25) - ascher_exact(np.array([0.25]))[:, 0]).max() < 1e-5
+
+
+def test_max_nodes_exceeded_is_a_status():
+    r = cartan.solve_bvp(ascher_fun, ascher_bc, *ascher_guess(5), tol=1e-10, max_nodes=8)
+    assert not r.success and r.status == 1 and r.status_name == "max-nodes-exceeded"
+    assert "max-nodes-exceeded" in r.message and r.x.size <= 8
+
+
+def test_singular_jacobian_is_a_status():
+    # y' = 0 with an unknown parameter p that neither f nor bc depends on: the collocation
+    # Jacobian has a zero column for p (and y(0) = 1, y(1) = 0 are inconsistent anyway).
+    r = cartan.solve_bvp(lambda x, y, p: np.zeros((1, 1)), lambda ya, yb, p: np.array([ya[0] - 1, yb[0]]),
+                         np.linspace(0, 1, 4), np.zeros((1, 4)), p=[1.0])
+    assert not r.success and r.status == 2 and r.status_name == "singular-jacobian", r.message
+
+
+class CallbackError(Exception):
+    pass
+
+
+@pytest.mark.parametrize("where", ["fun", "bc", "fun_jac"])
+def test_callback_exception_propagates(where):
+    calls = {"n": 0}
+
+    def fail_later(f):
+        def wrapped(*args):
+            calls["n"] += 1
+            if calls["n"] > 3:
+                raise CallbackError(f"raised in {where}")
+            return f(*args)
+        return wrapped
+
+    fun = fail_later(ascher_fun) if where == "fun" else ascher_fun
+    bc = fail_later(ascher_bc) if where == "bc" else ascher_bc
+    jac = (lambda x, y: np.array([[0.0, 1], [3 * y[0, 0], 0]]))
+    fun_jac = fail_later(jac) if where == "fun_jac" else jac
+    with pytest.raises(CallbackError, match=f"raised in {where}"):
+        cartan.solve_bvp(fun, bc, *ascher_guess(5), fun_jac=fun_jac)
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    (dict(x=[0, 1, 1, 2]), r"t = .* is not strictly increasing"),  # the C++ library names the mesh t
+    (dict(x=np.zeros((4, 1))), r"x = array of shape \(4, 1\) must be 1-D"),
+    (dict(y=np.zeros((2, 3))), r"y = .*"),
+    (dict(y=np.zeros(4)), r"y = array of shape \(4,\) must be 2-D"),
+    (dict(p=[[1.0]]), r"p = array of shape \(1, 1\) must be 1-D"),
+    (dict(tol=-1), r"tol = -1 must be positive"),
+    (dict(bc_tol=0), r"bc_tol = 0 must be positive"),
+    (dict(max_nodes=1), r"max_nodes = 1 must be at least 2"),
+    (dict(linear_solver="qr"), r"linear_solver = \"qr\" is not one of"),
+    (dict(fun=lambda x, y: np.zeros(3)), r"solve_bvp: fun: return value = array of shape \(3,\) must have shape \(2,\)"),
+    (dict(bc=lambda ya, yb: np.zeros(1)), r"solve_bvp: bc: return value = array of shape \(1,\) must have shape \(2,\)"),
+    (dict(bc_jac=lambda ya, yb: np.eye(3)), r"bc_jac: return value = .* must be a sequence of 2 arrays"),
+])
+def test_bad_arguments_raise_value_error(kwargs, message):
+    x, y = ascher_guess(4)
+    args = dict(fun=ascher_fun, bc=ascher_bc, x=x, y=y)
+    args.update(kwargs)
+    with pytest.raises(ValueError, match=message):
+        cartan.solve_bvp(**args)
+
+
+# --- The transported problem by collocation (cartan.solve(method="collocation")) ---------------
+
+H3 = dict(lam=0.5, T=1.0, g0=[0.3, -0.2, 0.5], gT=[1.0, 0.5, 0.8])
+
+
+def cli(*args):
+    out = subprocess.run([CARTAN_BIN, "solve", *args], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    return json.loads(out.stdout)
+
+
+@pytest.mark.parametrize("samples", [0, 11])
+def test_h3_collocation_matches_cli(samples):
+    d = cli("--group", "heisenberg", "--model", "oscillator", "--method", "collocation", "--lambda", "0.5", "--T",
+            "1", "--N", "20", "--g0", "0.3,-0.2,0.5", "--gT", "1,0.5,0.8", "--samples", str(samples))
+    r = cartan.solve(cartan.H3Oscillator(), N=20, method="collocation", samples=samples, **H3)
+    assert r.success and r.status == d["status"] == "converged"
+    assert (r.method, r.order, r.branch) == (d["method"], d["order"], d["branch"]) == (r.method, 4, r.branch)
+    assert (r.outer_iterations, r.inner_iterations, r.sweeps) == tuple(d["iterations"][k] for k in ("outer", "inner", "sweeps"))
+    assert r.t.size == (d["mesh_size"] if samples == 0 else samples)
+    worst = max(np.abs(getattr(r, key) - np.array(d[key])).max() for key in ("t", "g", "v", "mu", "xi"))
+    print(f"\nH3 module vs CLI (samples={samples}): {worst:.1e}")
+    assert worst <= 1e-10
+    assert r.terminal_error == pytest.approx(d["terminal_error"], abs=1e-12)
+    assert r.xi_terminal == pytest.approx(d["xi_terminal"], abs=1e-12)
+
+
+def transported_difference(c, s):
+    return max(np.abs(c.g - s.g).max(), np.abs(c.v - s.v).max(), np.abs(c.xi - s.xi).max())
+
+
+def order_against_shooting(model, N_values=(50, 100, 200), **problem):
+    differences = []
+    for N in N_values:
+        c = cartan.solve(model, N=N, method="collocation", tol=1e-10, samples=N + 1, **problem)
+        s = cartan.solve(model, N=N, order=2, tol=1e-13, **problem)
+        assert c.success and s.success, (c.message, s.message)
+        np.testing.assert_allclose(c.t, s.t, atol=1e-14)
+        differences.append(transported_difference(c, s))
+    rates = np.log2(np.array(differences[:-1]) / np.array(differences[1:]))
+    print(f"\n{type(model).__name__} {problem.get('lam')}: differences {differences}, log2 ratios {rates}")
+    return rates
+
+
+def test_h3_collocation_matches_shooting_at_the_schemes_order():
+    rates = order_against_shooting(cartan.H3Oscillator(), **H3)
+    assert np.all(np.abs(rates - 2) < 0.25)
+
+
+A0, AT = np.array([-1.0, -1, -1]), np.array([0.9, 1.0, 1.0])
+
+
+@pytest.mark.parametrize("lam", [0.0, 0.5, 1.0])
+def test_so3_free_body_collocation_matches_shooting_at_the_schemes_order(lam):
+    gT = cartan.SO3.minimal_rotation(A0, AT)
+    rates = order_against_shooting(cartan.RigidBody([2.0, 3.0, 4.0]), lam=lam, T=5.0, gT=gT)
+    assert np.all(np.abs(rates - 2) < 0.25)
+
+
+def test_so3_oscillator_collocation_matches_shooting_at_the_schemes_order():
+    gT = cartan.SO3.minimal_rotation(np.array([-0.7, -1.0, -0.7]), np.array([0.8, 0.8, 1.0]))
+    rates = order_against_shooting(cartan.SO3Oscillator([2.0, 3.0, 4.0]), lam=0.5, T=3.0, gT=gT)
+    assert np.all(np.abs(rates - 2) < 0.25)
+
+
+def test_collocation_options_and_refusals():
+    with pytest.raises(ValueError, match="samples"):
+        cartan.solve(cartan.H3Oscillator(), N=10, method="collocation", samples=1, **H3)
+    with pytest.raises(ValueError, match="samples"):  # not an option of the shooting methods
+        cartan.solve(cartan.H3Oscillator(), N=10, samples=5, **H3)
+
+    class PyModel:  # a Python Lagrangian: collocation needs a built-in natural one
+        group = cartan.Heisenberg
+
+        def value(self, t, g, v): return 0.5 * v @ v
+        def momentum(self, t, g, v): return v
+        def group_gradient(self, t, g, v): return np.zeros(3)
+        def velocity(self, t, g, mu): return mu
+
+    with pytest.raises(ValueError, match="collocation"):
+        cartan.solve(PyModel(), N=10, method="collocation", **H3)
+    r = cartan.solve(cartan.H3Oscillator(), N=4, method="collocation", tol=1e-12, max_nodes=6, **H3)
+    assert not r.success and r.status == "max-nodes-exceeded", r.message
