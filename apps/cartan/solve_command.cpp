@@ -6,7 +6,7 @@
 #include "cartan/transported/multiple_shooting.hpp"
 #include "cartan/transported/two_level.hpp"
 #include "collocation_command.hpp"
-#include "json_rows.hpp"
+#include "solution_json.hpp"
 
 namespace cartan::cli {
 
@@ -51,18 +51,7 @@ nlohmann::json run(const ProblemSpec& spec, const TransportedProblem<G, L>& prob
     }
     s.method = "shooting";
   }
-  const auto& tr = s.trajectory;
-  nlohmann::json out = result_header(spec, s.status, s.message, s.method, spec.order, s.branch);
-  out["t"] = tr.t;
-  out["g"] = rows(tr.g);
-  out["v"] = rows(tr.v);
-  out["mu"] = rows(tr.mu);
-  out["xi"] = rows(tr.xi);
-  out["terminal_error"] = s.terminal_error;
-  out["xi_terminal"] = s.xi_terminal;
-  out["iterations"] = {{"outer", s.outer_iterations}, {"inner", s.inner_iterations}, {"sweeps", s.sweeps}};
-  out["solve_time_s"] = s.solve_time_s;
-  return out;
+  return solution_json(spec, s, spec.order);
 }
 
 }  // namespace

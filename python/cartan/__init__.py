@@ -191,7 +191,10 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="shooting", order=1, tol
                             (default 0: the final mesh; else >= 2 uniform times on [0, T]) and
                             `max_nodes` (default 20000). H3Oscillator uses the closed-form H3 system
                             (xi by exact quadrature), RigidBody and SO3Oscillator the generic one with
-                            g and the transport as states (g leaves SO(3) by the discretisation error).
+                            g and the transport as states (g leaves SO(3) by the discretisation error);
+                            for these, when Newton from the geodesic guess fails on the N-interval
+                            mesh, it starts again from the order-2 shooting solution continued in T
+                            (as the CLI's default --continuation T; `branch` says so).
                             Built-in models only; `order` is unused (the method has order 4).
     v0, xi0: initial guesses where accepted (default: the geodesic guess log(g0^-1 gT)/T and 0).
     """

@@ -82,7 +82,8 @@ TransportedSolution<G> solve_by_collocation(const TransportedProblem<G, L>& p, c
   } else if constexpr (std::is_same_v<G, Heisenberg>) {
     return bvp::solve_heisenberg_transported(p, options, r.samples.value_or(0));
   } else {
-    return bvp::solve_transported_by_collocation(p, options, r.samples.value_or(0));
+    return bvp::solve_transported_by_collocation(p, options, r.samples.value_or(0),
+                                                 bvp::CollocationFallback::ContinuationInT);
   }
 }
 

@@ -12,6 +12,7 @@
 #include "cartan/bvp/heisenberg_transported.hpp"
 #include "cartan/bvp/transported_collocation.hpp"
 #include "cartan/errors.hpp"
+#include "cartan/transported/continuation.hpp"
 #include "cartan/transported/solution.hpp"
 
 namespace cartan::bvp {
@@ -87,10 +88,12 @@ auto timed(double& seconds, F&& f) {
   return out;
 }
 
-/// H3 by the closed-form system (solve_heisenberg_collocation), xi by exact quadrature.
+/// H3 by the closed-form system (solve_heisenberg_collocation), xi by exact quadrature. `raw`,
+/// when given, receives the collocation result itself (mesh, residuals).
 template <Potential<Heisenberg> V>
 TransportedSolution<Heisenberg> solve_heisenberg_transported(const HeisenbergNaturalProblem<V>& problem,
-                                                             const CollocationOptions& options, int samples) {
+                                                             const CollocationOptions& options, int samples,
+                                                             BvpResult* raw = nullptr) {
   check_samples(samples);
   double seconds = 0;
   const BvpResult r = timed(seconds, [&] { return solve_heisenberg_collocation(problem, options); });
@@ -100,24 +103,68 @@ TransportedSolution<Heisenberg> solve_heisenberg_transported(const HeisenbergNat
     return TransportedState<Heisenberg>{y.head<3>(), y.segment<3>(3), xi.col(j)};
   });
   s.solve_time_s = seconds;
+  if (raw != nullptr) *raw = r;
   return s;
 }
 
-/// Any group by the generic system (TransportedCollocation), xi read from the state.
+/// What the generic collocation does when Newton from the geodesic guess does not converge on
+/// the problem's N-interval mesh (long horizons, e.g. the paper's T = 12 oscillator): nothing
+/// (report the adaptive solve from the geodesic guess), or start again from the order-2 shooting
+/// solution found by continuation in T or in lambda (from lambda = 0), whose solution branch the
+/// collocation then refines to the continuous solution; `branch` says which.
+enum class CollocationFallback { None, ContinuationInT, ContinuationInLambda };
+
+/// Any group by the generic system (TransportedCollocation), xi read from the state. With a
+/// fallback, Newton from the geodesic guess must first converge on the N-interval mesh: otherwise
+/// the adaptive solver would refine a guess outside Newton's basin up to max_nodes (measured: 9 s
+/// of 10 on the T = 12 oscillator) before the fallback could start. `raw`, when given, receives
+/// the collocation result itself (mesh, residuals).
 template <LieGroup G, Potential<G> V>
-TransportedSolution<G> solve_transported_by_collocation(
-    const TransportedProblem<G, NaturalLagrangian<G, V>>& problem, const CollocationOptions& options, int samples) {
+TransportedSolution<G> solve_transported_by_collocation(const TransportedProblem<G, NaturalLagrangian<G, V>>& problem,
+                                                        const CollocationOptions& options, int samples,
+                                                        CollocationFallback fallback = CollocationFallback::None,
+                                                        BvpResult* raw = nullptr) {
   using C = TransportedCollocation<G, V>;
   check_samples(samples);
+  problem.validate();
   double seconds = 0;
-  const BvpResult r = timed(seconds, [&] { return C::solve(problem, options); });
+  std::string branch = "direct from the geodesic guess on a uniform mesh of N intervals";
+  const BvpResult r = timed(seconds, [&] {
+    if (fallback == CollocationFallback::None) return C::solve(problem, options);
+    const BvpSystem system = C::system(problem);
+    Eigen::VectorXd t;
+    Eigen::MatrixXd y;
+    C::geodesic_guess(problem, t, y);
+    BvpResult first = solve_collocation_on_mesh(system, t, y, Eigen::VectorXd(0), options);
+    if (first.success()) {
+      BvpResult refined = solve_collocation(system, first, options);
+      refined.newton_iterations += first.newton_iterations;
+      refined.jacobian_evaluations += first.jacobian_evaluations;
+      return refined;
+    }
+    const ContinuationOptions continuation{
+        .shooting = {.order = SchemeOrder::Second, .tolerance = options.tol, .max_iterations = options.max_newton_iterations}};
+    const TransportedSolution<G> shooting = fallback == CollocationFallback::ContinuationInLambda
+                                                ? solve_continuation_in_lambda(problem, 0.0, continuation)
+                                                : solve_continuation_in_T(problem, continuation);
+    if (!shooting.converged) {
+      first.message += "; the order-2 shooting fallback failed too: " + shooting.message;
+      return first;
+    }
+    branch = "from the order-2 shooting solution (" + shooting.branch +
+             ") after Newton from the geodesic guess failed on the N-interval mesh";
+    C::guess_from(problem, shooting.trajectory, t, y);
+    return solve_collocation(system, t, y, Eigen::VectorXd(0), options);
+  });
   auto s = collocation_solution<G>(problem, r, output_times(r, samples, problem.T),
                                    [](Eigen::Index, const Eigen::VectorXd& y) {
                                      return TransportedState<G>{C::element(y, C::kG),
                                                                 y.template segment<C::kDim>(C::kV),
                                                                 y.template segment<C::kDim>(C::kXi)};
                                    });
+  s.branch = branch;
   s.solve_time_s = seconds;
+  if (raw != nullptr) *raw = r;
   return s;
 }
 

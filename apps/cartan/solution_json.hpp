@@ -1,0 +1,50 @@
+#pragma once
+// A TransportedSolution as the JSON of the CLI contract (README.md): trajectories as rows, an
+// SO(3) element as 9 numbers row-major, a 3-vector (a Heisenberg element, v, mu, xi) as 3 numbers.
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "cartan/transported/solution.hpp"
+#include "problem_spec.hpp"
+
+namespace cartan::cli {
+
+inline nlohmann::json row_major(const Eigen::Matrix3d& m) {
+  return {m(0, 0), m(0, 1), m(0, 2), m(1, 0), m(1, 1), m(1, 2), m(2, 0), m(2, 1), m(2, 2)};
+}
+
+inline nlohmann::json rows(const std::vector<Eigen::Matrix3d>& g) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& m : g) out.push_back(row_major(m));
+  return out;
+}
+
+template <class Vec>
+nlohmann::json rows(const std::vector<Vec>& x) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& v : x) out.push_back({v[0], v[1], v[2]});
+  return out;
+}
+
+/// Every key of a `cartan solve` result: result_header, the trajectory (t, g, v, mu, xi) and
+/// the diagnostics (terminal_error, xi_terminal, iterations, solve_time_s). `order` is the
+/// scheme's order (1 or 2 for the discrete schemes, 4 for collocation).
+template <LieGroup G>
+nlohmann::json solution_json(const ProblemSpec& spec, const TransportedSolution<G>& s, int order) {
+  const auto& tr = s.trajectory;
+  nlohmann::json out = result_header(spec, s.status, s.message, s.method, order, s.branch);
+  out["t"] = tr.t;
+  out["g"] = rows(tr.g);
+  out["v"] = rows(tr.v);
+  out["mu"] = rows(tr.mu);
+  out["xi"] = rows(tr.xi);
+  out["terminal_error"] = s.terminal_error;
+  out["xi_terminal"] = s.xi_terminal;
+  out["iterations"] = {{"outer", s.outer_iterations}, {"inner", s.inner_iterations}, {"sweeps", s.sweeps}};
+  out["solve_time_s"] = s.solve_time_s;
+  return out;
+}
+
+}  // namespace cartan::cli
