@@ -14,3 +14,13 @@ def test_python_tour_runs():
     assert "same solution as the built-in model: True" in out.stdout
     assert "status='converged'" in out.stdout
     assert "transport P(0 -> 1) is orthogonal: True" in out.stdout
+
+
+def test_custom_lagrangian_example_passes_its_checks():
+    """examples/custom_lagrangian.py (docs/user-guide.md): a Python Lagrangian on SE(2); the script
+    exits non-zero when one of its own checks fails (hessian, convergence, agreement, lambda = 0 limit)."""
+    out = subprocess.run([sys.executable, str(ROOT / "examples" / "custom_lagrangian.py")], capture_output=True,
+                         text=True, timeout=600, env=dict(os.environ))
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert "all checks passed" in out.stdout
+    assert "FAILED" not in out.stdout
