@@ -21,4 +21,7 @@ struct Command {
 /// `cartan solve` (solve_cli.cpp).
 Command add_solve_command(CLI::App& tool);
 
+/// `cartan sweep` (sweep_cli.cpp).
+Command add_sweep_command(CLI::App& tool);
+
 }  // namespace cartan::cli
