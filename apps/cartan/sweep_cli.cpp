@@ -31,6 +31,8 @@ struct SweepFlags {
 bool solve_into(std::size_t index, const GridPoint& point, bool trajectories, nlohmann::json& row) noexcept {
   try {
     row = result_row(index, point, solve(point.spec), trajectories);
+  } catch (const std::invalid_argument& e) {  // boundary data solve() rejects, e.g. a gT that is no rotation
+    row = error_row(index, point, retitled(e, "cartan sweep: grid point " + std::to_string(index)).what());
   } catch (const std::exception& e) {
     row = error_row(index, point, e.what());
   } catch (...) {
