@@ -8,6 +8,8 @@
 #include <thread>
 #include <unistd.h>
 
+#include <Eigen/Core>
+
 #include "command.hpp"
 #include "json_io.hpp"
 #include "problem_options.hpp"
@@ -65,6 +67,7 @@ int run_sweep(const CLI::App& command, SweepFlags& flags) {
     throw std::invalid_argument("cartan sweep: --output = " + flags.output + " cannot be written");
   }
 
+  Eigen::initParallel();  // Eigen's documented step before calling it from several threads
   const auto start = std::chrono::steady_clock::now();
   std::vector<nlohmann::json> rows(points.size());
   ProgressReport report(points.size(), isatty(STDERR_FILENO) != 0);
