@@ -76,10 +76,16 @@ def test_rows_equal_cartan_solve_heisenberg_gT_list_with_trajectories():
         assert len(row["t"]) == 201
 
 
-def test_jobs_do_not_change_the_rows():
-    one = sweep(*SO3_BASE, *GRID, "--jobs", "1", "--quiet")
-    two = sweep(*SO3_BASE, *GRID, "--jobs", "2", "--quiet")
-    many = sweep(*SO3_BASE, *GRID, "--jobs", "16", "--quiet")  # more threads than points and cores
+@pytest.mark.parametrize("problem", [
+    [*SO3_BASE, *GRID],
+    [*SO3_BASE, "--method", "two-level", "--lambdas", "0,0.5,1", "--aT", "1,0.2,0.1"],
+    ["--group", "heisenberg", "--model", "oscillator", "--method", "collocation", "--T", "1", "--N", "10",
+     "--lambdas", "0,0.5,1", "--gT-list", "1,0.5,0.8;0,1,0"],
+])
+def test_jobs_do_not_change_the_rows(problem):
+    one = sweep(*problem, "--jobs", "1", "--quiet")
+    two = sweep(*problem, "--jobs", "2", "--quiet")
+    many = sweep(*problem, "--jobs", "16", "--quiet")  # more threads than points and cores
     assert [without_timing(r) for r in one["rows"]] == [without_timing(r) for r in two["rows"]]
     assert [without_timing(r) for r in one["rows"]] == [without_timing(r) for r in many["rows"]]
 
