@@ -26,15 +26,17 @@ std::vector<double> lambda_range(const std::string& text) {
   const auto bad = [&](const std::string& problem) { throw_invalid(kWhere, "lambda-range", "\"" + text + "\"", problem); };
   const auto parts = split(text, ':');
   if (parts.size() != 3) bad("must be START:STOP:COUNT");
-  double start = 0, stop = 0, count = 0;
-  try {
-    start = parse_list(parts[0], "lambda-range START").at(0);
-    stop = parse_list(parts[1], "lambda-range STOP").at(0);
-    count = parse_list(parts[2], "lambda-range COUNT").at(0);
-  } catch (const std::invalid_argument&) {
-    bad("must be START:STOP:COUNT (three numbers)");
-  }
-  if (parts[0].find(',') != std::string::npos || parts[1].find(',') != std::string::npos) bad("must be START:STOP:COUNT");
+  const auto number = [&](const std::string& part) {
+    std::vector<double> x;
+    try {
+      x = parse_list(part, "lambda-range");
+    } catch (const std::invalid_argument&) {
+      bad("must be START:STOP:COUNT (three numbers)");
+    }
+    if (x.size() != 1) bad("must be START:STOP:COUNT (three numbers)");
+    return x[0];
+  };
+  const double start = number(parts[0]), stop = number(parts[1]), count = number(parts[2]);
   if (!std::isfinite(start) || !std::isfinite(stop)) bad("has a non-finite end");
   if (!(count >= 1 && count <= static_cast<double>(kMaxGridPoints) && std::floor(count) == count)) {
     bad("has COUNT not an integer between 1 and " + std::to_string(kMaxGridPoints));
