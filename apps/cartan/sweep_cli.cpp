@@ -59,8 +59,6 @@ int run_sweep(const CLI::App& command, SweepFlags& flags) {
   try {
     points = build_grid(problem_from(command, flags.problem), flags.grid);
   } catch (const std::invalid_argument& e) {
-    const std::string message = e.what();
-    if (message.rfind("cartan sweep", 0) == 0) throw;
     throw retitled(e, "cartan sweep");
   }
   if (!flags.output.empty() && !std::ofstream(flags.output, std::ios::app)) {  // before hours of solving

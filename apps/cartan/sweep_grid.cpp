@@ -125,6 +125,7 @@ std::invalid_argument retitled(const std::invalid_argument& error, const std::st
   const std::string message = error.what();
   const std::string shared = "cartan solve: ";
   if (message.rfind(shared, 0) == 0) return std::invalid_argument(where + ": " + message.substr(shared.size()));
+  if (message.rfind(kWhere, 0) == 0) return error;  // already a sweep message
   return std::invalid_argument(where + ": " + message);
 }
 
@@ -139,8 +140,6 @@ std::vector<GridPoint> build_grid(const ProblemSpec& base, const GridFlags& flag
   try {
     points = flags.grid_file.empty() ? flag_points(base, flags) : file_points(base, flags.grid_file);
   } catch (const std::invalid_argument& e) {
-    const std::string message = e.what();
-    if (message.rfind("cartan sweep", 0) == 0) throw;
     throw retitled(e, kWhere);
   }
   for (std::size_t i = 0; i < points.size(); ++i) {

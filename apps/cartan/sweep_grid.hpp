@@ -34,7 +34,8 @@ inline constexpr std::size_t kMaxGridPoints = 1'000'000;
 /// bad flag or file, no grid flag at all, or a point that does not validate (naming its index).
 std::vector<GridPoint> build_grid(const ProblemSpec& base, const GridFlags& flags);
 
-/// Rewrites a message of the shared problem parser ("cartan solve: ...") to start with `where`.
+/// Rewrites a message of the shared problem parser ("cartan solve: ...") to start with `where`;
+/// a message that already starts with "cartan sweep" is kept, any other gets `where` in front.
 std::invalid_argument retitled(const std::invalid_argument& error, const std::string& where);
 
 }  // namespace cartan::cli
