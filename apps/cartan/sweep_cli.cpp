@@ -1,6 +1,7 @@
 // `cartan sweep`: the problem options of `cartan solve` (the base problem), a grid over lambda
 // and/or the endpoint (sweep_grid.cpp), solved on a pool of threads (sweep_run.cpp) into one
 // JSON or CSV table (sweep_table.cpp).
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <iostream>
