@@ -21,6 +21,9 @@ struct Command {
 /// `cartan solve` (solve_cli.cpp).
 Command add_solve_command(CLI::App& tool);
 
+/// `cartan sweep` (sweep_cli.cpp).
+Command add_sweep_command(CLI::App& tool);
+
 /// `cartan verify` (verify_cli.cpp).
 Command add_verify_command(CLI::App& tool);
 

@@ -1,0 +1,120 @@
+// `cartan sweep`: the problem options of `cartan solve` (the base problem), a grid over lambda
+// and/or the endpoint (sweep_grid.cpp), solved on a pool of threads (sweep_run.cpp) into one
+// JSON or CSV table (sweep_table.cpp).
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <thread>
+#include <unistd.h>
+
+#include <Eigen/Core>
+
+#include "command.hpp"
+#include "json_io.hpp"
+#include "problem_options.hpp"
+#include "solve_command.hpp"
+#include "sweep_run.hpp"
+#include "sweep_table.hpp"
+
+namespace cartan::cli {
+
+namespace {
+
+struct SweepFlags {
+  ProblemFlags problem;
+  GridFlags grid;
+  unsigned jobs = std::max(std::thread::hardware_concurrency(), 1u);
+  std::string format = "json", output;
+  bool trajectories = false, quiet = false;
+};
+
+/// Solves one point; anything it throws becomes an error row. Returns whether the point failed.
+bool solve_into(std::size_t index, const GridPoint& point, bool trajectories, nlohmann::json& row) noexcept {
+  try {
+    row = result_row(index, point, solve(point.spec), trajectories);
+  } catch (const std::invalid_argument& e) {  // boundary data solve() rejects, e.g. a gT that is no rotation
+    row = error_row(index, point, retitled(e, "cartan sweep: grid point " + std::to_string(index)).what());
+  } catch (const std::exception& e) {
+    row = error_row(index, point, e.what());
+  } catch (...) {
+    row = error_row(index, point, "unknown exception");
+  }
+  return row_failed(row);
+}
+
+void write_table(const std::string& text, const std::string& path) {
+  if (path.empty()) {
+    std::cout << text << std::flush;
+    return;
+  }
+  std::ofstream out(path);
+  if (!out) throw std::invalid_argument("cartan sweep: --output = " + path + " cannot be written");
+  out << text;
+  if (!out) throw std::invalid_argument("cartan sweep: --output = " + path + " could not be written completely");
+}
+
+int run_sweep(const CLI::App& command, SweepFlags& flags) {
+  std::vector<GridPoint> points;
+  try {
+    points = build_grid(problem_from(command, flags.problem), flags.grid);
+  } catch (const std::invalid_argument& e) {
+    throw retitled(e, "cartan sweep");
+  }
+  if (!flags.output.empty() && !std::ofstream(flags.output, std::ios::app)) {  // before hours of solving
+    throw std::invalid_argument("cartan sweep: --output = " + flags.output + " cannot be written");
+  }
+
+  Eigen::initParallel();  // Eigen's documented step before calling it from several threads
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<nlohmann::json> rows(points.size());
+  ProgressReport report(points.size(), isatty(STDERR_FILENO) != 0);
+  run_in_parallel(
+      points.size(), flags.jobs,
+      [&](std::size_t i) { return solve_into(i, points[i], flags.trajectories, rows[i]); },
+      flags.quiet ? nullptr : &report);
+  const double wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  write_table(flags.format == "csv" ? table_csv(rows) : table_json(rows, wall_time_s).dump() + "\n", flags.output);
+  const bool any_failed = std::any_of(rows.begin(), rows.end(), row_failed);
+  return any_failed ? kExitFailed : kExitConverged;
+}
+
+}  // namespace
+
+Command add_sweep_command(CLI::App& tool) {
+  auto* sweep = tool.add_subcommand("sweep", "Solve a grid of problems (lambda and/or endpoints) in parallel into one table");
+  sweep->footer(
+      "The base problem takes every option of `cartan solve`; each grid point replaces lambda and/or the\n"
+      "endpoint (the Cartesian product of the lambda list and the endpoint list), or applies one object of\n"
+      "a --grid file. Every point is validated before anything is solved. Rows are in grid order whatever --jobs.\n"
+      "Examples:\n"
+      "  cartan sweep --model free-rigid-body --T 50 --N 1000 --a0 -1,-1,-1 --aT 0.9,1,1 --tol 1e-8 --lambda-range 0:1:11\n"
+      "  cartan sweep --model oscillator --T 3 --N 300 --a0=-1,-1,-1 --lambdas 0,0.5,1 --aT-list \"1,0,0;0,1,0\" --format csv\n"
+      "  cartan sweep --group heisenberg --model oscillator --T 1 --N 200 --gT-list \"1,0.5,0.8;0,1,0\" --jobs 2\n"
+      "  cartan sweep --problem base.json --grid points.json --output table.json   # points.json: [{\"lambda\": 0}, {\"T\": 2}]\n"
+      "Exit codes: 0 every point converged, 1 some point failed (the table is still written), 2 bad input.");
+  auto flags = std::make_shared<SweepFlags>();
+  add_problem_options(*sweep, flags->problem);
+  GridFlags& grid = flags->grid;
+  sweep->add_option("--lambdas", grid.lambdas, "grid: lambda values, e.g. 0,0.5,1");
+  sweep->add_option("--lambda-range", grid.lambda_range,
+                    "grid: START:STOP:COUNT, COUNT evenly spaced lambdas from START to STOP (after --lambdas)");
+  sweep->add_option("--aT-list", grid.aT_list, "grid (so3, with --a0): final directions \"x,y,z;x,y,z;...\"");
+  sweep->add_option("--gT-list", grid.gT_list,
+                    "grid: final elements \"a,b,c;a,b,c;...\" (heisenberg) or 9 numbers row-major each (so3)");
+  sweep->add_option("--grid", grid.grid_file,
+                    "JSON file: an array of objects of problem keys, each overriding the base problem (instead of the "
+                    "grid flags)");
+  sweep->add_option("--jobs", flags->jobs, "threads (default: the number of cores, here " +
+                                               std::to_string(flags->jobs) + ")")
+      ->check(CLI::Range(1u, 4096u));
+  sweep->add_option("--format", flags->format, "json | csv (default json)")->check(CLI::IsMember({"json", "csv"}));
+  sweep->add_option("--output", flags->output, "table file (default stdout)");
+  sweep->add_flag("--trajectories", flags->trajectories, "include t, g, v in each JSON row (off: the table stays small)");
+  sweep->add_flag("--quiet", flags->quiet, "no progress report on stderr");
+  return {sweep, [sweep, flags] { return run_sweep(*sweep, *flags); }};
+}
+
+}  // namespace cartan::cli

@@ -1,0 +1,41 @@
+#pragma once
+// The points of a `cartan sweep`: the base problem with lambda and/or the endpoint replaced
+// (the Cartesian product of a lambda list and an endpoint list), or with the keys of each object
+// of a --grid JSON file applied. Every point is validated before anything is solved.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "problem_spec.hpp"
+
+namespace cartan::cli {
+
+/// The grid flags of `cartan sweep` as given on the command line (empty: not given).
+struct GridFlags {
+  std::string lambdas;       ///< "0,0.5,1"
+  std::string lambda_range;  ///< "START:STOP:COUNT", COUNT evenly spaced values including both ends
+  std::string aT_list;       ///< so3 directions "x,y,z;x,y,z"
+  std::string gT_list;       ///< final elements "a,b,c;a,b,c" (heisenberg) or 9 numbers each (so3)
+  std::string grid_file;     ///< JSON array of objects of problem keys
+};
+
+/// One point of the sweep: its validated problem, and what it changes in the base problem.
+struct GridPoint {
+  ProblemSpec spec;
+  nlohmann::json overrides = nlohmann::json::object();  ///< the --grid entry; empty for flag grids
+};
+
+/// Limit on the number of points (each keeps one result row in memory).
+inline constexpr std::size_t kMaxGridPoints = 1'000'000;
+
+/// The points in table order: for flag grids index = i_lambda * (number of endpoints) + i_endpoint,
+/// for a --grid file the file's order. Throws std::invalid_argument ("cartan sweep: ...") for a
+/// bad flag or file, no grid flag at all, or a point that does not validate (naming its index).
+std::vector<GridPoint> build_grid(const ProblemSpec& base, const GridFlags& flags);
+
+/// Rewrites a message of the shared problem parser ("cartan solve: ...") to start with `where`;
+/// a message that already starts with "cartan sweep" is kept, any other gets `where` in front.
+std::invalid_argument retitled(const std::invalid_argument& error, const std::string& where);
+
+}  // namespace cartan::cli
