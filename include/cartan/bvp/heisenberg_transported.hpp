@@ -60,9 +60,10 @@ void heisenberg_transported_jacobian(const HeisenbergNaturalProblem<V>& problem,
   const M3 transport = heisenberg_transport(lambda, problem.g0, g);
   const Heisenberg::Tangent u = transport * v, mu = l.momentum(t, g, v);
   const Heisenberg::Tangent zeta = l.group_gradient(t, g, v);
-  M3 translate = M3::Identity();  // L(g)
+  M3 translate = M3::Identity(), translate_inverse = M3::Identity();  // L(g) and its inverse, closed form
   translate(2, 1) = g[0];
-  const M3 dzeta_dg = -potential_left_hessian<Heisenberg>(l.potential(), g) * translate.inverse();
+  translate_inverse(2, 1) = -g[0];
+  const M3 dzeta_dg = -potential_left_hessian<Heisenberg>(l.potential(), g) * translate_inverse;
   const M3 dcoad_dv = Heisenberg::ad(v).transpose() * l.inertia() + coad_first(mu);
   dfdy.setZero();
   M3 dgdot_dg = lambda * translate * Heisenberg::ad(v);

@@ -76,16 +76,20 @@ class Inertia {
       throw_invalid(where, "inertia", format_value(inertia),
                     "is not positive definite: eigenvalues " + format_value(eigenvalues));
     }
-    llt_.compute(matrix_);
+    inverse_ = Eigen::LLT<Matrix>(matrix_).solve(Matrix::Identity());
+    inverse_ = (inverse_ + inverse_.transpose()).eval() / 2;
   }
 
   const Matrix& matrix() const { return matrix_; }
   Vector apply(const Vector& v) const { return matrix_ * v; }
-  Vector solve(const Vector& mu) const { return llt_.solve(mu); }
+  /// I^{-1} mu by the inverse computed once (Cholesky, symmetrised): a product instead of two
+  /// triangular solves with divisions on every call (the inverse Legendre map sits in every
+  /// right-hand side; measured ~15% of a collocation solve's time). Errors: cond(I) eps |mu|.
+  Vector solve(const Vector& mu) const { return inverse_ * mu; }
 
  private:
   Matrix matrix_;
-  Eigen::LLT<Matrix> llt_;
+  Matrix inverse_;
 };
 
 /// What a natural Lagrangian and its Hamiltonian share: the inertia, the potential, and the
