@@ -94,10 +94,10 @@ Command add_solve_command(CLI::App& tool) {
   solve->add_option("--continuation", f.continuation,
                     "shooting: T (default; continue in T from a shorter horizon when direct shooting fails) | "
                     "lambda (continue in lambda from the lambda = 0 solution) | none (direct shooting only)");
-  solve->add_option("--segments", f.segments, "multiple-shooting: number of segments (default about 100 steps each, at most 16)");
+  solve->add_option("--segments", f.segments, "multiple-shooting only: number of segments (default about 100 steps each, at most 16)");
   solve->add_option("--order", f.order, "1 (the paper's scheme) | 2 (second order) (default 1)");
   solve->add_option("--tol", f.tol, "tolerance (default 1e-10)");
-  solve->add_option("--samples", f.samples, "collocation: output at this many uniform times on [0, T] (0: the final mesh); unused by the shooting methods");
+  solve->add_option("--samples", f.samples, "collocation only: output at this many uniform times on [0, T] (0: the final mesh)");
   solve->add_option("--max-iterations", f.max_iterations, "iteration limit of each loop (default 200)");
   solve->add_option("--output", f.output, "output file (default stdout)");
   return {solve, [solve, flags] { return run_solve(*solve, *flags); }};
