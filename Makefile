@@ -3,10 +3,13 @@
 #   make test  - install missing Debian packages, build, run every test (also under ASan+UBSan)
 BUILD ?= build
 BUILD_ASAN ?= build-asan
+BUILD_FUZZ ?= build-fuzz
+FUZZ_SECONDS ?= 20
+FUZZ_RUNS ?= 1000000
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build build-asan test test-release test-asan run bench clean
+.PHONY: all deps build build-asan build-fuzz fuzz test test-release test-asan test-fuzz run bench clean
 
 all: build
 
@@ -28,7 +31,27 @@ test-asan: build-asan
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -LE slow
 
-test: test-release test-asan
+# libFuzzer targets (tests/fuzz/README.md): clang, only the fuzz targets and cartan_cli_core.
+build-fuzz: deps
+	CC=clang CXX=clang++ cmake -S . -B $(BUILD_FUZZ) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCARTAN_FUZZ=ON \
+	  -DCARTAN_BUILD_TESTS=OFF -DCARTAN_BUILD_EXAMPLES=OFF -DCARTAN_BUILD_BENCH=OFF -DCARTAN_BUILD_PYTHON=OFF \
+	  -DCARTAN_FUZZ_SECONDS=$(FUZZ_SECONDS) $(CMAKE_FLAGS)
+	cmake --build $(BUILD_FUZZ) -j $(JOBS) --target cartan_fuzzers
+
+# Each target over its corpus, then FUZZ_SECONDS of fuzzing each; fails on any finding.
+test-fuzz: build-fuzz
+	ctest --test-dir $(BUILD_FUZZ) --output-on-failure -L fuzz
+
+# A long campaign: FUZZ_RUNS executions per target; new inputs in $(BUILD_FUZZ)/tests/fuzz/corpus.
+fuzz: build-fuzz
+	for target in $$(ls $(BUILD_FUZZ)/tests/fuzz | grep '^fuzz_'); do \
+	  mkdir -p $(BUILD_FUZZ)/tests/fuzz/corpus/$$target $(BUILD_FUZZ)/tests/fuzz/artifacts/$$target && \
+	  $(BUILD_FUZZ)/tests/fuzz/$$target -runs=$(FUZZ_RUNS) -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+	    -artifact_prefix=$(BUILD_FUZZ)/tests/fuzz/artifacts/$$target/ \
+	    $(BUILD_FUZZ)/tests/fuzz/corpus/$$target tests/fuzz/corpus/$$target || exit 1; \
+	done
+
+test: test-release test-asan test-fuzz
 
 run: build
 	bash scripts/run-experiments.sh $(BUILD)
@@ -42,4 +65,4 @@ bench: build
 	/usr/bin/python3 bench/sweep_scaling.py --cartan $(BUILD)/cartan --repeat 3 | tee out/sweep_scaling.md
 
 clean:
-	rm -rf $(BUILD) $(BUILD_ASAN) out
+	rm -rf $(BUILD) $(BUILD_ASAN) $(BUILD_FUZZ) out

@@ -7,4 +7,7 @@ function(cartan_set_warnings target)
                            -fno-sanitize-recover=all)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
+  if(CARTAN_FUZZ)  # coverage feedback for libFuzzer; the fuzz targets link the fuzzer itself
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
+  endif()
 endfunction()

@@ -99,10 +99,12 @@ SO3::Element SO3::from_matrix(const Eigen::Matrix3d& m, double tolerance) {
 SO3::Element SO3::minimal_rotation(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   require_finite(a, "SO3::minimal_rotation", "a");
   require_finite(b, "SO3::minimal_rotation", "b");
-  if (a.norm() == 0) throw_invalid("SO3::minimal_rotation", "a", format_value(a), "has zero length");
-  if (b.norm() == 0) throw_invalid("SO3::minimal_rotation", "b", format_value(b), "has zero length");
-  const Eigen::Vector3d x = a.normalized();
-  const Eigen::Vector3d y = b.normalized();
+  // stable: the plain norm of |a| ~ 1e200 overflows (x = 0, the identity returned) and of
+  // |a| ~ 1e-200 underflows (a valid direction reported as zero)
+  if (a.stableNorm() == 0) throw_invalid("SO3::minimal_rotation", "a", format_value(a), "has zero length");
+  if (b.stableNorm() == 0) throw_invalid("SO3::minimal_rotation", "b", format_value(b), "has zero length");
+  const Eigen::Vector3d x = a.stableNormalized();
+  const Eigen::Vector3d y = b.stableNormalized();
   const Eigen::Vector3d axis = x.cross(y);
   const double s = axis.norm();
   const double c = x.dot(y);

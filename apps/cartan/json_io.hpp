@@ -6,7 +6,12 @@
 
 namespace cartan::cli {
 
-/// Parses the JSON file at `path`. Throws std::invalid_argument starting with `what` (e.g.
+/// Parses `text` as JSON. Throws std::invalid_argument starting with `what` when it is not valid
+/// JSON, holds a number beyond the range of double (e.g. 1e400), or repeats a key in an object
+/// (which of two values was meant is ambiguous). The only parser of the CLI's input files.
+nlohmann::json parse_json(const std::string& text, const std::string& what);
+
+/// Parses the JSON file at `path` (parse_json). Throws std::invalid_argument starting with `what` (e.g.
 /// "cartan solve: --problem") when the file cannot be read or is not valid JSON.
 nlohmann::json read_json_file(const std::string& path, const std::string& what);
 

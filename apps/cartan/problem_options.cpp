@@ -53,11 +53,13 @@ void add_problem_options(CLI::App& command, ProblemFlags& flags) {
                      "--segments segments; collocation: fourth-order adaptive collocation)");
   command.add_option("--continuation", f.continuation,
                      "shooting: T (default; continue in T from a shorter horizon when direct shooting fails) | "
-                     "lambda (continue in lambda from the lambda = 0 solution) | none (direct shooting only)");
-  command.add_option("--segments", f.segments, "multiple-shooting: number of segments (default about 100 steps each, at most 16)");
+                     "lambda (continue in lambda from the lambda = 0 solution) | none (direct shooting only); "
+                     "so3 collocation: where to start when Newton from the geodesic guess fails (T, lambda: from "
+                     "that order-2 shooting solution; none: report the failure)");
+  command.add_option("--segments", f.segments, "multiple-shooting only: number of segments (default about 100 steps each, at most 16)");
   command.add_option("--order", f.order, "1 (the paper's scheme) | 2 (second order) (default 1)");
   command.add_option("--tol", f.tol, "tolerance (default 1e-10)");
-  command.add_option("--samples", f.samples, "collocation: output at this many uniform times on [0, T] (0: the final mesh); unused by the shooting methods");
+  command.add_option("--samples", f.samples, "collocation only: output at this many uniform times on [0, T] (0: the final mesh)");
   command.add_option("--max-iterations", f.max_iterations, "iteration limit of each loop (default 200)");
 }
 

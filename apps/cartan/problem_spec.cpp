@@ -78,6 +78,17 @@ void require_size(const std::string& name, const std::vector<double>& values, st
   }
 }
 
+/// Throws naming `name` when `bytes` (the estimate for `count`) exceeds kMemoryLimitBytes.
+void require_memory(const std::string& name, int count, double bytes, const std::string& what) {
+  if (bytes > kMemoryLimitBytes) {
+    std::ostringstream message;
+    message.precision(3);
+    message << "needs an estimated " << bytes / (1024.0 * 1024 * 1024) << " GiB for " << what << " (limit "
+            << kMemoryLimitBytes / (1024.0 * 1024 * 1024) << " GiB)";
+    bad(name, std::to_string(count), message.str());
+  }
+}
+
 }  // namespace
 
 std::vector<double> final_element(const ProblemSpec& spec) {
@@ -158,13 +169,21 @@ void validate(ProblemSpec& spec) {
   if (!std::isfinite(spec.lambda)) bad("lambda", format_value(spec.lambda), "is not finite");
   if (!(std::isfinite(spec.T) && spec.T > 0)) bad("T", format_value(spec.T), "must be positive and finite");
   if (spec.N < 1) bad("N", std::to_string(spec.N), "must be at least 1");
-  // Memory: the trajectory keeps ~20 numbers per node; refuse sizes that cannot fit in 16 GiB.
-  if (spec.N > 50'000'000) bad("N", std::to_string(spec.N), "is too large (at most 50000000 steps)");
+  require_memory("N", spec.N, kBytesPerNode * spec.N, "the trajectory and its JSON output, ~1 KiB per step");
   if (!(std::isfinite(spec.tol) && spec.tol > 0)) bad("tol", format_value(spec.tol), "must be positive and finite");
   if (spec.max_iterations < 1) bad("max_iterations", std::to_string(spec.max_iterations), "must be at least 1");
   if (spec.samples < 0) bad("samples", std::to_string(spec.samples), "must be non-negative");
   if (spec.segments < 0 || spec.segments > spec.N) {
     bad("segments", std::to_string(spec.segments), "must be between 1 and N (0: the default, about 100 steps each)");
+  }
+  require_memory("samples", spec.samples, kBytesPerNode * spec.samples, "the sampled output, ~1 KiB per sample");
+  require_memory("segments", spec.segments, kBytesPerSegmentSquared * spec.segments * spec.segments,
+                 "the dense multiple-shooting Jacobian");
+  if (spec.samples != 0 && spec.method != "collocation") {
+    bad("samples", std::to_string(spec.samples), "is an option of --method collocation only");
+  }
+  if (spec.segments != 0 && spec.method != "multiple-shooting") {
+    bad("segments", std::to_string(spec.segments), "is an option of --method multiple-shooting only");
   }
   if (spec.samples == 1) bad("samples", "1", "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");
   if (spec.inertia.empty()) spec.inertia = spec.group == "so3" ? std::vector<double>{2, 3, 4} : std::vector<double>{1, 1, 1};
@@ -185,9 +204,11 @@ void validate(ProblemSpec& spec) {
     require_size("a0", spec.a0, 3, "a direction");
     require_size("aT", spec.aT, 3, "a direction");
     const Eigen::Vector3d a0(spec.a0.data()), aT(spec.aT.data());
-    if (a0.norm() == 0) bad("a0", join(spec.a0), "has zero length");
-    if (aT.norm() == 0) bad("aT", join(spec.aT), "has zero length");
-    if (a0.normalized().cross(aT.normalized()).norm() < 1e-12 && a0.dot(aT) < 0) {
+    if (a0.stableNorm() == 0) bad("a0", join(spec.a0), "has zero length");
+    if (aT.stableNorm() == 0) bad("aT", join(spec.aT), "has zero length");
+    // stable: |a| of 1e200 or 1e-200 overflows/underflows in a plain norm
+    const Eigen::Vector3d x = a0.stableNormalized(), y = aT.stableNormalized();
+    if (x.cross(y).norm() < 1e-12 && x.dot(y) < 0) {
       bad("a0/aT", join(spec.a0) + " / " + join(spec.aT),
           "are antiparallel: the minimal rotation is not unique (give --gT instead)");
     }

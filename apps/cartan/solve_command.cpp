@@ -56,6 +56,13 @@ nlohmann::json run(const ProblemSpec& spec, const TransportedProblem<G, L>& prob
 
 }  // namespace
 
+SO3Endpoints so3_endpoints(const ProblemSpec& spec) {
+  SO3Endpoints ends{rotation(spec.g0, "g0"), {}};
+  ends.gT = spec.a0.empty() ? rotation(spec.gT, "gT")
+                            : SO3::minimal_rotation(Eigen::Vector3d(spec.a0.data()), Eigen::Vector3d(spec.aT.data()));
+  return ends;
+}
+
 nlohmann::json solve(const ProblemSpec& spec) {
   const Eigen::Vector3d inertia(spec.inertia[0], spec.inertia[1], spec.inertia[2]);
   if (spec.group == "heisenberg") {
@@ -66,10 +73,7 @@ nlohmann::json solve(const ProblemSpec& spec) {
     if (spec.method == "collocation") return solve_by_collocation(spec, problem);
     return run(spec, problem);
   }
-  const SO3::Element g0 = rotation(spec.g0, "g0");
-  const SO3::Element gT = spec.a0.empty()
-                              ? rotation(spec.gT, "gT")
-                              : SO3::minimal_rotation(Eigen::Vector3d(spec.a0.data()), Eigen::Vector3d(spec.aT.data()));
+  const auto [g0, gT] = so3_endpoints(spec);
   const Eigen::Matrix3d inertia_matrix = inertia.asDiagonal();
   if (spec.model == "oscillator") {
     const TransportedProblem<SO3, SO3Oscillator> problem{SO3Oscillator(inertia_matrix), spec.lambda, spec.T, spec.N, g0, gT};

@@ -4,9 +4,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cartan/so3.hpp"
 #include "problem_spec.hpp"
 
 namespace cartan::cli {
+
+/// The boundary data of a validated so3 spec: g0 and gT as rotations (the 9 numbers projected
+/// onto SO(3) when within 1e-6 of it), gT the minimal rotation taking a0 to aT when those are
+/// given. Cheap; throws std::invalid_argument naming g0/gT when a matrix is not a rotation.
+struct SO3Endpoints {
+  SO3::Element g0, gT;
+};
+SO3Endpoints so3_endpoints(const ProblemSpec& spec);
 
 /// Solves a validated spec. The JSON has status, message, group, model, lambda, T, N, method,
 /// order, branch, t, g, v, mu, xi, terminal_error, iterations {outer, inner, sweeps}, solve_time_s.

@@ -94,5 +94,17 @@ TEST(SO3, MinimalRotation) {
   EXPECT_THROW(SO3::minimal_rotation(V3::Zero(), b), std::invalid_argument);
 }
 
+// Found by the fuzz oracle (tests/fuzz): directions whose squared norm overflows or underflows a
+// double are still directions; the rotation depends only on a/|a| and b/|b|, so the results
+// equal the unit-vector case to rounding (1e-15, as above).
+TEST(SO3, MinimalRotationOfHugeAndTinyDirections) {
+  const V3 a(1, 0, 0), b(0, 1, 0);
+  const Eigen::Matrix3d expected = SO3::minimal_rotation(a, b);
+  EXPECT_NEAR_MATRIX(SO3::minimal_rotation(1e200 * a, b), expected, 1e-15);
+  EXPECT_NEAR_MATRIX(SO3::minimal_rotation(a, 1e-200 * b), expected, 1e-15);
+  EXPECT_NEAR_MATRIX(SO3::minimal_rotation(1e-320 * a, 1e300 * b), expected, 1e-15);
+  EXPECT_THROW(SO3::minimal_rotation(1e200 * a, -1e-200 * a), std::invalid_argument);  // antiparallel
+}
+
 }  // namespace
 }  // namespace cartan::testing
