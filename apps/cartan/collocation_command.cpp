@@ -1,7 +1,5 @@
 #include "collocation_command.hpp"
 
-#include <algorithm>
-
 #include "cartan/bvp/transported_solution.hpp"
 #include "solution_json.hpp"
 
@@ -9,12 +7,8 @@ namespace cartan::cli {
 
 namespace {
 
-/// Mesh limit of the CLI: ample for tol >= 1e-12 on the paper's problems (~1000 nodes at 1e-10
-/// on H3; the SO(3) paper cases need fewer than 5000 at 1e-10).
-constexpr int kMaxNodes = 20000;
-
 bvp::CollocationOptions collocation_options(const ProblemSpec& spec) {
-  return {.tol = spec.tol, .max_nodes = kMaxNodes, .max_newton_iterations = spec.max_iterations};
+  return {.tol = spec.tol, .max_nodes = bvp::kTransportedMaxNodes, .max_newton_iterations = spec.max_iterations};
 }
 
 /// The solution's JSON plus what only collocation reports: the final mesh size and the largest
@@ -36,15 +30,8 @@ nlohmann::json solve_so3(const ProblemSpec& spec, const TransportedProblem<SO3, 
   bvp::BvpResult raw;
   const TransportedSolution<SO3> s =
       bvp::solve_transported_by_collocation(problem, collocation_options(spec), spec.samples, fallback, &raw);
-  double group_defect = 0;  // the exact flow stays on SO(3); collocation leaves it by its error
-  for (Eigen::Index i = 0; i < raw.t.size(); ++i) {
-    for (int offset : {Collocation::kG, Collocation::kH}) {
-      const SO3::Element m = Collocation::element(raw.y.col(i), offset);
-      group_defect = std::max(group_defect, (m.transpose() * m - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff());
-    }
-  }
   nlohmann::json out = collocation_json(spec, s, raw);
-  out["group_defect"] = group_defect;
+  out["group_defect"] = Collocation::orthogonality_defect(raw);
   return out;
 }
 

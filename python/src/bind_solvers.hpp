@@ -55,9 +55,6 @@ struct Guess {
 /// Which optional inputs a method accepts.
 enum Accepts : unsigned { kNone = 0, kV0 = 1, kXi0 = 2, kSegments = 4, kLambdaStart = 8, kSamples = 16, kMaxNodes = 32 };
 
-/// Mesh limit of collocation when max_nodes is not given (as `cartan solve --method collocation`).
-inline constexpr int kCollocationMaxNodes = 20000;
-
 /// The potential V of a NaturalLagrangian<G, V> (void for any other Lagrangian).
 template <class L>
 struct NaturalPotentialOf {
@@ -72,7 +69,7 @@ struct NaturalPotentialOf<NaturalLagrangian<G, V>> {
 /// groups the generic one; both need mu = I v with a constant inertia (natural Lagrangians).
 template <LieGroup G, ReducedLagrangian<G> L>
 TransportedSolution<G> solve_by_collocation(const TransportedProblem<G, L>& p, const SolveRequest& r) {
-  const bvp::CollocationOptions options{.tol = r.tol, .max_nodes = r.max_nodes.value_or(kCollocationMaxNodes),
+  const bvp::CollocationOptions options{.tol = r.tol, .max_nodes = r.max_nodes.value_or(bvp::kTransportedMaxNodes),
                                         .max_newton_iterations = r.max_iterations};
   using V = typename NaturalPotentialOf<L>::type;
   if constexpr (std::is_void_v<V>) {

@@ -255,6 +255,13 @@ NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& option
   Iterate trial;
   VectorXd chord;  // the next step with the current factorisation, when reusing it
   bool reuse = false;
+  // One acceptance test and one reuse test for Newton and chord steps alike.
+  auto acceptable = [&](double simplified, double norm, double alpha) {
+    return simplified <= (1 - alpha / 4) * norm || newton_converged(residual_size(trial, n, options.tol), options);
+  };
+  auto worth_reusing = [&](double simplified, double norm) {
+    return options.reuse_jacobian && simplified <= kReuseContraction * norm;
+  };
   for (int iteration = 0;; ++iteration) {
     const ResidualSize size = residual_size(it, n, options.tol);
     if (newton_converged(size, options)) return {};
@@ -271,8 +278,8 @@ NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& option
       if (evaluate(model, it, VectorXd(z - chord), trial)) {
         VectorXd next = solver.solve(trial.residual);
         const double simplified = next.norm();
-        if (simplified <= 0.75 * norm || newton_converged(residual_size(trial, n, options.tol), options)) {
-          reuse = options.reuse_jacobian && simplified <= kReuseContraction * norm;
+        if (acceptable(simplified, norm, 1)) {
+          reuse = worth_reusing(simplified, norm);
           chord = std::move(next);
           std::swap(it, trial);
           continue;
@@ -297,9 +304,8 @@ NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& option
       if (!evaluate(model, it, VectorXd(z - alpha * step), trial)) continue;
       chord = solver.solve(trial.residual);
       const double simplified = chord.norm();
-      accepted = simplified <= (1 - alpha / 4) * norm ||
-                 newton_converged(residual_size(trial, n, options.tol), options);
-      reuse = options.reuse_jacobian && accepted && alpha == 1 && simplified <= kReuseContraction * norm;
+      accepted = acceptable(simplified, norm, alpha);
+      reuse = accepted && alpha == 1 && worth_reusing(simplified, norm);
     }
     if (!accepted) {
       return {BvpStatus::NotConverged, "Newton's line search failed after " + std::to_string(kMaxBacktracks) +

@@ -84,19 +84,6 @@ double difference(const BvpResult& c, const TransportedSolution<SO3>& s) {
   return worst;
 }
 
-/// Largest departure of g and h from SO(3) at the mesh nodes.
-template <class Collocation>
-double orthogonality_defect(const BvpResult& c) {
-  double worst = 0;
-  for (Eigen::Index i = 0; i < c.t.size(); ++i) {
-    for (int offset : {Collocation::kG, Collocation::kH}) {
-      const SO3::Element r = Collocation::element(c.y.col(i), offset);
-      worst = std::max(worst, (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff());
-    }
-  }
-  return worst;
-}
-
 // SO(3), the paper's free body (T = 5) and oscillator (T = 3) with the paper's endpoints: the
 // collocation solution (tol 1e-10, error ~1e-12) and the order-2 shooting solutions (continued
 // in T where needed) approximate the same continuous solution, so their difference shrinks at
@@ -106,7 +93,7 @@ void expect_same_continuous_solution(const std::function<Problem(int)>& make, co
   using Collocation = TransportedCollocation<SO3, std::remove_cvref_t<decltype(make(1).lagrangian.potential())>>;
   const BvpResult c = Collocation::solve(make(20), {.tol = 1e-10, .max_nodes = 20000});
   ASSERT_TRUE(c.success()) << name << ": " << c.message;
-  EXPECT_LE(orthogonality_defect<Collocation>(c), 1e-9) << name;
+  EXPECT_LE(Collocation::orthogonality_defect(c), 1e-9) << name;
   std::vector<double> d;
   for (int N : {50, 100, 200}) {
     const auto s = solve_continuation_in_T(make(N), {.shooting = {.order = SchemeOrder::Second, .tolerance = 1e-13}});

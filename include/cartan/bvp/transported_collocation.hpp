@@ -12,9 +12,13 @@
 // For H3 the transport has a closed form and bvp/heisenberg_transported.hpp is the paper's
 // printed system; this generic form agrees with it (tests/bvp).
 
+#include <algorithm>
+#include <concepts>
+
 #include "cartan/bvp/collocation.hpp"
 #include "cartan/errors.hpp"
 #include "cartan/models/natural_system.hpp"
+#include "cartan/so3.hpp"
 #include "cartan/transported/problem.hpp"
 #include "cartan/transported/scheme.hpp"
 
@@ -102,6 +106,22 @@ class TransportedCollocation {
         h = G::compose(G::exp(TangentOf<G>(-problem.lambda * dt * u)), h);
       }
     }
+  }
+
+  /// For SO(3): the largest departure of g and the transport element h from orthogonality over
+  /// the mesh nodes, max |M^T M - I|. The exact flow keeps it 0; the collocation solution leaves
+  /// the group only by its discretisation error.
+  static double orthogonality_defect(const BvpResult& solution)
+    requires std::same_as<G, SO3>
+  {
+    double worst = 0;
+    for (Eigen::Index i = 0; i < solution.t.size(); ++i) {
+      for (int offset : {kG, kH}) {
+        const SO3::Element m = element(solution.y.col(i), offset);
+        worst = std::max(worst, (m.transpose() * m - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff());
+      }
+    }
+    return worst;
   }
 
   static BvpResult solve(const Problem& problem, const CollocationOptions& options) {

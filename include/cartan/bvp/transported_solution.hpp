@@ -20,6 +20,11 @@ namespace cartan::bvp {
 /// The collocation scheme's order (Lobatto IIIA, collocation.hpp), reported as `order`.
 inline constexpr int kCollocationOrder = 4;
 
+/// Mesh limit of the transported problems by collocation in the CLI and the Python module when
+/// none is given: ample for tol >= 1e-12 on the paper's problems (~1000 nodes at 1e-10 on H3;
+/// the SO(3) paper cases need fewer than 5000 at 1e-10).
+inline constexpr int kTransportedMaxNodes = 20000;
+
 /// Throws std::invalid_argument unless samples is 0 or at least 2 (as `cartan solve --samples`).
 inline void check_samples(int samples) {
   if (samples < 0 || samples == 1) {
@@ -84,7 +89,7 @@ template <class F>
 auto timed(double& seconds, F&& f) {
   const auto start = std::chrono::steady_clock::now();
   auto out = f();
-  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  seconds = detail::seconds_since(start);  // transported/shooting.hpp
   return out;
 }
 
