@@ -8,13 +8,15 @@ parameter lambda, the first-order discretisation of the paper (section "Discreti
 appendix "Non-nilpotent case: the rigid-body") and the two-level solver of section "A two-level
 scheme" with the pseudocode of the appendix "More about the two-level scheme".
 
-Conventions (../../../shared/PAPER-NOTES.md):
+Conventions (docs/paper-notes.md):
   * g0 = I, so the transported velocity v is the paper's v (no left translation by g0 is needed).
   * hat(v) w = v x w;  ad_v = hat(v);  ad*_v mu = -v x mu  (appendix so(3)).
   * Oscillator: l = 1/2 v.Iv - V(g), V(g) = 1/2 (3 - tr g).  The left-trivialised dl/dg is
-    zeta = -vee(Skew g) (PAPER-NOTES erratum 1: the paper prints +vee(Skew g), the gradient of V).
+    zeta = -vee(Skew g) (docs/paper-notes.md#erratum-1: the paper prints +vee(Skew g), the
+    gradient of V).
   * eta_k = P_k^T zeta_k  (the dual P_k^* of (disc-mmt); equal to P_k^{-1} on SO(3)).
-  * The momentum step (disc-mmt-eqn) is explicit (PAPER-NOTES erratum 2): every term at step k.
+  * The momentum step (disc-mmt-eqn) is explicit (docs/paper-notes.md#erratum-2): every term at
+    step k.
   * Shooting residual r(v0) = vee(log(gT^{-1} g_N)) in R^3 (3 equations for 3 unknowns).
   * gT is the minimal rotation taking a0 to aT (axis a0 x aT / |a0 x aT|, angle = angle(a0, aT)).
 
@@ -150,7 +152,7 @@ class Problem:
     # l(g, v) = 1/2 v.Iv - V(g); dl/dg left-trivialised
     def zeta(self, g):
         if self.model == "oscillator":
-            return -vee_skew(g)          # PAPER-NOTES erratum 1 (restoring force)
+            return -vee_skew(g)          # docs/paper-notes.md#erratum-1 (restoring force)
         return np.zeros(3)
 
     def potential(self, g):

@@ -2,7 +2,7 @@
 
 What is checked (about 20 s):
   * the SO(3) helpers (Rodrigues against SciPy, log round trip, minimal rotation);
-  * the oscillator force zeta = -vee(Skew g) against a finite difference of l (PAPER-NOTES 1);
+  * the oscillator force zeta = -vee(Skew g) against a finite difference of l (docs/paper-notes.md#erratum-1);
   * the vectorised (disc-aux) recursion against the loop written as in the pseudocode;
   * the free-body paper case: converged, terminal error < tol, 2 outer iterations at lambda = 0, 1;
   * energy 1/2 v.Iv: non-decreasing along the explicit scheme, and its drift over [0, T] halves
@@ -84,7 +84,8 @@ def test_minimal_rotation():
 
 
 def test_oscillator_force_is_restoring_derivative_of_l():
-    """zeta.w = d/de l(g exp(e w)) with l = -V(g) + kinetic, V = (3 - tr g)/2 (PAPER-NOTES 1)."""
+    """zeta.w = d/de l(g exp(e w)) with l = -V(g) + kinetic, V = (3 - tr g)/2
+    (docs/paper-notes.md#erratum-1)."""
     p = ps.Problem(model="oscillator")
     rng = np.random.default_rng(3)
     for _ in range(10):

@@ -31,7 +31,7 @@
 //   Gamma*(g)_s^t = (Gamma(g)_s^t)^{-*}: trivialised P^{-T}, so <Gamma* a, Gamma X> = <a, X>
 //     (eq:parr-left-dual: Texp(+int nabla*_u) = P^{-T});
 //   Gamma*(g)_t^s = (Gamma(g)_s^t)^*: the pull-back to the start, trivialised P^T. This is the
-//     eta = Gamma*(g)_t^0 dl/dg of the reduced equations (PAPER-NOTES "Dual transport").
+//     eta = Gamma*(g)_t^0 dl/dg of the reduced equations (docs/paper-notes.md#convention-dual-transport).
 //
 // Cartan–Schouten fast path. For the CS connection the generator is -c ad_u with c = lambda
 // (left, CS-conn) or lambda - 1 (right, CS-conn-right). ad is a Lie algebra homomorphism
@@ -584,7 +584,7 @@ typename Vec::PlainObject transport_covector(const Eigen::MatrixBase<Mat>& p, co
 }
 
 /// Gamma*(g)_t^s = (Gamma(g)_s^t)^* in trivialised form: alpha -> P^T alpha, pulling a covector
-/// at g(t) back to g(s) (PAPER-NOTES "Dual transport": eta = P^T zeta; para-trans-dual-Heis).
+/// at g(t) back to g(s) (docs/paper-notes.md#convention-dual-transport: eta = P^T zeta; para-trans-dual-Heis).
 template <class Mat, class Vec>
 typename Vec::PlainObject pull_back_covector(const Eigen::MatrixBase<Mat>& p, const Eigen::MatrixBase<Vec>& alpha) {
   return p.transpose() * alpha;

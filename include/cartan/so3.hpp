@@ -75,8 +75,9 @@ struct SO3 {
   static Element from_matrix(const Eigen::Matrix3d& m, double tolerance = kDefaultTolerance);
 
   /// The minimal rotation taking the direction of a to the direction of b: axis a x b, angle
-  /// angle(a, b) (PAPER-NOTES "Target rotation"). Identity when they are parallel; throws when
-  /// a or b is zero or not finite, or when they are antiparallel (the rotation is not unique).
+  /// angle(a, b) (docs/paper-notes.md#convention-target-rotation). Identity when they are
+  /// parallel; throws when a or b is zero or not finite, or when they are antiparallel (the
+  /// rotation is not unique).
   static Element minimal_rotation(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 };
 

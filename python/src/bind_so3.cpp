@@ -25,7 +25,7 @@ void bind_so3(py::module_& m) {
   bind_lagrangian<SO3, SO3Oscillator>(
       m, group, "SO3Oscillator", "left",
       "Harmonic oscillator l(g, v) = 1/2 v.I v - 1/2 (3 - tr g), restoring force zeta = -vee(Skew g) "
-      "(PAPER-NOTES erratum 1).",
+      "(docs/paper-notes.md#erratum-1).",
       inertia_init<3>("SO3Oscillator", [](const Eigen::Matrix3d& i) { return SO3Oscillator(i); }));
   bind_lagrangian<SO3, SpatialRigidBody>(
       m, group, "SpatialRigidBody", "right", "The free rigid body right-reduced (spatial velocity); for eq:EP-right.",

@@ -38,7 +38,7 @@ class PySO3Oscillator(PyRigidBody):
         return 0.5 * (3.0 - np.trace(g))
 
     def group_gradient(self, t, g, v):
-        # zeta . w = d/de -V(g exp(e w)) = 1/2 tr(g hat(w)) = -vee(Skew g) . w (PAPER-NOTES erratum 1)
+        # zeta . w = d/de -V(g exp(e w)) = 1/2 tr(g hat(w)) = -vee(Skew g) . w (docs/paper-notes.md#erratum-1)
         return -vee_skew(g)
 
 

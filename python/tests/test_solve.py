@@ -11,7 +11,7 @@ Tolerances (theory):
   with |r| <= tol = 1e-10, and near the root |dx| <= |J^-1| |r|, so with |J^-1| <= 10 the
   trajectories agree to 1e-9. In practice LM converges quadratically past the tolerance and
   both runs land on the same rounding-level root: measured <= 6e-13 (printed with pytest -s).
-* Different methods (two-level vs shooting): the same discrete solution (PAPER-NOTES erratum 4:
+* Different methods (two-level vs shooting): the same discrete solution (docs/paper-notes.md#erratum-4:
   difference <= 1e-10 at tight tolerances); at the tolerances used here, 1e-7."""
 import json
 import os
@@ -235,7 +235,7 @@ class PyKineticEnergy:
 
 @pytest.mark.parametrize("group", [cartan.SE2, cartan.SE3], ids=lambda g: g.name)
 def test_python_lagrangian_on_other_groups_reproduces_the_classical_limit(group):
-    # lam = 0 is the classical left Euler-Poincare equation (PAPER-NOTES "Independent checks"):
+    # lam = 0 is the classical left Euler-Poincare equation (docs/paper-notes.md#independent-checks):
     # shoot to the end point of an accurate RKMK4 trajectory (1000 steps, error ~1e-12) and
     # recover its initial velocity; the second-order scheme's error must fall as h^2.
     inertia = np.linspace(1.0, 2.5, group.dim)

@@ -1,5 +1,5 @@
 // The H3 transported-velocity BVP solved by collocation (bvp/heisenberg_transported.hpp):
-// the printed appendix system at g0 = e, the general g0 (PAPER-NOTES erratum 5), agreement with
+// the printed appendix system at g0 = e, the general g0 (docs/paper-notes.md#erratum-5), agreement with
 // the transported shooting solver at its order, stationarity of the action, and the paper's
 // claim that the lambda = 1/2 trajectory lies between lambda = 0 and lambda = 1 (measured).
 #include <gtest/gtest.h>

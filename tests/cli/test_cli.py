@@ -101,7 +101,7 @@ def test_multiple_shooting_reaches_the_shooting_solution():
 
 
 def test_continuation_choices_on_the_long_horizon_oscillator():
-    """PAPER-NOTES erratum 4, measured through the CLI at T = 12 (200 iterations allowed):
+    """docs/paper-notes.md#erratum-4, measured through the CLI at T = 12 (200 iterations allowed):
     direct shooting from the geodesic guess fails for lambda = 0 (exit 1, JSON with the failure)
     and, for lambda = 1/2, converges after ~40 iterations to ANOTHER solution branch than the one
     continuation reaches (v0 differs by ~0.19). Continuation in T and continuation in lambda from

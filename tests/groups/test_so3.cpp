@@ -17,7 +17,7 @@ TEST(SO3, HatIsCrossProductAndBasisBrackets) {
   EXPECT_NEAR_MATRIX(SO3::hat(v) * w, v.cross(w), 1e-15);
   // [E1, E2] = E3 (paper, appendix so(3)).
   EXPECT_NEAR_MATRIX(bracket<SO3>(V3::UnitX(), V3::UnitY()), V3::UnitZ(), 0.0);
-  // ad*_v mu = -v x mu (paper; PAPER-NOTES "Coadjoint on so(3)").
+  // ad*_v mu = -v x mu (paper; docs/paper-notes.md#convention-coadjoint-so3).
   const V3 mu = random_vector<V3>(rng, 1.0);
   EXPECT_NEAR_MATRIX(coad<SO3>(v, mu), -v.cross(mu), 1e-15);
 }

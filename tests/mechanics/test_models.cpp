@@ -105,7 +105,7 @@ TEST(Models, SO3OscillatorDerivatives) {
                                       right_reduced_lagrangian<SO3>(oscillator), Side::Right, rng);
 }
 
-// PAPER-NOTES erratum 1: zeta = -vee(Skew g) (the paper prints +vee(Skew g)). Besides the
+// docs/paper-notes.md#erratum-1: zeta = -vee(Skew g) (the paper prints +vee(Skew g)). Besides the
 // finite-difference check above: the force restores, mu' = zeta ~ -theta x at g = exp(theta x).
 TEST(Models, SO3OscillatorForceRestores) {
   const SO3Oscillator oscillator(kInertia);

@@ -1,6 +1,6 @@
 // Multiple shooting on the transported-velocity scheme: the same discrete solution as single
 // shooting, an analytic Jacobian checked against differences, its behaviour on the paper's
-// long-horizon oscillator (PAPER-NOTES erratum 4), and option validation.
+// long-horizon oscillator (docs/paper-notes.md#erratum-4), and option validation.
 #include <iostream>
 
 #include "cartan/models/heisenberg_oscillator.hpp"
@@ -123,7 +123,7 @@ TEST(MultipleShooting, SweepStartJoinsAndRecentringKeepsTheState) {
   EXPECT_EQ(recentred.segment<6>(6).norm(), 0.0);
 }
 
-// PAPER-NOTES erratum 4: at T = 12 single shooting from the geodesic guess fails. Measured:
+// docs/paper-notes.md#erratum-4: at T = 12 single shooting from the geodesic guess fails. Measured:
 // multiple shooting does not rescue it either. For lambda = 0, 1/2, 1, with segment states
 // from the sweep (M = 2, 4, 8, 10, 16, 20, 32, 50, 64) or from the geodesic (M = 2, 3, 4, 6, 8,
 // 12, 16, 24, 32, 48, 100), and LM damping 1e-8..1, LM ends on a fold of the lifted system

@@ -85,10 +85,10 @@ TEST(TransportedScheme, ModelHessiansMatchFiniteDifferences) {
   expect_hessian_matches_differences<Heisenberg>(h3_oscillator(), rng);
 }
 
-// PAPER-NOTES erratum 4: the augmented shooting reaches the same discrete solution as the
+// docs/paper-notes.md#erratum-4: the augmented shooting reaches the same discrete solution as the
 // two-level fixed point, for both schemes (the order-2 predictor is the same in both modes).
 // With the outer tolerance at 1e-13 the two differ by the remaining fixed-point error only;
-// 1e-10 on v0 and on every g_k and xi_k is the figure PAPER-NOTES records.
+// 1e-10 on v0 and on every g_k and xi_k is the figure docs/paper-notes.md#erratum-4 records.
 template <class Problem>
 void expect_augmented_equals_two_level(const Problem& problem, SchemeOrder order, const std::string& what) {
   const auto shooting = solve_shooting(problem, {.order = order, .tolerance = 1e-12});

@@ -37,7 +37,7 @@ std::vector<Eigen::Vector3d> variation(int N) {
 
 // The action's derivative along endpoint-fixed variations at the discrete solution falls as
 // O(h) for the paper's scheme and O(h^2) for ours, for every lambda, free body and oscillator
-// (PAPER-NOTES erratum 1: with the paper's force sign it would not fall at all). Observed
+// (docs/paper-notes.md#erratum-1: with the paper's force sign it would not fall at all). Observed
 // orders must be within 0.25 of the scheme's order on N = 200 -> 400 -> 800.
 TEST(TransportedVerification, ActionIsStationaryAtTheSchemesOrder) {
   for (SchemeOrder order : {SchemeOrder::First, SchemeOrder::Second}) {

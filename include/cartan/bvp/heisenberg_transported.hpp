@@ -11,7 +11,7 @@
 //   v'  = I^{-1} (P^T zeta - (2 lambda - 1) ad*_v mu)    (the curvature term vanishes on H3)
 //   (a, b, c)(0) = g0,  (a, b, c)(T) = gT.
 // For g0 = e and I = identity this is the six-equation system printed in the appendix; for
-// g0 != e the transport keeps a0 and b0 (PAPER-NOTES erratum 5). The auxiliary covector
+// g0 != e the transport keeps a0 and b0 (docs/paper-notes.md#erratum-5). The auxiliary covector
 // xi' = -ad*_v mu, xi(T) = 0 of eq:reduced-system does not feed back on H3 (ad*_v xi = 0 since
 // xi_3 = 0), so it is integrated afterwards along the solution (heisenberg_xi).
 

@@ -17,7 +17,7 @@ namespace cartan {
 /// V(g) = 1/2 (3 - tr g) ~ theta^2 / 2 for a rotation by a small angle theta.
 /// Left gradient: d/de V(g exp(e w)) = -1/2 tr(g hat(w)) = vee(Skew g) . w, since
 /// tr(g hat(w)) = -2 vee(Skew g) . w. So the oscillator's zeta = -dV = -vee(Skew g), a restoring
-/// force (PAPER-NOTES erratum 1: the paper prints +vee(Skew g), the gradient of V).
+/// force (docs/paper-notes.md#erratum-1: the paper prints +vee(Skew g), the gradient of V).
 struct SO3TracePotential {
   double value(const SO3::Element& g) const { return (3 - g.trace()) / 2; }
   SO3::Tangent left_gradient(const SO3::Element& g) const { return SO3::vee(g); }  // vee reads Skew(g)

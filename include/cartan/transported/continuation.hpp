@@ -1,5 +1,5 @@
 #pragma once
-// Continuation for long horizons (PAPER-NOTES erratum 4): the transported-velocity BVP has
+// Continuation for long horizons (docs/paper-notes.md#erratum-4): the transported-velocity BVP has
 // several solutions at long horizons and plain shooting from the geodesic guess may not
 // converge. Continuation follows one solution branch from an easy problem:
 //  * in T: halve the horizon until shooting from the geodesic guess converges, then lengthen

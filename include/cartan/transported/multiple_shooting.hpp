@@ -1,5 +1,5 @@
 #pragma once
-// Multiple shooting (beyond the paper; PAPER-NOTES erratum 4) on the same discrete scheme as
+// Multiple shooting (beyond the paper; docs/paper-notes.md#erratum-4) on the same discrete scheme as
 // single shooting: the N steps are split at nodes 0 = k_0 < k_1 < ... < k_M = N into M
 // segments, each swept from its own start state, and one Levenberg–Marquardt problem solves
 // for all start states at once. Its solution is the discrete solution of single shooting (the

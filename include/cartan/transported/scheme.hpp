@@ -7,13 +7,14 @@
 // State at node k: g_k, the transport element h_k, mu_k, xi_k, v_k = (dl/dv)^{-1}(mu_k).
 // The transport operator of the paper is P_k = Ad(h_k): since exp(ad_X) = Ad_{exp X},
 // (disc-exp) P_{k+1} = exp(-lambda h ad_{u_k}) P_k is exactly h_{k+1} = exp(-lambda h u_k) h_k.
-// Rates at a node (eq:reduced-system, PAPER-NOTES "Conventions"):
+// Rates at a node (eq:reduced-system; v is left-trivialised at g0 and eta = P^T zeta:
+// docs/paper-notes.md#convention-trivialisation, docs/paper-notes.md#convention-dual-transport):
 //   u   = P v                                          (disc-body-v)
 //   mu' = P^T zeta - (2 lambda - 1) ad*_v mu - lambda (1 - lambda) ad*_v xi   (disc-mmt, disc-mmt-eqn)
 //   xi' = -ad*_v mu                                     (disc-aux)
 // Order 1 (the paper): explicit Euler in these rates with the Lie–Euler group updates
 //   g_{k+1} = g_k exp(h u_k) (disc-grp), h_{k+1} = exp(-lambda h u_k) h_k (disc-exp).
-// Order 2 (ours, PAPER-NOTES erratum 3): Heun's method in Runge–Kutta–Munthe-Kaas form: a
+// Order 2 (ours, docs/paper-notes.md#erratum-3): Heun's method in Runge–Kutta–Munthe-Kaas form: a
 // predictor Euler step, then the same update with the average of the rates at the node and at
 // the predictor; the transport update becomes exp(-lambda (h/2)(u_k + u*)), i.e. Magnus-2 with
 // the trapezoidal Omega_1.
@@ -170,8 +171,8 @@ class TransportedScheme {
     return mean.dxi;
   }
 
-  /// Shooting residual at the final node: r_g = vee(log(gT^{-1} g_N)) (PAPER-NOTES), and its
-  /// derivative J_r(r_g)^{-1} gamma_N.
+  /// Shooting residual at the final node: r_g = vee(log(gT^{-1} g_N))
+  /// (docs/paper-notes.md#convention-shooting-residual), and its derivative J_r(r_g)^{-1} gamma_N.
   Tangent terminal_residual(const Node& last) const {
     return G::log(G::compose(G::inverse(problem_.gT), last.g));
   }

@@ -3,7 +3,7 @@
 // shooting loop on v0 by Levenberg–Marquardt with a forward-difference Jacobian and residual
 // log(gT^{-1} g_N) for a fixed sequence {xi_k}, and an outer fixed-point iteration that
 // recomputes {xi_k} by the backward recursion (disc-aux) until max_k |xi_new - xi_old| < tol.
-// The plain fixed point has no convergence guarantee (PAPER-NOTES erratum 4); failures of
+// The plain fixed point has no convergence guarantee (docs/paper-notes.md#erratum-4); failures of
 // either loop are reported with their iteration counts and residuals.
 
 #include <sstream>

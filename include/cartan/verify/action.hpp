@@ -1,6 +1,6 @@
 #pragma once
 // The discrete transported action, an independent check of the integro-differential equation
-// (PAPER-NOTES "Independent checks"): the exact solution makes S[g] = int l(t, g, v) dt
+// (docs/paper-notes.md#independent-checks): the exact solution makes S[g] = int l(t, g, v) dt
 // stationary under endpoint-fixed variations. On the piecewise-geodesic path through nodes
 // g_0..g_N (u_k = log(g_k^{-1} g_{k+1}) / h on step k) the transport is exact on each step,
 // P(t_k + s) = Ad(exp(-lambda s u_k)) P_k (disc-exp), and the transported velocity is
