@@ -17,7 +17,7 @@ using cartan::testing::paper_free_body;
 using cartan::testing::paper_oscillator;
 
 void report(benchmark::State& state, const auto& solution) {
-  if (!solution.converged) state.SkipWithError(solution.message.c_str());
+  if (!solution.converged()) state.SkipWithError(solution.message.c_str());
   state.counters["sweeps"] = solution.sweeps;
   state.counters["terminal_error"] = solution.terminal_error;
 }

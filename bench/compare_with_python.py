@@ -4,8 +4,8 @@ paper's six SO(3) cases, in one run, alternating the two so that both see the sa
 
 For each case: the Python two-level scheme (for the oscillator at T = 12, where it does not
 converge from the paper's guess, the Python continuation in T that reaches it), cartan's two-level
-scheme (the same algorithm) and cartan's default method (augmented shooting with an analytic
-Jacobian, continued in T when needed). Times are the solvers' own solve_time_s (no start-up, no
+scheme (the same algorithm) and cartan's default method (`--method auto`: augmented shooting
+with an analytic Jacobian, then continuation in T, ... as include/cartan/transported/solve.hpp). Times are the solvers' own solve_time_s (no start-up, no
 I/O); each figure is the fastest of --repeat runs. Ratios = Python time / cartan time.
 
 Usage: /usr/bin/python3 bench/compare_with_python.py [--cartan build/cartan] [--repeat 3] [--markdown FILE]
@@ -59,19 +59,19 @@ def main():
                     py_runs.append(dict(status=res["status"], solve_time_s=res["solve_time_s"], sweeps=res["sweeps"],
                                         method="two-level"))
                 two_runs.append(cartan(args.cartan, model, case, lam, "two-level"))
-                shoot_runs.append(cartan(args.cartan, model, case, lam, "shooting"))
+                shoot_runs.append(cartan(args.cartan, model, case, lam, "auto"))
             py, two, shoot = fastest(py_runs), fastest(two_runs), fastest(shoot_runs)
             rows.append(dict(case=name, lam=lam, py=py, two=two, shoot=shoot))
             print(f"# {name} lambda={lam}: python {py['status']} {py['solve_time_s']:.3f}s, "
                   f"cartan two-level {two['status']} {two['solve_time_s']:.4f}s, "
-                  f"shooting {shoot['status']} {shoot['solve_time_s']:.4f}s", file=sys.stderr)
+                  f"default (auto) {shoot['status']} {shoot['solve_time_s']:.4f}s", file=sys.stderr)
 
     def ratio(py, c):
         ok = py["status"] == "converged" and c["status"] == "converged"
         return f"{py['solve_time_s'] / c['solve_time_s']:.0f}x" if ok else "n/a"
 
     lines = ["| case | λ | Python (method, status) | Python s | sweeps | cartan two-level s | sweeps | ratio | "
-             "cartan shooting s | sweeps | ratio |",
+             "cartan default (auto) s | sweeps | ratio |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         py, two, shoot = r["py"], r["two"], r["shoot"]

@@ -142,8 +142,8 @@ int main() {
     const TransportedProblem<G, Free> problem{particle, lam, 2.0, 400, G::identity(), gT};
     const TransportedSolution<G> s = solve_continuation_in_T(problem, options);
     std::printf("  lambda = %.1f: %s, v0 = (%.6f, %.6f), terminal error %.2e, %d sweeps (%s)\n", lam,
-                s.status.c_str(), s.v0[0], s.v0[1], s.terminal_error, s.sweeps, s.branch.c_str());
-    check(s.converged && s.terminal_error <= tol, "lambda = " + std::to_string(lam).substr(0, 3) + " converged");
+                std::string(to_string(s.status)).c_str(), s.v0[0], s.v0[1], s.terminal_error, s.sweeps, s.branch.c_str());
+    check(s.converged() && s.terminal_error <= tol, "lambda = " + std::to_string(lam).substr(0, 3) + " converged");
     if (lam == 0.0) classical = s;
   }
 

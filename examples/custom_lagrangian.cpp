@@ -89,7 +89,7 @@ cartan::TransportedSolution<cartan::SO3> solve(const L& top, double lambda, int 
 
 void print(const char* label, const cartan::TransportedSolution<cartan::SO3>& s) {
   std::printf("  %s: %s, v0 = (%.8f, %.8f, %.8f), terminal error %.2e, %d iterations, %d sweeps, %.3f s (%s)\n",
-              label, s.status.c_str(), s.v0[0], s.v0[1], s.v0[2], s.terminal_error, s.inner_iterations, s.sweeps,
+              label, std::string(cartan::to_string(s.status)).c_str(), s.v0[0], s.v0[1], s.v0[2], s.terminal_error, s.inner_iterations, s.sweeps,
               s.solve_time_s, s.branch.c_str());
 }
 
@@ -135,8 +135,8 @@ int main() {
   const auto s_analytic = solve(top_hessian, 0.5, 300, tol);
   print("differences", s_fd);
   print("analytic   ", s_analytic);
-  check(s_fd.converged && s_fd.terminal_error <= tol, "converged with difference-quotient second derivatives");
-  check(s_analytic.converged && s_analytic.terminal_error <= tol, "converged with the analytic hessian");
+  check(s_fd.converged() && s_fd.terminal_error <= tol, "converged with difference-quotient second derivatives");
+  check(s_analytic.converged() && s_analytic.terminal_error <= tol, "converged with the analytic hessian");
   // Both solve the same discrete equations to tol = 1e-10 on the residual; the second
   // derivatives only steer Newton (measured: the two v0 agree to 2e-16). 1e-8 = 100 tol allows
   // for the residual's conditioning (a wrong hessian slows or stops Newton, it cannot move the root).

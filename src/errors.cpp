@@ -26,6 +26,24 @@ std::string format_value(const Eigen::Ref<const Eigen::MatrixXd>& x) {
   return out.str();
 }
 
+std::string quote_input(std::string_view text) {
+  constexpr std::size_t kMaxShown = 60;
+  std::string out = "\"";
+  for (std::size_t i = 0; i < text.size() && i < kMaxShown; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f && c != '"' && c != '\\') {
+      out += static_cast<char>(c);
+    } else {
+      static constexpr char kHex[] = "0123456789abcdef";
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 0xf];
+    }
+  }
+  out += text.size() > kMaxShown ? "\"..." : "\"";
+  return out;
+}
+
 void throw_invalid(std::string_view where, std::string_view name, const std::string& value,
                    std::string_view problem) {
   std::ostringstream out;

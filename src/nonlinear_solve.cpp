@@ -6,17 +6,6 @@
 
 namespace cartan {
 
-std::string_view to_string(SolveStatus s) {
-  switch (s) {
-    case SolveStatus::Converged: return "converged";
-    case SolveStatus::MaxIterations: return "max-iterations";
-    case SolveStatus::Stalled: return "stalled";
-    case SolveStatus::NonFinite: return "non-finite";
-    case SolveStatus::SingularJacobian: return "singular-jacobian";
-  }
-  return "unknown";
-}
-
 ResidualFunction with_forward_difference_jacobian(std::function<bool(const Eigen::VectorXd&, Eigen::VectorXd&)> f,
                                                   double fd_step) {
   return [f = std::move(f), fd_step](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
@@ -43,7 +32,7 @@ bool evaluate(const ResidualFunction& f, const Eigen::VectorXd& x, Eigen::Vector
   return f(x, r, &jac) && r.allFinite() && jac.allFinite();
 }
 
-void finish(NonlinearSolveReport& report, SolveStatus status, const std::string& why) {
+void finish(NonlinearSolveReport& report, Status status, const std::string& why) {
   report.status = status;
   std::ostringstream out;
   out << to_string(status) << " after " << report.iterations << " iterations and " << report.evaluations
@@ -66,6 +55,10 @@ void NonlinearSolveOptions::validate() const {
   if (max_iterations < 1) {
     throw_invalid("NonlinearSolveOptions", "max_iterations", std::to_string(max_iterations), "must be at least 1");
   }
+  if (no_progress_window < 0) {
+    throw_invalid("NonlinearSolveOptions", "no_progress_window", std::to_string(no_progress_window),
+                  "must be non-negative");
+  }
 }
 
 NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen::VectorXd& x0,
@@ -80,7 +73,7 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
   if (!evaluate(f, report.x, r, jac, report)) {
     report.residual = r;
     report.residual_norm = r.size() ? r.norm() : std::nan("");
-    finish(report, SolveStatus::NonFinite, "at the initial guess");
+    finish(report, Status::NonFinite, "at the initial guess");
     return report;
   }
   report.residual = r;
@@ -92,13 +85,29 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
   double nu = 2;
   Eigen::VectorXd r_new;
   Eigen::MatrixXd jac_new;
+  // best[i]: the best |r| after i iterations (the no-progress test compares across a window).
+  std::vector<double> best{report.residual_norm};
   while (true) {
     if (report.residual_norm <= options.tolerance) {
-      finish(report, SolveStatus::Converged, "");
+      finish(report, Status::Converged, "");
       return report;
     }
     if (report.iterations >= options.max_iterations) {
-      finish(report, SolveStatus::MaxIterations, "");
+      finish(report, Status::MaxIterations, "");
+      return report;
+    }
+    if (options.monitor != nullptr) {
+      options.monitor->report(report.iterations, report.residual_norm);
+      if (options.monitor->stop_requested()) {
+        finish(report, Status::Interrupted, "stop requested");
+        return report;
+      }
+    }
+    const int window = options.no_progress_window;
+    if (window > 0 && report.iterations >= window &&
+        best.back() > 0.5 * best[static_cast<std::size_t>(report.iterations - window)]) {
+      finish(report, Status::NoProgress,
+             "|r| did not halve in the last " + std::to_string(window) + " iterations");
       return report;
     }
     ++report.iterations;
@@ -106,16 +115,16 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
     damped.diagonal().array() += mu;
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(damped);
     if (ldlt.info() != Eigen::Success) {
-      finish(report, SolveStatus::SingularJacobian, "damped normal equations not solvable");
+      finish(report, Status::SingularJacobian, "damped normal equations not solvable");
       return report;
     }
     const Eigen::VectorXd step = ldlt.solve(-grad);
     if (!step.allFinite()) {
-      finish(report, SolveStatus::SingularJacobian, "non-finite step");
+      finish(report, Status::SingularJacobian, "non-finite step");
       return report;
     }
     if (step.norm() <= options.step_tolerance * (report.x.norm() + options.step_tolerance)) {
-      finish(report, SolveStatus::Stalled, "step below relative tolerance");
+      finish(report, Status::Stalled, "step below relative tolerance");
       return report;
     }
     const Eigen::VectorXd x_new = report.x + step;
@@ -137,11 +146,12 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
         nu = 2;
       }
     }
+    best.push_back(std::min(best.back(), report.residual_norm));
     if (!accepted) {
       mu *= nu;
       nu *= 2;
       if (!std::isfinite(mu)) {
-        finish(report, SolveStatus::Stalled, "damping overflowed");
+        finish(report, Status::Stalled, "damping overflowed");
         return report;
       }
     }

@@ -12,6 +12,7 @@ namespace cartan::cli {
 inline constexpr int kExitConverged = 0;
 inline constexpr int kExitFailed = 1;
 inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitInterrupted = 130;  ///< 128 + SIGINT, as shells report it
 
 struct Command {
   CLI::App* app = nullptr;

@@ -1,5 +1,7 @@
 #include "json_io.hpp"
 
+#include <cstdio>
+
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -45,10 +47,22 @@ void write_json(const nlohmann::json& value, const std::string& path, const std:
     std::cout << value.dump() << '\n';
     return;
   }
-  std::ofstream out(path);
-  if (!out) throw std::invalid_argument(what + " = " + path + " cannot be written");
-  out << value.dump() << '\n';
-  if (!out) throw std::invalid_argument(what + " = " + path + " could not be written completely");
+  // Written beside the target and renamed into place, so that an interrupted run never leaves
+  // a half-written file under the requested name.
+  const std::string partial = path + ".partial";
+  {
+    std::ofstream out(partial);
+    if (!out) throw std::invalid_argument(what + " = " + path + " cannot be written");
+    out << value.dump() << '\n';
+    if (!out) {
+      std::remove(partial.c_str());
+      throw std::invalid_argument(what + " = " + path + " could not be written completely");
+    }
+  }
+  if (std::rename(partial.c_str(), path.c_str()) != 0) {
+    std::remove(partial.c_str());
+    throw std::invalid_argument(what + " = " + path + " cannot be written");
+  }
 }
 
 }  // namespace cartan::cli

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "cartan/transported/method.hpp"
 #include "json_io.hpp"
 
 namespace cartan::cli {
@@ -27,6 +28,8 @@ void override_with_flags(ProblemSpec& spec, const ProblemSpec& flags, const std:
     if (flag == "samples") spec.samples = flags.samples;
     if (flag == "segments") spec.segments = flags.segments;
     if (flag == "continuation") spec.continuation = flags.continuation;
+    if (flag == "v0") spec.v0 = flags.v0;
+    if (flag == "xi0") spec.xi0 = flags.xi0;
     if (flag == "max-iterations") spec.max_iterations = flags.max_iterations;
     if (flag == "output") spec.output = flags.output;
   }
@@ -48,14 +51,18 @@ void add_problem_options(CLI::App& command, ProblemFlags& flags) {
   command.add_option("--a0", flags.a0, "so3: initial direction; gT = minimal rotation taking a0 to aT");
   command.add_option("--aT", flags.aT, "so3: final direction");
   command.add_option("--method", f.method,
-                     "two-level | shooting | multiple-shooting | collocation (default shooting: augmented shooting "
-                     "with analytic Jacobian, continued in T when needed; multiple-shooting: lifted LM over "
-                     "--segments segments; collocation: fourth-order adaptive collocation)");
+                     enum_choices<Method>() +
+                         " (default auto: a strategy that tries shooting, continuation in T and in lambda, "
+                         "collocation and multiple shooting in turn and stops at the first success; shooting: "
+                         "augmented shooting with an analytic Jacobian; multiple-shooting: lifted LM over --segments "
+                         "segments; two-level: the paper's scheme; collocation: fourth-order adaptive collocation)");
   command.add_option("--continuation", f.continuation,
-                     "shooting: T (default; continue in T from a shorter horizon when direct shooting fails) | "
-                     "lambda (continue in lambda from the lambda = 0 solution) | none (direct shooting only); "
-                     "so3 collocation: where to start when Newton from the geodesic guess fails (T, lambda: from "
-                     "that order-2 shooting solution; none: report the failure)");
+                     enum_choices<Continuation>() +
+                         " (default none). shooting: how to reach a problem that fails from the guess (T: from a "
+                         "shorter horizon; lambda: from the lambda = 0 solution); so3 collocation: where to start "
+                         "when Newton from the geodesic guess fails (from that order-2 shooting solution)");
+  command.add_option("--v0", flags.v0, "guess of v(0), 3 numbers (shooting methods; default the geodesic velocity)");
+  command.add_option("--xi0", flags.xi0, "guess of xi(0), 3 numbers (shooting, multiple-shooting; default 0)");
   command.add_option("--segments", f.segments, "multiple-shooting only: number of segments (default about 100 steps each, at most 16)");
   command.add_option("--order", f.order, "1 (the paper's scheme) | 2 (second order) (default 1)");
   command.add_option("--tol", f.tol, "tolerance (default 1e-10)");
@@ -73,6 +80,8 @@ ProblemSpec problem_from(const CLI::App& command, ProblemFlags& flags) {
   if (!flags.gT.empty()) flags.spec.gT = parse_list(flags.gT, "gT");
   if (!flags.a0.empty()) flags.spec.a0 = parse_list(flags.a0, "a0");
   if (!flags.aT.empty()) flags.spec.aT = parse_list(flags.aT, "aT");
+  if (!flags.v0.empty()) flags.spec.v0 = parse_list(flags.v0, "v0");
+  if (!flags.xi0.empty()) flags.spec.xi0 = parse_list(flags.xi0, "xi0");
 
   ProblemSpec spec;
   if (!flags.problem_file.empty()) {

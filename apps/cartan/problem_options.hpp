@@ -14,7 +14,7 @@ namespace cartan::cli {
 /// kept as text and parsed by problem_from, so that their errors name the flag.
 struct ProblemFlags {
   ProblemSpec spec;
-  std::string problem_file, inertia, g0, gT, a0, aT;
+  std::string problem_file, inertia, g0, gT, a0, aT, v0, xi0;
 };
 
 /// Registers --problem, --group, --model, --inertia, --lambda, --T, --N, --g0, --gT, --a0, --aT,

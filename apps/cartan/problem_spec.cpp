@@ -8,6 +8,7 @@
 
 #include "cartan/errors.hpp"
 #include "cartan/so3.hpp"
+#include "cartan/transported/method.hpp"
 
 namespace cartan::cli {
 
@@ -64,7 +65,7 @@ void require_one_of(const std::string& name, const std::string& value, const std
   if (std::find(choices.begin(), choices.end(), value) == choices.end()) {
     std::string list;
     for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
-    bad(name, "\"" + value + "\"", "is not one of: " + list);
+    bad(name, quote_input(value), "is not one of: " + list);
   }
 }
 
@@ -107,11 +108,6 @@ nlohmann::json result_header(const ProblemSpec& spec, const std::string& status,
           {"tol", spec.tol}};
 }
 
-const std::vector<std::string>& available_methods() {
-  static const std::vector<std::string> methods{"two-level", "shooting", "multiple-shooting", "collocation"};
-  return methods;
-}
-
 std::vector<double> parse_list(const std::string& text, const std::string& name) {
   std::vector<double> out;
   std::stringstream stream(text);
@@ -127,10 +123,10 @@ std::vector<double> parse_list(const std::string& text, const std::string& name)
     } catch (const std::exception&) {
       used = 0;
     }
-    if (trimmed.empty() || used != trimmed.size()) bad(name, "\"" + text + "\"", "is not a comma-separated list of numbers");
+    if (trimmed.empty() || used != trimmed.size()) bad(name, quote_input(text), "is not a comma-separated list of numbers");
     out.push_back(value);
   }
-  if (out.empty()) bad(name, "\"" + text + "\"", "is empty");
+  if (out.empty()) bad(name, quote_input(text), "is empty");
   return out;
 }
 
@@ -153,9 +149,11 @@ void apply_json(ProblemSpec& spec, const nlohmann::json& file) {
     else if (key == "samples") spec.samples = json_int(value, key);
     else if (key == "segments") spec.segments = json_int(value, key);
     else if (key == "continuation") spec.continuation = json_string(value, key);
+    else if (key == "v0") spec.v0 = json_numbers(value, key);
+    else if (key == "xi0") spec.xi0 = json_numbers(value, key);
     else if (key == "max_iterations") spec.max_iterations = json_int(value, key);
     else if (key == "output") spec.output = json_string(value, key);
-    else bad("key \"" + key + "\"", value.dump(), "is not a problem-file key");
+    else bad("key " + quote_input(key), quote_input(value.dump()), "is not a problem-file key");
   }
 }
 
@@ -163,8 +161,20 @@ void validate(ProblemSpec& spec) {
   require_one_of("group", spec.group, {"so3", "heisenberg"});
   require_one_of("model", spec.model, spec.group == "so3" ? std::vector<std::string>{"free-rigid-body", "oscillator"}
                                                            : std::vector<std::string>{"oscillator"});
-  require_one_of("method", spec.method, available_methods());
-  require_one_of("continuation", spec.continuation, {"T", "lambda", "none"});
+  const Method method = parse_enum<Method>(spec.method, "cartan solve");
+  const Continuation continuation = parse_enum<Continuation>(spec.continuation, "cartan solve");
+  if (continuation != Continuation::None && method != Method::Shooting && method != Method::Collocation) {
+    bad("continuation", quote_input(spec.continuation), "is an option of --method shooting and collocation only");
+  }
+  if (!spec.v0.empty()) require_size("v0", spec.v0, 3, "a guess of v(0)");
+  if (!spec.xi0.empty()) require_size("xi0", spec.xi0, 3, "a guess of xi(0)");
+  if ((!spec.v0.empty() || !spec.xi0.empty()) && method == Method::Collocation) {
+    bad(spec.v0.empty() ? "xi0" : "v0", join(spec.v0.empty() ? spec.xi0 : spec.v0),
+        "is a guess for the shooting methods, not for --method collocation");
+  }
+  if (!spec.xi0.empty() && method == Method::TwoLevel) {
+    bad("xi0", join(spec.xi0), "is not a guess of --method two-level (its xi starts at 0)");
+  }
   if (spec.order != 1 && spec.order != 2) bad("order", std::to_string(spec.order), "must be 1 or 2");
   if (!std::isfinite(spec.lambda)) bad("lambda", format_value(spec.lambda), "is not finite");
   if (!(std::isfinite(spec.T) && spec.T > 0)) bad("T", format_value(spec.T), "must be positive and finite");
@@ -179,10 +189,10 @@ void validate(ProblemSpec& spec) {
   require_memory("samples", spec.samples, kBytesPerNode * spec.samples, "the sampled output, ~1 KiB per sample");
   require_memory("segments", spec.segments, kBytesPerSegmentSquared * spec.segments * spec.segments,
                  "the dense multiple-shooting Jacobian");
-  if (spec.samples != 0 && spec.method != "collocation") {
+  if (spec.samples != 0 && method != Method::Collocation) {
     bad("samples", std::to_string(spec.samples), "is an option of --method collocation only");
   }
-  if (spec.segments != 0 && spec.method != "multiple-shooting") {
+  if (spec.segments != 0 && method != Method::MultipleShooting) {
     bad("segments", std::to_string(spec.segments), "is an option of --method multiple-shooting only");
   }
   if (spec.samples == 1) bad("samples", "1", "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");

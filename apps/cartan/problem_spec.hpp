@@ -20,11 +20,12 @@ struct ProblemSpec {
   std::vector<double> g0;               ///< so3: 9 numbers row-major; heisenberg: a,b,c
   std::vector<double> gT;
   std::vector<double> a0, aT;           ///< so3 only: gT = minimal rotation taking a0 to aT
-  std::string method = "shooting";      ///< two-level | shooting (with continuation in T as fallback) | multiple-shooting | collocation
+  std::string method = "auto";          ///< a Method word (transported/method.hpp): auto | shooting | multiple-shooting | two-level | collocation
   int order = 1;
   double tol = 1e-10;
   int samples = 0;                      ///< collocation: output at this many uniform times (0: the final mesh)
-  std::string continuation = "T";       ///< shooting: T (when direct fails) | lambda (from lambda = 0) | none
+  std::string continuation = "none";    ///< a Continuation word: none | T | lambda (shooting and collocation only)
+  std::vector<double> v0, xi0;          ///< optional guesses of v(0) and xi(0) (3 numbers each)
   int segments = 0;                     ///< multiple shooting: number of segments (0: default_segments(N))
   int max_iterations = 200;
   std::string output;                   ///< empty: stdout
@@ -61,7 +62,5 @@ std::vector<double> final_element(const ProblemSpec& spec);
 nlohmann::json result_header(const ProblemSpec& spec, const std::string& status, const std::string& message,
                              const std::string& method, int order, const std::string& branch);
 
-/// The methods `cartan solve` accepts.
-const std::vector<std::string>& available_methods();
 
 }  // namespace cartan::cli

@@ -3,6 +3,7 @@
 // SO(3) element as 9 numbers row-major, a 3-vector (a Heisenberg element, v, mu, xi) as 3 numbers.
 
 #include <Eigen/Core>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -28,13 +29,18 @@ nlohmann::json rows(const std::vector<Vec>& x) {
   return out;
 }
 
-/// Every key of a `cartan solve` result: result_header, the trajectory (t, g, v, mu, xi) and
-/// the diagnostics (terminal_error, xi_terminal, iterations, solve_time_s). `order` is the
-/// scheme's order (1 or 2 for the discrete schemes, 4 for collocation).
+/// A number for JSON: NaN and infinities (which JSON lacks) become null.
+inline nlohmann::json number_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
+
+/// Every key of a `cartan solve` result: result_header, the trajectory (t, g, v, mu, xi), the
+/// diagnostics (terminal_error, xi_terminal, action, iterations, solve_time_s) and, for
+/// collocation, mesh_size, max_residual and (so3) group_defect. `order` is the scheme's order
+/// (1 or 2 for the discrete schemes, 4 for collocation).
 template <LieGroup G>
-nlohmann::json solution_json(const ProblemSpec& spec, const TransportedSolution<G>& s, int order) {
+nlohmann::json solution_json(const ProblemSpec& spec, const TransportedSolution<G>& s) {
   const auto& tr = s.trajectory;
-  nlohmann::json out = result_header(spec, s.status, s.message, s.method, order, s.branch);
+  nlohmann::json out = result_header(spec, std::string(to_string(s.status)), s.message,
+                                     std::string(to_string(s.method)), s.order, s.branch);
   out["t"] = tr.t;
   out["g"] = rows(tr.g);
   out["v"] = rows(tr.v);
@@ -43,7 +49,13 @@ nlohmann::json solution_json(const ProblemSpec& spec, const TransportedSolution<
   out["terminal_error"] = s.terminal_error;
   out["xi_terminal"] = s.xi_terminal;
   out["iterations"] = {{"outer", s.outer_iterations}, {"inner", s.inner_iterations}, {"sweeps", s.sweeps}};
+  out["action"] = number_or_null(s.action);
   out["solve_time_s"] = s.solve_time_s;
+  if (s.collocation) {
+    out["mesh_size"] = s.collocation->mesh_size;
+    out["max_residual"] = s.collocation->max_residual;
+    if (std::isfinite(s.collocation->group_defect)) out["group_defect"] = s.collocation->group_defect;
+  }
   return out;
 }
 

@@ -1,22 +1,47 @@
 // `cartan solve`: the problem options (problem_options.cpp), --output, and the solve itself
 // (solve_command.cpp).
+#include <csignal>
+#include <cstdio>
 #include <memory>
 
 #include "command.hpp"
 #include "json_io.hpp"
 #include "problem_options.hpp"
+#include "cartan/status.hpp"
 #include "solve_command.hpp"
 
 namespace cartan::cli {
 
 namespace {
 
-int run_solve(const CLI::App& command, ProblemFlags& flags) {
+volatile std::sig_atomic_t interrupted = 0;
+
+extern "C" void on_sigint(int) { interrupted = 1; }
+
+/// The monitor of `cartan solve`: stops on SIGINT; with --progress, one line per iteration on stderr.
+SolveMonitor cli_monitor(bool progress) {
+  SolveMonitor::ProgressCallback report;
+  if (progress) {
+    report = [](const Progress& p) {
+      std::fprintf(stderr, "cartan solve: %.*s, iteration %d, residual %.3e\n", static_cast<int>(p.stage.size()),
+                   p.stage.data(), p.iteration, p.residual);
+    };
+  }
+  return {report, [] { return interrupted != 0; }};
+}
+
+int run_solve(const CLI::App& command, ProblemFlags& flags, bool progress) {
   ProblemSpec spec = problem_from(command, flags);
   validate(spec);
-  const nlohmann::json result = solve(spec);
+  std::signal(SIGINT, on_sigint);
+  const nlohmann::json result = solve(spec, cli_monitor(progress));
+  std::signal(SIGINT, SIG_DFL);
+  if (result["status"] == std::string(to_string(Status::Interrupted))) {
+    std::fputs("cartan solve: interrupted (no output written)\n", stderr);
+    return kExitInterrupted;
+  }
   write_json(result, spec.output, "cartan solve: --output");
-  return result["status"] == "converged" ? kExitConverged : kExitFailed;
+  return result["status"] == std::string(to_string(Status::Converged)) ? kExitConverged : kExitFailed;
 }
 
 }  // namespace
@@ -29,11 +54,14 @@ Command add_solve_command(CLI::App& tool) {
       "  cartan solve --model oscillator --lambda 0 --T 12 --N 800 --a0=-0.7,-1,-0.7 --aT 0.8,0.8,1 --tol 1e-6\n"
       "  cartan solve --group heisenberg --model oscillator --lambda 0.5 --T 1 --N 200 --gT 1,0.5,0.8\n"
       "  cartan solve --problem problem.json --output result.json\n"
-      "Exit codes: 0 converged, 1 solver failed (JSON still written), 2 bad input.");
+      "Exit codes: 0 converged, 1 solver failed (JSON still written), 2 bad input, 130 interrupted (SIGINT;\n"
+      "no output written).");
   auto flags = std::make_shared<ProblemFlags>();
+  auto progress = std::make_shared<bool>(false);
   add_problem_options(*solve, *flags);
   solve->add_option("--output", flags->spec.output, "output file (default stdout)");
-  return {solve, [solve, flags] { return run_solve(*solve, *flags); }};
+  solve->add_flag("--progress", *progress, "report every iteration (stage, iteration, residual) on stderr");
+  return {solve, [solve, flags, progress] { return run_solve(*solve, *flags, *progress); }};
 }
 
 }  // namespace cartan::cli

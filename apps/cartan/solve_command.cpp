@@ -2,10 +2,7 @@
 
 #include "cartan/models/heisenberg_oscillator.hpp"
 #include "cartan/models/rigid_body.hpp"
-#include "cartan/transported/continuation.hpp"
-#include "cartan/transported/multiple_shooting.hpp"
-#include "cartan/transported/two_level.hpp"
-#include "collocation_command.hpp"
+#include "cartan/transported/solve.hpp"
 #include "solution_json.hpp"
 
 namespace cartan::cli {
@@ -26,35 +23,35 @@ SO3::Element rotation(const std::vector<double>& rowmajor, const std::string& na
   }
 }
 
+template <LieGroup G>
+SolveGuess<G> guess_of(const ProblemSpec& spec) {
+  SolveGuess<G> guess;
+  if (!spec.v0.empty()) guess.v0 = TangentOf<G>(spec.v0.data());
+  if (!spec.xi0.empty()) guess.xi0 = CovectorOf<G>(spec.xi0.data());
+  return guess;
+}
+
 template <LieGroup G, ReducedLagrangian<G> L>
-nlohmann::json run(const ProblemSpec& spec, const TransportedProblem<G, L>& problem) {
-  const SchemeOrder order = spec.order == 2 ? SchemeOrder::Second : SchemeOrder::First;
-  TransportedSolution<G> s;
-  if (spec.method == "two-level") {
-    s = solve_two_level(problem, {.order = order, .tolerance = spec.tol, .max_outer = spec.max_iterations,
-                                  .max_inner = spec.max_iterations});
-    s.branch = "direct from the geodesic guess";
-  } else if (spec.method == "multiple-shooting") {
-    MultipleShootingOptions options{.order = order, .tolerance = spec.tol, .max_iterations = spec.max_iterations};
-    if (spec.segments > 0) options.segments = spec.segments;
-    s = solve_multiple_shooting(problem, options);
-  } else {
-    const ContinuationOptions options{
-        .shooting = {.order = order, .tolerance = spec.tol, .max_iterations = spec.max_iterations}};
-    if (spec.continuation == "none") {
-      s = solve_shooting(problem, options.shooting);
-      s.branch = "direct from the geodesic guess";
-    } else if (spec.continuation == "lambda") {
-      s = solve_continuation_in_lambda(problem, 0.0, options);
-    } else {
-      s = solve_continuation_in_T(problem, options);
-    }
-    s.method = "shooting";
-  }
-  return solution_json(spec, s, spec.order);
+nlohmann::json run(const ProblemSpec& spec, const TransportedProblem<G, L>& problem, const SolveMonitor& monitor) {
+  SolveOptions options = solve_options(spec);
+  options.monitor = monitor;
+  return solution_json(spec, solve(problem, options, guess_of<G>(spec)));
 }
 
 }  // namespace
+
+SolveOptions solve_options(const ProblemSpec& spec) {
+  SolveOptions options;
+  options.method = parse_enum<Method>(spec.method, "cartan solve");
+  options.continuation = parse_enum<Continuation>(spec.continuation, "cartan solve");
+  options.order = spec.order == 2 ? SchemeOrder::Second : SchemeOrder::First;
+  options.tol = spec.tol;
+  options.max_iterations = spec.max_iterations;
+  if (spec.segments > 0) options.segments = spec.segments;
+  options.samples = spec.samples;
+  if (options.method == Method::Collocation) options.max_nodes = bvp::kTransportedMaxNodes;
+  return options;
+}
 
 SO3Endpoints so3_endpoints(const ProblemSpec& spec) {
   SO3Endpoints ends{rotation(spec.g0, "g0"), {}};
@@ -63,24 +60,23 @@ SO3Endpoints so3_endpoints(const ProblemSpec& spec) {
   return ends;
 }
 
-nlohmann::json solve(const ProblemSpec& spec) {
+nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor) {
   const Eigen::Vector3d inertia(spec.inertia[0], spec.inertia[1], spec.inertia[2]);
   if (spec.group == "heisenberg") {
     const Heisenberg::Element g0(spec.g0[0], spec.g0[1], spec.g0[2]);
     const Heisenberg::Element gT(spec.gT[0], spec.gT[1], spec.gT[2]);
     const TransportedProblem<Heisenberg, H3Oscillator> problem{H3Oscillator(inertia.asDiagonal().toDenseMatrix()),
                                                                spec.lambda, spec.T, spec.N, g0, gT};
-    if (spec.method == "collocation") return solve_by_collocation(spec, problem);
-    return run(spec, problem);
+    return run(spec, problem, monitor);
   }
   const auto [g0, gT] = so3_endpoints(spec);
   const Eigen::Matrix3d inertia_matrix = inertia.asDiagonal();
   if (spec.model == "oscillator") {
-    const TransportedProblem<SO3, SO3Oscillator> problem{SO3Oscillator(inertia_matrix), spec.lambda, spec.T, spec.N, g0, gT};
-    return spec.method == "collocation" ? solve_by_collocation(spec, problem) : run(spec, problem);
+    return run(spec, TransportedProblem<SO3, SO3Oscillator>{SO3Oscillator(inertia_matrix), spec.lambda, spec.T, spec.N, g0, gT},
+               monitor);
   }
-  const TransportedProblem<SO3, RigidBody> problem{RigidBody(inertia_matrix), spec.lambda, spec.T, spec.N, g0, gT};
-  return spec.method == "collocation" ? solve_by_collocation(spec, problem) : run(spec, problem);
+  return run(spec, TransportedProblem<SO3, RigidBody>{RigidBody(inertia_matrix), spec.lambda, spec.T, spec.N, g0, gT},
+             monitor);
 }
 
 }  // namespace cartan::cli

@@ -4,7 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cartan/monitor.hpp"
 #include "cartan/so3.hpp"
+#include "cartan/transported/solve_options.hpp"
 #include "problem_spec.hpp"
 
 namespace cartan::cli {
@@ -17,9 +19,14 @@ struct SO3Endpoints {
 };
 SO3Endpoints so3_endpoints(const ProblemSpec& spec);
 
-/// Solves a validated spec. The JSON has status, message, group, model, lambda, T, N, method,
-/// order, branch, t, g, v, mu, xi, terminal_error, iterations {outer, inner, sweeps}, solve_time_s.
-/// Throws std::invalid_argument for bad boundary data (e.g. a0 = -aT, a non-rotation gT).
-nlohmann::json solve(const ProblemSpec& spec);
+/// The library's SolveOptions of a validated spec (method, continuation, order, tol, ...).
+SolveOptions solve_options(const ProblemSpec& spec);
+
+/// Solves a validated spec with the library's solve (transported/solve.hpp). The JSON has
+/// status, message, group, model, lambda, T, N, method, order, branch, t, g, v, mu, xi,
+/// terminal_error, xi_terminal, action, iterations {outer, inner, sweeps}, solve_time_s, and for
+/// collocation mesh_size, max_residual (and group_defect for so3). Throws std::invalid_argument
+/// for bad boundary data (e.g. a0 = -aT, a non-rotation gT).
+nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor = {});
 
 }  // namespace cartan::cli

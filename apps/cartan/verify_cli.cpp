@@ -2,7 +2,10 @@
 // docs/verify.md).
 #include <iostream>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
+#include "cartan/errors.hpp"
 #include "command.hpp"
 #include "json_io.hpp"
 #include "result_reader.hpp"
@@ -17,12 +20,36 @@ struct VerifyFlags {
   bool json = false;
 };
 
+/// The verdict on a failed solve: FAIL with a check saying so, whatever else holds. Its data
+/// are the solver's best iterate, which may not even be valid group elements (collocation's
+/// dense output off the solution); then that check is the whole report.
+VerifyReport verify_failed(const nlohmann::json& j, const std::string& status) {
+  const CheckResult not_converged{"converged", 1, 0, true,
+                                  "status = " + quote_input(status) +
+                                      ": the solver did not converge; the data are its best iterate, not a solution"};
+  VerifyReport report;
+  try {
+    report = verify(read_result(j));
+  } catch (const std::invalid_argument& e) {
+    report.checks.clear();
+    report.checks.push_back({"data", 1, 0, false, std::string("not checked: ") + e.what()});
+  }
+  report.checks.insert(report.checks.begin(), not_converged);
+  return report;
+}
+
 int run_verify(const VerifyFlags& flags) {
-  const ResultFile result = read_result(read_json_file(flags.file, "cartan verify: FILE"));
-  const VerifyReport report = verify(result);
+  const nlohmann::json j = read_json_file(flags.file, "cartan verify: FILE");
+  const std::string status =
+      j.is_object() && j.contains("status") && j["status"].is_string() ? j["status"].get<std::string>() : "";
+  const bool failed = !status.empty() && status != "converged";
+  const VerifyReport report = failed ? verify_failed(j, status) : verify(read_result(j));
   if (flags.json) {
     std::cout << report.json().dump() << '\n';
+  } else if (failed) {
+    std::cout << flags.file << ": status " << quote_input(status) << " (not converged)\n" << report.text();
   } else {
+    const ResultFile result = read_result(j);
     std::cout << flags.file << ": " << result.group << " " << result.model << ", lambda = " << result.lambda
               << ", method " << result.method << " (order " << result.order << "), " << result.t.size()
               << " samples, status " << result.status << "\n"
@@ -44,7 +71,10 @@ Command add_verify_command(CLI::App& tool) {
       "  cartan solve --model oscillator --lambda 0.5 --T 3 --N 200 --a0 1,0,0 --aT 0,1,0 --output r.json\n"
       "  cartan verify r.json\n"
       "  cartan verify --json r.json\n"
-      "Exit codes: 0 every check passed, 1 a check failed, 2 bad input (unreadable file, invalid JSON or content).");
+      "A result whose status is not `converged` always fails (check `converged`), with the other checks\n"
+      "run on its data where they are valid.\n"
+      "Exit codes: 0 every check passed, 1 a check failed or the result is not converged, 2 bad input\n"
+      "(unreadable file, invalid JSON or content).");
   auto flags = std::make_shared<VerifyFlags>();
   verify->add_option("FILE", flags->file, "result file written by `cartan solve`")->required();
   verify->add_flag("--json", flags->json, "print the report as one JSON object");

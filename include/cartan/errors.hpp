@@ -19,6 +19,11 @@ namespace cartan {
 std::string format_value(const Eigen::Ref<const Eigen::MatrixXd>& x);
 std::string format_value(double x);
 
+/// User-supplied text for a message: in double quotes, control and non-ASCII bytes escaped as
+/// \xNN, cut to 60 characters (then "..." follows), so that hostile input cannot flood or
+/// corrupt a terminal.
+std::string quote_input(std::string_view text);
+
 /// Throws std::invalid_argument("<where>: <name> = <value> <problem>").
 [[noreturn]] void throw_invalid(std::string_view where, std::string_view name,
                                 const std::string& value, std::string_view problem);

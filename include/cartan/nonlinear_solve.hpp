@@ -15,17 +15,15 @@
 #include <string>
 #include <vector>
 
+#include "cartan/monitor.hpp"
+#include "cartan/status.hpp"
+
 namespace cartan {
 
-enum class SolveStatus {
-  Converged,          ///< |r| <= tolerance
-  MaxIterations,      ///< iteration budget exhausted
-  Stalled,            ///< steps became negligible while |r| > tolerance (local minimum of |r|)
-  NonFinite,          ///< the residual or Jacobian became NaN/inf
-  SingularJacobian,   ///< the damped normal equations could not be solved
-};
-
-std::string_view to_string(SolveStatus s);
+// Outcomes (cartan/status.hpp): Converged (|r| <= tolerance), MaxIterations, Stalled (steps
+// negligible while |r| > tolerance: a local minimum of |r|), NonFinite (residual or Jacobian
+// NaN/inf), SingularJacobian (damped normal equations not solvable), NoProgress (best |r| not
+// halved within no_progress_window iterations), Interrupted (the monitor asked to stop).
 
 struct NonlinearSolveOptions {
   double tolerance = 1e-12;      ///< stop when |r|_2 <= tolerance
@@ -33,13 +31,19 @@ struct NonlinearSolveOptions {
   double initial_damping = 1e-8; ///< tau: mu_0 = tau max diag(J^T J); small = Gauss–Newton-like
   double step_tolerance = 1e-15; ///< relative step size below which the solve has stalled
   double fd_step = 1e-7;         ///< relative step of forward-difference Jacobians
+  /// > 0: give up (Status::NoProgress) once the best |r| has not halved over this many
+  /// iterations; a start outside Newton's basin is then abandoned early, while a converging
+  /// solve (which gains far more than a factor 2 per few iterations) finishes.
+  int no_progress_window = 0;
+  /// Progress reports (one per iteration) and stop requests (Status::Interrupted); may be null.
+  const SolveMonitor* monitor = nullptr;
 
   /// Throws std::invalid_argument naming the first value that is not finite and positive.
   void validate() const;
 };
 
 struct NonlinearSolveReport {
-  SolveStatus status = SolveStatus::MaxIterations;
+  Status status = Status::MaxIterations;
   Eigen::VectorXd x;
   Eigen::VectorXd residual;
   double residual_norm = 0;

@@ -57,9 +57,11 @@ from ._cartan import (  # noqa: F401  (re-exported)
 GROUPS = (SO3, Heisenberg, SE3, SE2)
 #: The transported-velocity solvers (see :func:`solve`).
 METHODS = tuple(SO3.methods)
+#: Every status word a solver reports (the same as the CLI's JSON).
+STATUSES = tuple(_cartan.statuses)
 
 __all__ = [
-    "SO3", "Heisenberg", "SE3", "SE2", "GROUPS", "METHODS",
+    "SO3", "Heisenberg", "SE3", "SE2", "GROUPS", "METHODS", "STATUSES",
     "RigidBody", "SO3Oscillator", "SpatialRigidBody", "H3Oscillator",
     "RigidBodyHamiltonian", "SO3OscillatorHamiltonian", "SpatialRigidBodyHamiltonian", "H3OscillatorHamiltonian",
     "Trajectory", "SolveResult", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve",
@@ -113,20 +115,21 @@ def lagrangian_hessian(lagrangian, t, g, v, group=None):
 class SolveResult:
     """The result of :func:`solve`, in the spirit of scipy.integrate.solve_bvp's.
 
-    status: "converged" or a failure word (max-iterations, stalled, non-finite,
-    inner-not-converged, outer-not-converged, continuation-failed, inconsistent, ...);
-    success: status == "converged"; message: diagnostics (iterations, residual history);
-    t (N+1,), g (N+1, *element_shape), v, mu, xi (N+1, dim): the discrete solution at every node,
-    v the transported velocity left-trivialised at g0; v0, xi0 the initial values;
-    outer_iterations, inner_iterations, sweeps: work done; terminal_error = |log(gT^-1 g_N)|,
-    xi_terminal = |xi_N|; branch: how the solution was reached (e.g. "continued in T from
-    T = 3 (6 stages)"); solve_time: seconds in the solver.
-
-    method="collocation": status "converged" or max-nodes-exceeded, singular-jacobian,
-    not-converged; order 4; t the final mesh or the `samples` uniform times (then N + 1 is not the
-    number of rows); outer_iterations = mesh refinements, inner_iterations = Newton iterations,
-    sweeps = Jacobian evaluations; v0, xi0 the solution's values at t = 0; the message gives the
-    mesh size and the largest residual.
+    status: one of :data:`STATUSES` ("converged", or what failed: "max-iterations", "stalled",
+    "non-finite", "no-progress", "continuation-failed", "strategy-failed", ...; the same words as
+    the CLI's JSON); success: status == "converged"; message: diagnostics (every attempt, iterations,
+    residual history); method: the method that produced the result (one of :data:`METHODS`, never
+    "auto"); branch: how it was reached (e.g. "continuation in T (continued in T from T = 3 (6
+    stages)), after shooting failed").
+    t (N+1,), g (N+1, *element_shape), v, mu, xi (N+1, dim): the discrete solution at every node, v
+    the transported velocity left-trivialised at g0 (collocation: at the final mesh or `samples`
+    times). A failed result carries the best iterate *of the requested problem* (never a stage of a
+    continuation at another T or lambda), or no rows at all.
+    v0, xi0: the initial values; terminal_error = |log(gT^-1 g_N)|, xi_terminal = |xi_N|;
+    action: the discrete transported action S_h of the trajectory (tells branches apart);
+    outer_iterations, inner_iterations, sweeps: work done (collocation: mesh refinements, Newton
+    iterations, Jacobians); mesh_size, max_residual: collocation only (else None);
+    solve_time: seconds in the solver.
     """
     status: str
     message: str
@@ -147,26 +150,32 @@ class SolveResult:
     xi0: np.ndarray
     terminal_error: float
     xi_terminal: float
+    action: float
     outer_iterations: int
     inner_iterations: int
     sweeps: int
     residual_history: np.ndarray = field(repr=False)
     solve_time: float
+    mesh_size: Optional[int] = None
+    max_residual: Optional[float] = None
 
     def __repr__(self):
         return (f"SolveResult(status={self.status!r}, success={self.success}, method={self.method!r}, "
                 f"group={self.group!r}, lam={self.lam:g}, T={self.T:g}, N={self.N}, "
-                f"terminal_error={self.terminal_error:.3e}, iterations=(outer={self.outer_iterations}, "
-                f"inner={self.inner_iterations}, sweeps={self.sweeps}), branch={self.branch!r}, "
-                f"solve_time={self.solve_time:.4f})")
+                f"terminal_error={self.terminal_error:.3e}, action={self.action:.6g}, "
+                f"iterations=(outer={self.outer_iterations}, inner={self.inner_iterations}, sweeps={self.sweeps}), "
+                f"branch={self.branch!r}, solve_time={self.solve_time:.4f})")
 
 
-def solve(lagrangian, *, lam, T, N, gT, g0=None, method="shooting", order=1, tol=1e-10, max_iterations=200,
-          segments: Optional[int] = None, lambda_start: Optional[float] = None, v0=None, xi0=None, group=None,
-          samples: Optional[int] = None, max_nodes: Optional[int] = None):
+def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="none", order=1, tol=1e-10,
+          max_iterations=200, segments: Optional[int] = None, lambda_start: Optional[float] = None, v0=None,
+          xi0=None, guess=None, group=None, samples: Optional[int] = None, max_nodes: Optional[int] = None,
+          progress=None):
     """Solves the transported-velocity boundary-value problem of the Cartan-Schouten connection
     of parameter `lam` (eq:reduced-system; paper §6-7) on [0, T] with N steps, g(0) = g0
     (default: the identity), g(T) = gT, with the discrete scheme of order 1 (the paper's) or 2.
+    The library's solve (include/cartan/transported/solve.hpp) does the work; methods, options and
+    behaviour are those of `cartan solve`.
 
     `lagrangian` is a built-in left-reduced model (RigidBody, SO3Oscillator, H3Oscillator) or any
     object with methods value(t, g, v), momentum(t, g, v) (= dl/dv), group_gradient(t, g, v)
@@ -176,34 +185,37 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="shooting", order=1, tol
     a dict like :func:`lagrangian_hessian`'s, else by central differences of momentum and
     group_gradient (24 extra callbacks per node on a 3-dimensional group).
 
-    method (options as `cartan solve`: order, tol, max_iterations):
-      "two-level"           the paper's scheme (inner LM shooting on v0, outer fixed point on xi);
-                            tol is the outer tolerance; accepts v0.
-      "shooting"            (default, as the CLI) augmented shooting on (v0, xi0) with an analytic
-                            Jacobian, continued in T when it does not converge from the geodesic guess.
-      "single-shooting"     augmented shooting from the guess (v0, xi0) only.
-      "multiple-shooting"   lifted Levenberg-Marquardt over `segments` segments; accepts v0, xi0.
-      "continuation-lambda" shooting continued in lambda from `lambda_start` (default 0).
-      "collocation"         the continuous problem (not the discrete scheme) by fourth-order adaptive
-                            collocation from the geodesic guess on a uniform mesh of N intervals, as
-                            `cartan solve --method collocation`: tol bounds the relative RMS residual
-                            per interval, max_iterations the Newton iterations per mesh; `samples`
-                            (default 0: the final mesh; else >= 2 uniform times on [0, T]) and
-                            `max_nodes` (default 20000). H3Oscillator uses the closed-form H3 system
-                            (xi by exact quadrature), RigidBody and SO3Oscillator the generic one with
-                            g and the transport as states (g leaves SO(3) by the discretisation error);
-                            for these, when Newton from the geodesic guess fails on the N-interval
-                            mesh, it starts again from the order-2 shooting solution continued in T
-                            (as the CLI's default --continuation T; `branch` says so).
-                            Built-in models only; `order` is unused (the method has order 4).
-    v0, xi0: initial guesses where accepted (default: the geodesic guess log(g0^-1 gT)/T and 0).
+    method (one of :data:`METHODS`):
+      "auto"                (default) a strategy: shooting from the guess, continuation in T (not for
+                            purely kinetic Lagrangians), continuation in lambda from 0 and from 1,
+                            collocation then shooting from its solution, multiple shooting; it stops at
+                            the first success and `branch` names the path.
+      "shooting"            augmented shooting on (v0, xi0) with an analytic Jacobian; `continuation`
+                            "T" or "lambda" (from `lambda_start`, default 0) when it fails from the guess.
+      "multiple-shooting"   lifted Levenberg-Marquardt over `segments` segments.
+      "two-level"           the paper's scheme (inner LM shooting on v0, outer fixed point on xi).
+      "collocation"         the continuous problem by fourth-order adaptive collocation from the
+                            geodesic guess (or `guess`) on a uniform mesh of N intervals; tol bounds the
+                            relative RMS residual per interval; `samples` (0: the final mesh, else >= 2
+                            uniform times) and `max_nodes` (default 20000); `continuation` "T"/"lambda":
+                            where to start when Newton fails (from that order-2 shooting solution).
+                            Built-in natural models only.
+    tol: shooting methods, on |(log(gT^-1 g_N), xi_N / xi_scale)| (radians and a relative xi, so that
+    it means the same at every horizon); two-level, the outer change of xi relative to xi_scale.
+    v0, xi0: guesses (default: the geodesic velocity log(g0^-1 gT)/T and 0); guess: a whole trajectory
+    (any object with t, g, v, xi, e.g. a previous SolveResult), as scipy.integrate.solve_bvp takes y.
+    progress: a callable (stage, iteration, residual) called once per iteration.
+    Ctrl-C raises KeyboardInterrupt within one iteration; invalid arguments raise ValueError.
     """
     if getattr(lagrangian, "side", "left") != "left":
         raise ValueError(f"cartan.solve: lagrangian = {type(lagrangian).__name__} is right-reduced; "
                          "the transported-velocity problem needs a left-reduced Lagrangian")
     grp = _group_of(lagrangian, group, "solve")
-    d = grp._solve(lagrangian, lam, T, N, g0, gT, method, order, tol, max_iterations, segments, lambda_start,
-                   v0, xi0, samples, max_nodes)
+    request = _cartan._SolveRequest()
+    request.method, request.continuation, request.order, request.tol = method, continuation, order, tol
+    request.max_iterations, request.segments, request.lambda_start = max_iterations, segments, lambda_start
+    request.samples, request.max_nodes = samples, max_nodes
+    d = grp._solve(lagrangian, lam, T, N, g0, gT, request, v0, xi0, guess, progress)
     return SolveResult(**d)
 
 
@@ -213,7 +225,7 @@ class BvpResult:
 
     status: 0 success, 1 max_nodes exceeded, 2 singular collocation Jacobian, 3 not converged
     (Newton or mesh refinement failed, or f/bc not finite; SciPy's 3 is the narrower "bc_tol not
-    met"); status_name: "success", "max-nodes-exceeded", "singular-jacobian", "not-converged";
+    met"); status_name: "converged", "max-nodes-exceeded", "singular-jacobian", "not-converged";
     message; success: status == 0; x (m,) the final mesh; y (n, m) and yp (n, m) = f(x, y, p) at
     it; p (k,) or None; sol: the C^1 cubic dense output (sol(x), sol(x, 1) for y');
     rms_residuals (m - 1,) relative RMS residual per interval; niter: meshes solved.

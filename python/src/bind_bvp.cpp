@@ -147,20 +147,19 @@ bvp::LinearSolverKind parse_linear_solver(const std::string& name) {
 
 /// SciPy's status codes: 0 success, 1 max_nodes exceeded, 2 singular Jacobian, 3 otherwise
 /// (SciPy: bc_tol not met; cartan: Newton or refinement did not converge, or f/bc not finite).
-int scipy_status(bvp::BvpStatus status) {
+int scipy_status(Status status) {
   switch (status) {
-    case bvp::BvpStatus::Success: return 0;
-    case bvp::BvpStatus::MaxNodesExceeded: return 1;
-    case bvp::BvpStatus::SingularJacobian: return 2;
-    case bvp::BvpStatus::NotConverged: return 3;
+    case Status::Converged: return 0;
+    case Status::MaxNodesExceeded: return 1;
+    case Status::SingularJacobian: return 2;
+    default: return 3;
   }
-  return 3;
 }
 
 py::dict result_dict(const bvp::BvpResult& r, double seconds) {
   py::dict d;
   d["status"] = scipy_status(r.status);
-  d["status_name"] = std::string(bvp::to_string(r.status));
+  d["status_name"] = std::string(to_string(r.status));
   d["message"] = r.message;
   d["success"] = r.success();
   d["x"] = to_numpy(r.t);

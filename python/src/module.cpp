@@ -66,33 +66,37 @@ TransportMethod parse_transport_method(const std::string& method, std::string_vi
   throw_invalid(where, "method", "\"" + method + "\"", "is not one of: lie-euler, magnus2, magnus4");
 }
 
-void check_request(const SolveRequest& request, const std::vector<std::string>& names, unsigned accepts) {
-  constexpr std::string_view where = "cartan.solve";
-  if (std::find(names.begin(), names.end(), request.method) == names.end()) {
-    std::string list;
-    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    throw_invalid(where, "method", "\"" + request.method + "\"", "is not one of: " + list);
+SolveMonitor python_monitor(const py::object& progress) {
+  SolveMonitor::ProgressCallback report;
+  if (!progress.is_none()) {
+    report = [progress](const Progress& p) {
+      py::gil_scoped_acquire gil;
+      progress(std::string(p.stage), p.iteration, p.residual);
+    };
   }
-  if (request.order != 1 && request.order != 2) {
-    throw_invalid(where, "order", std::to_string(request.order), "must be 1 or 2");
-  }
-  const auto refuse = [&](bool given, unsigned flag, std::string_view name, const std::string& value) {
-    if (given && (accepts & flag) == 0) {
-      throw_invalid(where, name, value, "is not an option of method \"" + request.method + "\"");
-    }
-  };
-  refuse(request.has_v0, kV0, "v0", "(given)");
-  refuse(request.has_xi0, kXi0, "xi0", "(given)");
-  refuse(request.segments.has_value(), kSegments, "segments", std::to_string(request.segments.value_or(0)));
-  refuse(request.lambda_start.has_value(), kLambdaStart, "lambda_start", format_value(request.lambda_start.value_or(0)));
-  refuse(request.samples.has_value(), kSamples, "samples", std::to_string(request.samples.value_or(0)));
-  refuse(request.max_nodes.has_value(), kMaxNodes, "max_nodes", std::to_string(request.max_nodes.value_or(0)));
+  return {report, [] {
+            py::gil_scoped_acquire gil;
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+            return false;
+          }};
 }
 
 }  // namespace cartan::python
 
 PYBIND11_MODULE(_cartan, m) {
   m.doc() = "cartan: geometric mechanics on Lie groups with invariant connections (compiled core).";
+  pybind11::class_<cartan::python::SolveRequest>(m, "_SolveRequest")
+      .def(pybind11::init<>())
+      .def_readwrite("method", &cartan::python::SolveRequest::method)
+      .def_readwrite("continuation", &cartan::python::SolveRequest::continuation)
+      .def_readwrite("order", &cartan::python::SolveRequest::order)
+      .def_readwrite("tol", &cartan::python::SolveRequest::tol)
+      .def_readwrite("max_iterations", &cartan::python::SolveRequest::max_iterations)
+      .def_readwrite("segments", &cartan::python::SolveRequest::segments)
+      .def_readwrite("lambda_start", &cartan::python::SolveRequest::lambda_start)
+      .def_readwrite("samples", &cartan::python::SolveRequest::samples)
+      .def_readwrite("max_nodes", &cartan::python::SolveRequest::max_nodes);
+  m.attr("statuses") = cartan::enum_words<cartan::Status>();
   cartan::python::bind_so3(m);
   cartan::python::bind_heisenberg(m);
   cartan::python::bind_se3(m);

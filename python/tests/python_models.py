@@ -12,9 +12,10 @@ def vee_skew(m):
 
 
 class PyRigidBody:
-    group = cartan.SO3
+    """l = 1/2 v.I v - V(g) with V = 0; `group` any group of dimension 3 (SE(2) too: a kinetic energy)."""
 
-    def __init__(self, inertia):
+    def __init__(self, inertia, group=cartan.SO3):
+        self.group = group
         self.inertia = np.diag(inertia).astype(float)
 
     def potential(self, g):

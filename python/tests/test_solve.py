@@ -149,15 +149,17 @@ def test_optional_python_hessian_is_used_and_exact():
 def test_every_method_reaches_the_same_discrete_solution():
     kwargs = dict(lam=0.5, T=3.0, N=150, gT=cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1]))
     model = cartan.SO3Oscillator(INERTIA)
-    ref = cartan.solve(model, method="single-shooting", tol=1e-12, **kwargs)
+    ref = cartan.solve(model, method="shooting", tol=1e-12, **kwargs)
     assert ref.success and ref.branch == "direct from the geodesic guess"
     results = {
         "two-level": cartan.solve(model, method="two-level", tol=1e-11, **kwargs),
-        "shooting": cartan.solve(model, method="shooting", tol=1e-12, **kwargs),
+        "auto": cartan.solve(model, tol=1e-12, **kwargs),
+        "continuation-T": cartan.solve(model, method="shooting", continuation="T", tol=1e-12, **kwargs),
         "multiple-shooting": cartan.solve(model, method="multiple-shooting", segments=3, tol=1e-12, **kwargs),
-        "continuation-lambda": cartan.solve(model, method="continuation-lambda", lambda_start=0.0, tol=1e-12,
-                                            **kwargs),
-        "guess": cartan.solve(model, method="single-shooting", v0=ref.v0, xi0=ref.xi0, tol=1e-12, **kwargs),
+        "continuation-lambda": cartan.solve(model, method="shooting", continuation="lambda", lambda_start=0.0,
+                                            tol=1e-12, **kwargs),
+        "guess": cartan.solve(model, method="shooting", v0=ref.v0, xi0=ref.xi0, tol=1e-12, **kwargs),
+        "trajectory": cartan.solve(model, method="shooting", guess=ref, tol=1e-12, **kwargs),
     }
     for name, r in results.items():
         assert r.success, (name, r.message)
@@ -165,21 +167,26 @@ def test_every_method_reaches_the_same_discrete_solution():
     assert results["two-level"].outer_iterations > 1 and results["two-level"].method == "two-level"
     assert results["multiple-shooting"].method == "multiple-shooting"
     assert results["continuation-lambda"].branch.startswith("continued in lambda from lambda = 0")
-    assert results["guess"].branch == "from the given guess" and results["guess"].inner_iterations <= 1
+    assert results["guess"].branch == "direct from the given guess" and results["guess"].inner_iterations <= 1
+    assert results["trajectory"].inner_iterations <= 1
+    assert results["auto"].branch == "shooting (direct from the geodesic guess)"
+    # every result reports the discrete action S_h of its trajectory: the same solution, the same S_h
+    for r in results.values():
+        assert r.action == pytest.approx(ref.action, rel=1e-7)
     # "collocation" solves the continuous problem, not the discrete one: tested in test_bvp.py.
-    assert set(cartan.METHODS) == {"two-level", "shooting", "single-shooting", "multiple-shooting",
-                                   "continuation-lambda", "collocation"}
+    assert cartan.METHODS == ("auto", "shooting", "multiple-shooting", "two-level", "collocation")
+    assert "strategy-failed" in cartan.STATUSES and "converged" in cartan.STATUSES
 
 
 def test_failure_is_a_result_not_an_exception():
-    r = cartan.solve(cartan.SO3Oscillator(INERTIA), lam=0.0, T=12, N=800, method="single-shooting", max_iterations=3,
+    r = cartan.solve(cartan.SO3Oscillator(INERTIA), lam=0.0, T=12, N=800, method="shooting", max_iterations=3,
                      gT=cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1]))
     assert not r.success and r.status != "converged" and "shooting" in r.message
 
 
 def test_solver_errors_raise_value_error_with_the_cpp_message():
     model = cartan.RigidBody(INERTIA)
-    with pytest.raises(ValueError, match=r'^cartan\.solve: method = "newton" is not one of: two-level, shooting, '):
+    with pytest.raises(ValueError, match=r'^cartan\.solve: method = "newton" is not one of: auto, shooting, '):
         cartan.solve(model, lam=0.5, T=1, N=10, gT=GT, method="newton")
     with pytest.raises(ValueError, match=r"^TransportedProblem: T = -1 must be positive$"):
         cartan.solve(model, lam=0.5, T=-1, N=10, gT=GT)
@@ -187,11 +194,11 @@ def test_solver_errors_raise_value_error_with_the_cpp_message():
         cartan.solve(model, lam=0.5, T=1, N=0, gT=GT)
     with pytest.raises(ValueError, match=r"^SO3: gT = \[2, 0, 0; .* is not orthogonal"):
         cartan.solve(model, lam=0.5, T=1, N=10, gT=np.diag([2.0, 1, 1]))
-    with pytest.raises(ValueError, match=r'^cartan\.solve: v0 = \(given\) is not an option of method "shooting"$'):
-        cartan.solve(model, lam=0.5, T=1, N=10, gT=GT, v0=np.zeros(3))
+    with pytest.raises(ValueError, match=r"^solve: method collocation takes a trajectory guess, not v0/xi0$"):
+        cartan.solve(model, lam=0.5, T=1, N=10, gT=GT, method="collocation", v0=np.zeros(3))
     with pytest.raises(ValueError, match=r"^cartan\.solve: order = 3 must be 1 or 2$"):
         cartan.solve(model, lam=0.5, T=1, N=10, gT=GT, order=3)
-    with pytest.raises(ValueError, match=r"^ShootingOptions: tolerance = -1 must be positive$"):
+    with pytest.raises(ValueError, match=r"^SolveOptions: tol = -1 must be positive$"):
         cartan.solve(model, lam=0.5, T=1, N=10, gT=GT, tol=-1)
     with pytest.raises(ValueError, match=r"^cartan\.solve: lagrangian = SpatialRigidBody is right-reduced"):
         cartan.solve(cartan.SpatialRigidBody(INERTIA), lam=0.5, T=1, N=10, gT=GT)
@@ -250,3 +257,35 @@ def test_python_lagrangian_on_other_groups_reproduces_the_classical_limit(group)
     order = np.log2(errors[0] / errors[1])
     print(f"\n{group.name}: |v0 - v0_ref| = {errors}, order {order:.2f}")
     assert errors[1] < 1e-2 and 1.8 < order < 2.3
+
+
+def test_failed_strategy_never_returns_another_problems_trajectory():
+    # Every method capped at 2 iterations fails the T = 12 oscillator; whatever comes back is of T = 12.
+    gT = cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1])
+    r = cartan.solve(cartan.SO3Oscillator(INERTIA), lam=0.5, T=12, N=800, gT=gT, max_iterations=2, tol=1e-12)
+    assert not r.success and r.status == "strategy-failed" and r.branch.startswith("failed")
+    assert len(r.t) in (0, 801)
+    if len(r.t):
+        assert r.t[-1] == pytest.approx(12, rel=1e-12)
+
+
+def test_se2_lambda_outside_zero_one_by_the_default_strategy():
+    # lambda = -0.5 and 2 on SE(2): the cases, solved by the default strategy.
+    gT = cartan.SE2.exp([1.0, 0.5, 2.0])
+    for lam in (-0.5, 2.0):
+        r = cartan.solve(PyRigidBody([1.0, 2.0, 0.5], group=cartan.SE2), lam=lam, T=2, N=200, gT=gT, tol=1e-10)
+        assert r.success, (lam, r.message)
+        assert r.t[-1] == pytest.approx(2, rel=1e-12) and len(r.t) == 201
+
+
+def test_progress_callback_and_its_errors():
+    seen = []
+    gT = cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1])
+    r = cartan.solve(cartan.SO3Oscillator(INERTIA), lam=0.5, T=3, N=100, gT=gT,
+                     progress=lambda stage, it, res: seen.append((stage, it, res)))
+    assert r.success and seen and seen[0][0] == "shooting" and seen[0][1] == 0
+
+    def stop(stage, it, res):
+        raise RuntimeError("stop here")
+    with pytest.raises(RuntimeError, match="stop here"):
+        cartan.solve(cartan.SO3Oscillator(INERTIA), lam=0.5, T=3, N=100, gT=gT, progress=stop)

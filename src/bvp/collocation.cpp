@@ -219,7 +219,7 @@ ResidualSize residual_size(const Iterate& it, int n, double tol) {
 }
 
 struct NewtonOutcome {
-  BvpStatus status = BvpStatus::Success;
+  Status status = Status::Converged;
   std::string message;
 };
 
@@ -266,9 +266,13 @@ NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& option
     const ResidualSize size = residual_size(it, n, options.tol);
     if (newton_converged(size, options)) return {};
     if (iteration == options.max_newton_iterations) {
-      return {BvpStatus::NotConverged, "Newton did not converge in " + std::to_string(iteration) +
+      return {Status::NotConverged, "Newton did not converge in " + std::to_string(iteration) +
                                            " iterations on " + std::to_string(it.nodes()) + " nodes: " +
                                            describe(size, options)};
+    }
+    if (options.monitor != nullptr) {
+      options.monitor->report(counters.newton, std::max(size.collocation, size.boundary));
+      if (options.monitor->stop_requested()) return {Status::Interrupted, "stop requested"};
     }
     ++counters.newton;
     const VectorXd z = it.unknowns();
@@ -289,12 +293,12 @@ NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& option
     jacobian(model, it, jac);
     ++counters.jacobians;
     if (!solver.factorize(jac)) {
-      return {BvpStatus::SingularJacobian, "the collocation Jacobian is singular on " + std::to_string(it.nodes()) +
+      return {Status::SingularJacobian, "the collocation Jacobian is singular on " + std::to_string(it.nodes()) +
                                                " nodes (" + solver.error() + ")"};
     }
     const VectorXd step = solver.solve(it.residual);
     if (!step.allFinite()) {
-      return {BvpStatus::SingularJacobian,
+      return {Status::SingularJacobian,
               "the Newton step is not finite on " + std::to_string(it.nodes()) + " nodes (singular Jacobian)"};
     }
     const double norm = step.norm();
@@ -308,7 +312,7 @@ NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& option
       reuse = accepted && alpha == 1 && worth_reusing(simplified, norm);
     }
     if (!accepted) {
-      return {BvpStatus::NotConverged, "Newton's line search failed after " + std::to_string(kMaxBacktracks) +
+      return {Status::NotConverged, "Newton's line search failed after " + std::to_string(kMaxBacktracks) +
                                            " halvings on " + std::to_string(it.nodes()) + " nodes: " +
                                            describe(size, options)};
     }
@@ -355,7 +359,7 @@ void refine(const Iterate& it, const std::vector<int>& pieces, VectorXd& t, Matr
   y = s.values(t);
 }
 
-void fill(BvpResult& result, Model& model, const Iterate& it, const Counters& counters, BvpStatus status,
+void fill(BvpResult& result, Model& model, const Iterate& it, const Counters& counters, Status status,
           const std::string& message) {
   result.status = status;
   result.t = it.t;
@@ -414,26 +418,27 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
     result.refinements = round;
     const VectorXd params = round == 0 ? p : it.p;
     if (!evaluate(model, t, y, params, it)) {
-      fill(result, model, it, counters, BvpStatus::NotConverged,
+      fill(result, model, it, counters, Status::NotConverged,
            "f or bc is not finite at the " + std::string(round == 0 ? "initial guess" : "refined mesh's start"));
       return result;
     }
     const NewtonOutcome outcome = newton(model, it, options, counters);
-    if (outcome.status == BvpStatus::SingularJacobian || (outcome.status != BvpStatus::Success && !adapt)) {
+    if (outcome.status == Status::SingularJacobian || outcome.status == Status::Interrupted ||
+        (outcome.status != Status::Converged && !adapt)) {
       fill(result, model, it, counters, outcome.status, outcome.message);
       return result;
     }
     const Index m = it.nodes();
     std::vector<int> pieces(static_cast<std::size_t>(m - 1), 2);  // after a Newton failure: halve all
     std::string why = outcome.message;
-    if (outcome.status == BvpStatus::Success) {
+    if (outcome.status == Status::Converged) {
       if (!adapt) {
-        fill(result, model, it, counters, BvpStatus::Success, "collocation equations solved on the given mesh");
+        fill(result, model, it, counters, Status::Converged, "collocation equations solved on the given mesh");
         return result;
       }
       const VectorXd rms = rms_residuals(model, it);
       if (rms.maxCoeff() <= options.tol) {
-        fill(result, model, it, counters, BvpStatus::Success, "residual below tol = " + format_value(options.tol));
+        fill(result, model, it, counters, Status::Converged, "residual below tol = " + format_value(options.tol));
         return result;
       }
       for (Index i = 0; i + 1 < m; ++i) {
@@ -446,15 +451,15 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
     Index needed = 1;
     for (int parts : pieces) needed += parts;
     if (needed > options.max_nodes) {
-      const BvpStatus status =
-          outcome.status == BvpStatus::Success ? BvpStatus::MaxNodesExceeded : BvpStatus::NotConverged;
+      const Status status =
+          outcome.status == Status::Converged ? Status::MaxNodesExceeded : Status::NotConverged;
       fill(result, model, it, counters, status,
            why + "; refining needs " + std::to_string(needed) + " nodes > max_nodes = " +
                std::to_string(options.max_nodes));
       return result;
     }
     if (round == options.max_refinements) {
-      fill(result, model, it, counters, BvpStatus::NotConverged,
+      fill(result, model, it, counters, Status::NotConverged,
            why + " after max_refinements = " + std::to_string(options.max_refinements));
       return result;
     }
@@ -463,16 +468,6 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
 }
 
 }  // namespace
-
-std::string_view to_string(BvpStatus status) {
-  switch (status) {
-    case BvpStatus::Success: return "success";
-    case BvpStatus::MaxNodesExceeded: return "max-nodes-exceeded";
-    case BvpStatus::SingularJacobian: return "singular-jacobian";
-    case BvpStatus::NotConverged: return "not-converged";
-  }
-  return "unknown";
-}
 
 void CollocationOptions::validate() const {
   constexpr std::string_view where = "CollocationOptions";

@@ -242,7 +242,7 @@ TEST(Collocation, DenseOutputReproducesCubics) {
 TEST(CollocationStatus, MaxNodesExceeded) {
   const BvpResult r = solve_collocation(ShockLayer{1e-3}.system(), uniform(-1, 1, 5), MatrixXd::Zero(2, 5),
                                         VectorXd(0), {.tol = 1e-8, .max_nodes = 40});
-  EXPECT_EQ(r.status, BvpStatus::MaxNodesExceeded) << r.message;
+  EXPECT_EQ(r.status, Status::MaxNodesExceeded) << r.message;
   EXPECT_NE(r.message.find("max_nodes = 40"), std::string::npos) << r.message;
   EXPECT_LE(r.t.size(), 40);
 }
@@ -255,14 +255,14 @@ TEST(CollocationStatus, SingularJacobian) {
   s.bc = [](ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef, VectorRef r) { r << ya[0] - yb[0]; };
   const VectorXd t = uniform(0, 1, 4);
   const BvpResult r = solve_collocation(s, t, t.transpose(), VectorXd(0));
-  EXPECT_EQ(r.status, BvpStatus::SingularJacobian) << r.message;
+  EXPECT_EQ(r.status, Status::SingularJacobian) << r.message;
   EXPECT_NE(r.message.find("singular"), std::string::npos) << r.message;
 }
 
 TEST(CollocationStatus, NotConvergedWhenRefinementsRunOut) {
   const BvpResult r = solve_collocation(ShockLayer{1e-2}.system(), uniform(-1, 1, 5), MatrixXd::Zero(2, 5),
                                         VectorXd(0), {.tol = 1e-8, .max_refinements = 1});
-  EXPECT_EQ(r.status, BvpStatus::NotConverged) << r.message;
+  EXPECT_EQ(r.status, Status::NotConverged) << r.message;
   EXPECT_NE(r.message.find("max_refinements = 1"), std::string::npos) << r.message;
   EXPECT_GT(r.max_rms_residual, 1e-8);
 }
@@ -273,7 +273,7 @@ TEST(CollocationStatus, NotConvergedWhenNewtonFails) {
   const VectorXd t = uniform(0, 1, 5);
   const BvpResult r = solve_collocation(quadratic_problem(true), t, perturbed_guess(t, quadratic_exact, 2.0), VectorXd(0),
                                         {.tol = 1e-6, .max_nodes = 8, .max_newton_iterations = 1});
-  EXPECT_EQ(r.status, BvpStatus::NotConverged) << r.message;
+  EXPECT_EQ(r.status, Status::NotConverged) << r.message;
   EXPECT_NE(r.message.find("Newton did not converge"), std::string::npos) << r.message;
 }
 
@@ -283,7 +283,7 @@ TEST(CollocationStatus, NotConvergedWhenRhsIsNotFinite) {
   s.rhs = [](double, ConstVectorRef y, ConstVectorRef, VectorRef dy) { dy << std::sqrt(y[0]); };
   s.bc = [](ConstVectorRef ya, ConstVectorRef, ConstVectorRef, VectorRef r) { r << ya[0] - 1; };
   const BvpResult r = solve_collocation(s, uniform(0, 1, 3), MatrixXd::Constant(1, 3, -1.0), VectorXd(0));
-  EXPECT_EQ(r.status, BvpStatus::NotConverged) << r.message;
+  EXPECT_EQ(r.status, Status::NotConverged) << r.message;
   EXPECT_NE(r.message.find("not finite"), std::string::npos) << r.message;
 }
 

@@ -133,7 +133,7 @@ TEST(HeisenbergBvp, AgreesWithTransportedShootingAtTheSchemesOrder) {
     for (int N : {50, 100, 200}) {
       const TransportedSolution<Heisenberg> s =
           solve_shooting(h3_problem(lambda, g0, gT, N), {.order = SchemeOrder::Second, .tolerance = 1e-13});
-      ASSERT_TRUE(s.converged) << s.message;
+      ASSERT_TRUE(s.converged()) << s.message;
       const VectorXd times = Eigen::Map<const VectorXd>(s.trajectory.t.data(), static_cast<Eigen::Index>(s.trajectory.t.size()));
       const Eigen::MatrixXd xi = heisenberg_xi(p, c, times);
       double worst = 0;

@@ -97,7 +97,7 @@ void expect_same_continuous_solution(const std::function<Problem(int)>& make, co
   std::vector<double> d;
   for (int N : {50, 100, 200}) {
     const auto s = solve_continuation_in_T(make(N), {.shooting = {.order = SchemeOrder::Second, .tolerance = 1e-13}});
-    ASSERT_TRUE(s.converged) << name << ": " << s.message;
+    ASSERT_TRUE(s.converged()) << name << ": " << s.message;
     d.push_back(difference<Collocation>(c, s));
     ::testing::Test::RecordProperty(name + "_N" + std::to_string(N), format_value(d.back()));
   }

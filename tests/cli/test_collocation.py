@@ -142,18 +142,19 @@ def test_so3_symmetry_of_the_free_body_holds_for_the_collocation_solution():
 
 def test_so3_long_horizon_falls_back_to_the_shooting_branch():
     """The paper's oscillator at T = 12: collocation from the geodesic guess fails (as shooting
-    does), so the CLI starts again from the order-2 shooting solution continued in T; the result
-    says so and is close to that solution (their difference is the order-2 discretisation error
-    at N = 800, ~1e-5). With --continuation none the failure is reported (exit 1)."""
+    does), so with --continuation T the CLI starts again from the order-2 shooting solution
+    continued in T; the result says so and is close to that solution (their difference is the
+    order-2 discretisation error at N = 800, ~1e-5). Without a continuation (the default, none)
+    the failure is reported (exit 1)."""
     oscillator = ["--group", "so3", "--model", "oscillator", "--T", "12", "--N", "800", "--a0=-0.7,-1,-0.7",
                   "--aT", "0.8,0.8,1", "--lambda", "0"]
-    result = run(*oscillator, "--method", "collocation", "--tol", "1e-6", "--samples", "801")
+    result = run(*oscillator, "--method", "collocation", "--continuation", "T", "--tol", "1e-6", "--samples", "801")
     assert result.returncode == 0, result.stderr
     c = json.loads(result.stdout)
     assert c["branch"].startswith("from the order-2 shooting solution (continued in T from T = 3"), c["branch"]
-    result = run(*oscillator, "--order", "2", "--tol", "1e-10")
+    result = run(*oscillator, "--method", "shooting", "--continuation", "T", "--order", "2", "--tol", "1e-10")
     assert result.returncode == 0, result.stderr
     shooting = json.loads(result.stdout)
     assert np.max(np.abs(np.array(c["v"]) - np.array(shooting["v"]))) < 1e-3
-    direct = run(*oscillator, "--method", "collocation", "--continuation", "none", "--tol", "1e-6", timeout=300)
+    direct = run(*oscillator, "--method", "collocation", "--tol", "1e-6", timeout=300)
     assert direct.returncode == 1 and json.loads(direct.stdout)["status"] != "converged"

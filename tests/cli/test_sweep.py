@@ -96,7 +96,7 @@ def test_failed_points_are_rows_and_exit_1(tmp_path):
     grid = tmp_path / "grid.json"
     grid.write_text(json.dumps([
         {"lambda": 0, "aT": [1, 0.2, 0.1]},
-        {"lambda": 0.5, "aT": [1, 0.2, 0.1], "max_iterations": 1, "continuation": "none"},
+        {"lambda": 0.5, "aT": [1, 0.2, 0.1], "max_iterations": 1, "method": "shooting"},
         {"lambda": 0.5, "a0": [], "gT": [1, 0, 0, 0, 2, 0, 0, 0, 1]},
         {"lambda": 1, "aT": [0, 1, 0], "T": 2},
     ]))

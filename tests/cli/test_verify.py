@@ -159,10 +159,22 @@ def test_the_energy_check_sees_a_wrong_model(tmp_path):
 def test_a_failed_solve_fails_the_boundary_check(tmp_path):
     path = tmp_path / "failed.json"
     result = run("solve", "--model", "oscillator", "--T", "12", "--N", "800", "--a0", "-0.7,-1,-0.7",
-                 "--aT", "0.8,0.8,1", "--continuation", "none", "--max-iterations", "3", "--output", str(path))
+                 "--aT", "0.8,0.8,1", "--method", "shooting", "--max-iterations", "3", "--output", str(path))
     assert result.returncode == 1
     code, _, checks = verify(path)
-    assert code == 1 and checks["boundary"]["result"] == "FAIL"
+    assert code == 1 and checks["converged"]["result"] == "FAIL" and checks["boundary"]["result"] == "FAIL"
+
+
+def test_a_failed_default_solve_is_not_converged_not_bad_input(tmp_path):
+    # Every method of the default strategy fails with 3 iterations; the best iterate may be
+    # collocation's dense output, whose samples are not exact rotations: still exit 1, verdict FAIL.
+    path = tmp_path / "failed.json"
+    result = run("solve", "--model", "oscillator", "--T", "12", "--N", "800", "--a0", "-0.7,-1,-0.7",
+                 "--aT", "0.8,0.8,1", "--max-iterations", "3", "--output", str(path))
+    assert result.returncode == 1
+    code, _, checks = verify(path)
+    assert code == 1 and checks["converged"]["result"] == "FAIL"
+    assert "strategy-failed" in checks["converged"]["note"]
 
 
 @pytest.mark.parametrize("content,needle", [

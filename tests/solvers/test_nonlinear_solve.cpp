@@ -20,7 +20,7 @@ bool rosenbrock(const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* j
 
 TEST(LevenbergMarquardt, SolvesRosenbrockWithAnalyticJacobian) {
   const auto report = levenberg_marquardt(rosenbrock, Eigen::Vector2d(-1.2, 1.0), {.tolerance = 1e-13});
-  ASSERT_EQ(report.status, SolveStatus::Converged) << report.message;
+  ASSERT_EQ(report.status, Status::Converged) << report.message;
   EXPECT_NEAR(report.x[0], 1.0, 1e-13);  // |r| <= 1e-13 and J is well conditioned at the root
   EXPECT_NEAR(report.x[1], 1.0, 1e-12);
   EXPECT_LE(report.residual_norm, 1e-13);
@@ -35,7 +35,7 @@ TEST(LevenbergMarquardt, ForwardDifferenceJacobianCountsEvaluations) {
   };
   const auto report =
       levenberg_marquardt(with_forward_difference_jacobian(f, 1e-7), Eigen::Vector2d(-1.2, 1.0), {.tolerance = 1e-12});
-  ASSERT_EQ(report.status, SolveStatus::Converged) << report.message;
+  ASSERT_EQ(report.status, Status::Converged) << report.message;
   EXPECT_EQ(calls, 3 * report.evaluations);  // residual + one per unknown, per evaluation
   EXPECT_NEAR(report.x[0], 1.0, 1e-11);
 }
@@ -48,7 +48,7 @@ TEST(LevenbergMarquardt, ReportsStallAtNonZeroMinimum) {
     return true;
   };
   const auto report = levenberg_marquardt(f, Eigen::VectorXd::Constant(1, 3.0), {.max_iterations = 500});
-  EXPECT_NE(report.status, SolveStatus::Converged);
+  EXPECT_NE(report.status, Status::Converged);
   EXPECT_NEAR(report.residual_norm, 1.0, 1e-6);
   EXPECT_NE(report.message.find("|r| = "), std::string::npos) << report.message;
 }
@@ -59,9 +59,9 @@ TEST(LevenbergMarquardt, ReportsNonFiniteAndIterationLimit) {
     if (jac) *jac = Eigen::MatrixXd::Ones(1, 1);
     return true;
   };
-  EXPECT_EQ(levenberg_marquardt(nan_f, Eigen::VectorXd::Zero(1)).status, SolveStatus::NonFinite);
+  EXPECT_EQ(levenberg_marquardt(nan_f, Eigen::VectorXd::Zero(1)).status, Status::NonFinite);
   const auto limited = levenberg_marquardt(rosenbrock, Eigen::Vector2d(-1.2, 1.0), {.max_iterations = 1});
-  EXPECT_EQ(limited.status, SolveStatus::MaxIterations);
+  EXPECT_EQ(limited.status, Status::MaxIterations);
   EXPECT_EQ(limited.iterations, 1);
   EXPECT_NE(limited.message.find("max-iterations after 1 iterations"), std::string::npos) << limited.message;
 }

@@ -31,7 +31,7 @@ TEST(MultipleShooting, SameSolutionAsSingleShooting) {
   for (double lambda : {0.0, 0.5, 1.0}) {
     const auto problem = paper_free_body(lambda);
     const auto single = solve_shooting(problem, {.tolerance = 1e-12});
-    ASSERT_TRUE(single.converged) << single.message;
+    ASSERT_TRUE(single.converged()) << single.message;
     for (int segments : {1, 4, 10}) {
       for (auto start : {MultipleShootingStart::Sweep, MultipleShootingStart::Geodesic}) {
         if (start == MultipleShootingStart::Geodesic && segments != 10) continue;
@@ -39,9 +39,9 @@ TEST(MultipleShooting, SameSolutionAsSingleShooting) {
             solve_multiple_shooting(problem, {.start = start, .segments = segments, .tolerance = 1e-12});
         const std::string where = "lambda " + std::to_string(lambda) + " M " + std::to_string(segments) + " start " +
                                   std::to_string(static_cast<int>(start)) + ": " + multiple.message;
-        ASSERT_TRUE(multiple.converged) << where;
-        EXPECT_EQ(multiple.status, "converged") << where;
-        EXPECT_EQ(multiple.method, "multiple-shooting");
+        ASSERT_TRUE(multiple.converged()) << where;
+        EXPECT_EQ(multiple.status, Status::Converged) << where;
+        EXPECT_EQ(multiple.method, Method::MultipleShooting);
         EXPECT_LE(std::hypot(multiple.terminal_error, multiple.xi_terminal), 1e-12) << where;
         EXPECT_LE((multiple.v0 - single.v0).norm(), 1e-10) << where;
         EXPECT_LE(trajectory_difference(multiple.trajectory, single.trajectory), 1e-10) << where;
@@ -137,21 +137,21 @@ TEST(MultipleShooting, LongHorizonOscillatorFromTheGeodesicGuess) {
   for (double lambda : {0.0, 0.5, 1.0}) {
     const auto problem = paper_oscillator(lambda);
     const auto continued = solve_continuation_in_T(problem, {.shooting = {.tolerance = 1e-10}});
-    ASSERT_TRUE(continued.converged) << continued.message;
+    ASSERT_TRUE(continued.converged()) << continued.message;
     for (int segments : {8, 16}) {
       const auto s = solve_multiple_shooting(problem, {.segments = segments});
-      std::cout << "[ oscillator T=12 ] lambda " << lambda << " M " << segments << ": " << s.status << ", "
+      std::cout << "[ oscillator T=12 ] lambda " << lambda << " M " << segments << ": " << to_string(s.status) << ", "
                 << s.inner_iterations << " iterations, " << s.sweeps << " sweeps, " << s.solve_time_s
                 << " s, |v0 - v0(continuation)| = " << (s.v0 - continued.v0).norm() << "\n";
       EXPECT_EQ(s.trajectory.g.size(), static_cast<std::size_t>(problem.N) + 1) << s.message;
       EXPECT_EQ(s.residual_history.empty(), false);
-      if (s.converged) {
+      if (s.converged()) {
         EXPECT_LT(s.terminal_error, 1e-6) << s.message;
         EXPECT_LT(s.xi_terminal, 1e-6) << s.message;
         std::cout << "    converged to " << ((s.v0 - continued.v0).norm() < 1e-6 ? "the" : "another")
                   << " branch than continuation in T\n";
       } else {
-        EXPECT_TRUE(s.status == "stalled" || s.status == "max-iterations" || s.status == "singular-jacobian")
+        EXPECT_TRUE(s.status == Status::Stalled || s.status == Status::MaxIterations || s.status == Status::SingularJacobian)
             << s.status;
         EXPECT_NE(s.message.find("|r| = "), std::string::npos) << s.message;
         EXPECT_NE(s.message.find("|r| history ["), std::string::npos) << s.message;
@@ -173,10 +173,10 @@ TEST(MultipleShooting, LongHorizonOscillatorNearTheContinuationSolution) {
   for (double lambda : {0.0, 0.5, 1.0}) {
     const auto problem = paper_oscillator(lambda);
     const auto continued = solve_continuation_in_T(problem, {.shooting = {.tolerance = 1e-11}});
-    ASSERT_TRUE(continued.converged) << continued.message;
+    ASSERT_TRUE(continued.converged()) << continued.message;
     const Eigen::Vector3d guess = continued.v0 + 1e-3 * Eigen::Vector3d(1, -1, 1);
     const auto s = solve_multiple_shooting(problem, {.tolerance = 1e-11}, guess, continued.xi0);
-    ASSERT_TRUE(s.converged) << s.message;
+    ASSERT_TRUE(s.converged()) << s.message;
     EXPECT_LE((s.v0 - continued.v0).norm(), 1e-11) << s.message;
     EXPECT_LE(trajectory_difference(s.trajectory, continued.trajectory), 1e-9) << s.message;
   }
@@ -184,8 +184,8 @@ TEST(MultipleShooting, LongHorizonOscillatorNearTheContinuationSolution) {
 
 TEST(MultipleShooting, FailuresAreReportedNotHidden) {
   const auto s = solve_multiple_shooting(paper_oscillator(0.5, 100, 12), {.segments = 4, .max_iterations = 2});
-  EXPECT_FALSE(s.converged);
-  EXPECT_EQ(s.status, "max-iterations");
+  EXPECT_FALSE(s.converged());
+  EXPECT_EQ(s.status, Status::MaxIterations);
   EXPECT_EQ(s.inner_iterations, 2);
   EXPECT_NE(s.message.find("4 segments"), std::string::npos) << s.message;
   EXPECT_NE(s.message.find("|r| history ["), std::string::npos) << s.message;
@@ -210,7 +210,7 @@ TEST(MultipleShooting, RejectsBadOptions) {
   EXPECT_EQ(default_segments(1), 1);
   EXPECT_EQ(default_segments(800), 8);
   EXPECT_EQ(default_segments(100000), 16);
-  EXPECT_TRUE(solve_multiple_shooting(paper_free_body(0.5, 3, 0.5)).converged);
+  EXPECT_TRUE(solve_multiple_shooting(paper_free_body(0.5, 3, 0.5)).converged());
 }
 
 }  // namespace

@@ -93,8 +93,8 @@ template <class Problem>
 void expect_augmented_equals_two_level(const Problem& problem, SchemeOrder order, const std::string& what) {
   const auto shooting = solve_shooting(problem, {.order = order, .tolerance = 1e-12});
   const auto two_level = solve_two_level(problem, {.order = order, .tolerance = 1e-13});
-  ASSERT_TRUE(shooting.converged) << what << shooting.message;
-  ASSERT_TRUE(two_level.converged) << what << two_level.message;
+  ASSERT_TRUE(shooting.converged()) << what << shooting.message;
+  ASSERT_TRUE(two_level.converged()) << what << two_level.message;
   EXPECT_LE((shooting.v0 - two_level.v0).norm(), 1e-10) << what;
   double worst = 0;
   for (std::size_t k = 0; k < shooting.trajectory.g.size(); ++k) {
@@ -120,8 +120,8 @@ TEST(TransportedScheme, AnalyticJacobianSavesSweeps) {
   const auto problem = paper_free_body(0.5);
   const auto analytic = solve_shooting(problem, {.tolerance = 1e-11});
   const auto differences = solve_shooting(problem, {.tolerance = 1e-11, .analytic_jacobian = false});
-  ASSERT_TRUE(analytic.converged) << analytic.message;
-  ASSERT_TRUE(differences.converged) << differences.message;
+  ASSERT_TRUE(analytic.converged()) << analytic.message;
+  ASSERT_TRUE(differences.converged()) << differences.message;
   EXPECT_LE((analytic.v0 - differences.v0).norm(), 1e-10);
   EXPECT_LE(analytic.sweeps * 4, differences.sweeps) << analytic.message << "\n" << differences.message;
 }
@@ -129,12 +129,12 @@ TEST(TransportedScheme, AnalyticJacobianSavesSweeps) {
 TEST(TransportedScheme, FailuresAreReportedNotHidden) {
   auto problem = paper_oscillator(0.5, 100, 12);
   const auto limited = solve_shooting(problem, {.tolerance = 1e-12, .max_iterations = 2});
-  EXPECT_FALSE(limited.converged);
-  EXPECT_EQ(limited.status, "max-iterations");
+  EXPECT_FALSE(limited.converged());
+  EXPECT_EQ(limited.status, Status::MaxIterations);
   EXPECT_NE(limited.message.find("|r| = "), std::string::npos) << limited.message;
   EXPECT_EQ(limited.inner_iterations, 2);
   const auto two_level = solve_two_level(problem, {.max_outer = 1});
-  EXPECT_FALSE(two_level.converged);
+  EXPECT_FALSE(two_level.converged());
   EXPECT_NE(two_level.message.find("outer"), std::string::npos) << two_level.message;
 }
 

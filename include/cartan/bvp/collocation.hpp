@@ -28,6 +28,8 @@
 #include <string_view>
 
 #include "cartan/bvp/cubic_hermite.hpp"
+#include "cartan/monitor.hpp"
+#include "cartan/status.hpp"
 
 namespace cartan::bvp {
 
@@ -66,23 +68,19 @@ struct CollocationOptions {
   /// Reuse the factorised Newton matrix while Newton contracts fast (chord steps); false: a
   /// fresh Jacobian every iteration. Same convergence test either way.
   bool reuse_jacobian = true;
+  /// Progress (one report per Newton iteration) and stop requests (Status::Interrupted); may be null.
+  const SolveMonitor* monitor = nullptr;
 
   /// Throws std::invalid_argument naming the bad option.
   void validate() const;
   double boundary_tolerance() const { return bc_tol > 0 ? bc_tol : tol; }
 };
 
-enum class BvpStatus {
-  Success,           ///< residual <= tol on every interval and |bc| <= bc_tol
-  MaxNodesExceeded,  ///< refinement would need more than max_nodes nodes
-  SingularJacobian,  ///< the collocation Jacobian could not be factorised
-  NotConverged,      ///< Newton failed, refinement budget exhausted, or f/bc not finite
-};
-
-std::string_view to_string(BvpStatus status);
-
+/// Outcomes (cartan/status.hpp): Converged (residual <= tol on every interval and |bc| <=
+/// bc_tol), MaxNodesExceeded, SingularJacobian, NotConverged (Newton failed, refinement budget
+/// exhausted, or f/bc not finite), Interrupted (options.monitor asked to stop).
 struct BvpResult {
-  BvpStatus status = BvpStatus::NotConverged;
+  Status status = Status::NotConverged;
   std::string message;
   Eigen::VectorXd t;             ///< final mesh (m nodes)
   Eigen::MatrixXd y;             ///< n x m solution at the nodes
@@ -96,7 +94,7 @@ struct BvpResult {
   int refinements = 0;           ///< meshes solved after the first
   int rhs_evaluations = 0;       ///< calls of f (finite differences included)
 
-  bool success() const { return status == BvpStatus::Success; }
+  bool success() const { return status == Status::Converged; }
   /// The solution's cubic interpolant (dense output).
   CubicHermite interpolant() const { return {t, y, yp}; }
   Eigen::VectorXd operator()(double time) const { return interpolant().value(time); }

@@ -55,10 +55,9 @@ template <LieGroup G, ReducedLagrangian<G> L>
 TransportedSolution<G> collocation_solution(const TransportedProblem<G, L>& problem, const BvpResult& result,
                                             const Eigen::VectorXd& times, const StateReader<G>& read) {
   TransportedSolution<G> s;
-  s.converged = result.success();
-  s.status = s.converged ? "converged" : std::string(to_string(result.status));
+  s.status = result.status;
   s.message = result.message;
-  s.method = "collocation";
+  s.method = Method::Collocation;
   s.branch = "direct from the geodesic guess on a uniform mesh of N intervals";
   s.order = kCollocationOrder;
   const CubicHermite interpolant = result.interpolant();
@@ -78,6 +77,7 @@ TransportedSolution<G> collocation_solution(const TransportedProblem<G, L>& prob
     s.terminal_error = G::log(G::compose(G::inverse(problem.gT), tr.g.back())).norm();
     s.xi_terminal = tr.xi.back().norm();
   }
+  s.collocation = CollocationReport{static_cast<int>(result.t.size()), result.max_rms_residual};
   s.outer_iterations = result.refinements;
   s.inner_iterations = result.newton_iterations;
   s.sweeps = result.jacobian_evaluations;
@@ -97,8 +97,7 @@ auto timed(double& seconds, F&& f) {
 /// when given, receives the collocation result itself (mesh, residuals).
 template <Potential<Heisenberg> V>
 TransportedSolution<Heisenberg> solve_heisenberg_transported(const HeisenbergNaturalProblem<V>& problem,
-                                                             const CollocationOptions& options, int samples,
-                                                             BvpResult* raw = nullptr) {
+                                                             const CollocationOptions& options, int samples) {
   check_samples(samples);
   double seconds = 0;
   const BvpResult r = timed(seconds, [&] { return solve_heisenberg_collocation(problem, options); });
@@ -108,38 +107,40 @@ TransportedSolution<Heisenberg> solve_heisenberg_transported(const HeisenbergNat
     return TransportedState<Heisenberg>{y.head<3>(), y.segment<3>(3), xi.col(j)};
   });
   s.solve_time_s = seconds;
-  if (raw != nullptr) *raw = r;
   return s;
 }
 
-/// What the generic collocation does when Newton from the geodesic guess does not converge on
-/// the problem's N-interval mesh (long horizons, e.g. the paper's T = 12 oscillator): nothing
-/// (report the adaptive solve from the geodesic guess), or start again from the order-2 shooting
-/// solution found by continuation in T or in lambda (from lambda = 0), whose solution branch the
-/// collocation then refines to the continuous solution; `branch` says which.
-enum class CollocationFallback { None, ContinuationInT, ContinuationInLambda };
-
-/// Any group by the generic system (TransportedCollocation), xi read from the state. With a
-/// fallback, Newton from the geodesic guess must first converge on the N-interval mesh: otherwise
+/// Any group by the generic system (TransportedCollocation), xi read from the state.
+/// `fallback` says what to do when Newton from the geodesic guess does not converge on the
+/// problem's N-interval mesh (long horizons, e.g. the paper's T = 12 oscillator): nothing
+/// (Continuation::None: report the adaptive solve from the geodesic guess), or start again from
+/// the order-2 shooting solution found by continuation in T or in lambda (from lambda = 0), whose
+/// solution branch the collocation then refines to the continuous solution; `branch` says which.
+/// With a fallback, Newton from the geodesic guess must first converge on the N-interval mesh: otherwise
 /// the adaptive solver would refine a guess outside Newton's basin up to max_nodes (measured: 9 s
-/// of 10 on the T = 12 oscillator) before the fallback could start. `raw`, when given, receives
-/// the collocation result itself (mesh, residuals).
+/// of 10 on the T = 12 oscillator) before the fallback could start. A `guess` trajectory (times
+/// from 0 to T) replaces the geodesic guess.
 template <LieGroup G, Potential<G> V>
 TransportedSolution<G> solve_transported_by_collocation(const TransportedProblem<G, NaturalLagrangian<G, V>>& problem,
                                                         const CollocationOptions& options, int samples,
-                                                        CollocationFallback fallback = CollocationFallback::None,
-                                                        BvpResult* raw = nullptr) {
+                                                        Continuation fallback = Continuation::None,
+                                                        const TransportedTrajectory<G>* guess = nullptr) {
   using C = TransportedCollocation<G, V>;
   check_samples(samples);
   problem.validate();
   double seconds = 0;
   std::string branch = "direct from the geodesic guess on a uniform mesh of N intervals";
   const BvpResult r = timed(seconds, [&] {
-    if (fallback == CollocationFallback::None) return C::solve(problem, options);
     const BvpSystem system = C::system(problem);
     Eigen::VectorXd t;
     Eigen::MatrixXd y;
-    C::geodesic_guess(problem, t, y);
+    if (guess != nullptr) {
+      C::guess_from(problem, *guess, t, y);
+      branch = "from the given trajectory";
+    } else {
+      C::geodesic_guess(problem, t, y);
+    }
+    if (fallback == Continuation::None) return solve_collocation(system, t, y, Eigen::VectorXd(0), options);
     BvpResult first = solve_collocation_on_mesh(system, t, y, Eigen::VectorXd(0), options);
     if (first.success()) {
       BvpResult refined = solve_collocation(system, first, options);
@@ -148,11 +149,12 @@ TransportedSolution<G> solve_transported_by_collocation(const TransportedProblem
       return refined;
     }
     const ContinuationOptions continuation{
-        .shooting = {.order = SchemeOrder::Second, .tolerance = options.tol, .max_iterations = options.max_newton_iterations}};
-    const TransportedSolution<G> shooting = fallback == CollocationFallback::ContinuationInLambda
+        .shooting = {.order = SchemeOrder::Second, .tolerance = options.tol, .max_iterations = options.max_newton_iterations,
+                     .monitor = options.monitor}};
+    const TransportedSolution<G> shooting = fallback == Continuation::Lambda
                                                 ? solve_continuation_in_lambda(problem, 0.0, continuation)
                                                 : solve_continuation_in_T(problem, continuation);
-    if (!shooting.converged) {
+    if (!shooting.converged()) {
       first.message += "; the order-2 shooting fallback failed too: " + shooting.message;
       return first;
     }
@@ -169,7 +171,7 @@ TransportedSolution<G> solve_transported_by_collocation(const TransportedProblem
                                    });
   s.branch = branch;
   s.solve_time_s = seconds;
-  if (raw != nullptr) *raw = r;
+  if constexpr (std::same_as<G, SO3>) s.collocation->group_defect = C::orthogonality_defect(r);
   return s;
 }
 

@@ -1,15 +1,22 @@
 #pragma once
-// Continuation for long horizons (docs/paper-notes.md#erratum-4): the transported-velocity BVP has
-// several solutions at long horizons and plain shooting from the geodesic guess may not
+// Continuation for long horizons (docs/paper-notes.md#erratum-4): the transported-velocity BVP
+// has several solutions at long horizons and plain shooting from the geodesic guess may not
 // converge. Continuation follows one solution branch from an easy problem:
 //  * in T: halve the horizon until shooting from the geodesic guess converges, then lengthen
 //    it step by step (same step size h, so N scales with T), each solve starting from the
 //    previous (v0, xi0); a failed stage halves the increment.
-//  * in lambda: from a solution at lambda_start (e.g. the classical lambda = 0, itself found
-//    directly or by continuation in T) to lambda.
-// The result records the path in `branch`, e.g. "continued in T from T = 3 (4 stages)".
+//  * in lambda: from a solution at lambda_start (e.g. the classical lambda = 0, found directly
+//    or by continuation in T) to lambda.
+// Work is not wasted: a start or stage whose residual stops decreasing is abandoned after
+// no_progress_window iterations, while one that is still converging may finish.
+// The result records the path in `branch`, e.g. "continued in T from T = 3 (4 stages)". A
+// failed continuation returns the best iterate *of the requested problem* (the direct attempt,
+// or a solve from the last stage reached), never a stage's trajectory at another T or lambda,
+// and its message says where the path stopped.
 
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <sstream>
 
 #include "cartan/transported/shooting.hpp"
@@ -18,20 +25,24 @@ namespace cartan {
 
 struct ContinuationOptions {
   ShootingOptions shooting;
-  int max_halvings = 8;     ///< of the horizon, looking for a start that converges
-  int max_stages = 200;     ///< successful + failed continuation stages
+  int max_halvings = 8;         ///< of the horizon, looking for a start that converges
+  int max_stages = 200;         ///< successful + failed continuation stages
   double min_increment = 1e-6;  ///< relative to the distance to go; below it the path has failed
-  /// A solve counts as a step along the branch only if it converges within this many
-  /// iterations; slower convergence may have jumped to another solution branch.
-  int quick_iterations = 12;
-  int initial_stages = 8;   ///< the first increment is (target - start) / initial_stages
+  int no_progress_window = 6;   ///< starts and stages whose |r| does not halve in this many iterations are abandoned
+  int initial_stages = 8;       ///< the first increment is (target - start) / initial_stages
+  /// A stage is accepted only if its solution lies within this relative distance of the
+  /// predictor (continue_parameter); farther means it jumped to another branch.
+  double max_correction = 0.1;
 
   void validate() const {
     shooting.validate();
     if (max_halvings < 0) throw_invalid("ContinuationOptions", "max_halvings", std::to_string(max_halvings), "must be >= 0");
     if (max_stages < 1) throw_invalid("ContinuationOptions", "max_stages", std::to_string(max_stages), "must be >= 1");
-    if (quick_iterations < 1) {
-      throw_invalid("ContinuationOptions", "quick_iterations", std::to_string(quick_iterations), "must be >= 1");
+    if (no_progress_window < 1) {
+      throw_invalid("ContinuationOptions", "no_progress_window", std::to_string(no_progress_window), "must be >= 1");
+    }
+    if (!(max_correction > 0)) {
+      throw_invalid("ContinuationOptions", "max_correction", format_value(max_correction), "must be positive");
     }
     if (initial_stages < 1) {
       throw_invalid("ContinuationOptions", "initial_stages", std::to_string(initial_stages), "must be >= 1");
@@ -41,46 +52,131 @@ struct ContinuationOptions {
 
 namespace detail {
 
-/// Walks a scalar parameter from `from` to `to`, solving with the previous solution as the
-/// guess; `make(s)` builds the problem at parameter s. Accumulates counts into `total`.
-/// Every solve on the path is capped at quick_iterations: a slower one would be rejected anyway.
-inline ShootingOptions quick_shooting(const ContinuationOptions& options) {
-  ShootingOptions quick = options.shooting;
-  quick.max_iterations = std::min(quick.max_iterations, options.quick_iterations);
-  return quick;
+/// The shooting options of every solve on a continuation path: abandon hopeless ones early.
+inline ShootingOptions path_shooting(const ContinuationOptions& options) {
+  ShootingOptions path = options.shooting;
+  path.no_progress_window = options.no_progress_window;
+  return path;
 }
 
+/// The size of a result's terminal residual in the units of the convergence test.
+template <LieGroup G, ReducedLagrangian<G> L>
+double scaled_residual(const TransportedProblem<G, L>& problem, const TransportedSolution<G>& s) {
+  if (s.trajectory.t.empty()) return std::numeric_limits<double>::infinity();
+  return std::hypot(s.terminal_error, s.xi_terminal / xi_scale(problem));
+}
+
+/// Where a continuation path stopped.
+struct PathEnd {
+  double reached = 0;   ///< the parameter of the last accepted stage
+  int stages = 0;
+  bool complete = false;
+  std::string why;      ///< empty when complete
+};
+
+/// Walks a scalar parameter from `from` to `to` along one solution branch; `make(s)` builds the
+/// problem at parameter s. Predictor: the secant through the last two accepted solutions (the
+/// previous solution for the first stage). Corrector: shooting from the prediction. A stage is
+/// accepted when it converges *and* lands within max_correction of the prediction (in the
+/// relative norm of `PathNorm`); otherwise the increment is halved. On a smooth branch the
+/// correction shrinks with the increment (quadratically after the first stage), so a small
+/// enough stage is always accepted; a corrector that converges far from the prediction has
+/// jumped to another branch (measured on the paper's T = 12 oscillator: jumps correct by
+/// 0.3-0.8, steps along the branch by < 0.05). Accumulates work into `current`.
 template <LieGroup G, class MakeProblem>
-TransportedSolution<G> continue_parameter(const MakeProblem& make, double from, double to,
-                                          TransportedSolution<G> start, const ContinuationOptions& options,
-                                          int& stages, std::ostringstream& path) {
-  double s = from;
+PathEnd continue_parameter(const MakeProblem& make, double from, double to, TransportedSolution<G>& current,
+                           const ContinuationOptions& options) {
+  PathEnd end{from, 0, false, {}};
   double increment = (to - from) / options.initial_stages;
-  TransportedSolution<G> current = std::move(start);
   int sweeps = current.sweeps, iterations = current.inner_iterations;
-  while (s != to && stages < options.max_stages) {
-    const double next = std::abs(to - s) <= std::abs(increment) ? to : s + increment;
-    ++stages;
-    TransportedSolution<G> trial = solve_shooting(make(next), quick_shooting(options), current.v0, current.xi0);
+  const ShootingOptions path = path_shooting(options);
+  // Relative sizes: v0 against the start's |v0| (or the target's geodesic speed), xi0 against
+  // the start's |xi0| (or the target's xi_scale).
+  const auto target = make(to);
+  const double v_ref = std::max(current.v0.norm(), geodesic_guess(target).norm());
+  const double xi_ref = std::max(current.xi0.norm(), xi_scale(target));
+  const auto distance = [&](const TangentOf<G>& dv, const CovectorOf<G>& dxi) {
+    return std::hypot(v_ref > 0 ? dv.norm() / v_ref : dv.norm(), dxi.norm() / xi_ref);
+  };
+  std::optional<std::pair<TangentOf<G>, CovectorOf<G>>> previous;  // the solution before `current`
+  double previous_s = from;
+  while (end.reached != to) {
+    if (end.stages >= options.max_stages) {
+      end.why = "max_stages = " + std::to_string(options.max_stages) + " reached";
+      break;
+    }
+    if (path.monitor != nullptr && path.monitor->stop_requested()) {
+      end.why = "stop requested";
+      break;
+    }
+    const double next = std::abs(to - end.reached) <= std::abs(increment) ? to : end.reached + increment;
+    ++end.stages;
+    TangentOf<G> v_pred = current.v0;
+    CovectorOf<G> xi_pred = current.xi0;
+    if (previous) {
+      const double ratio = (next - end.reached) / (end.reached - previous_s);
+      v_pred += ratio * (current.v0 - previous->first);
+      xi_pred += ratio * (current.xi0 - previous->second);
+    }
+    TransportedSolution<G> trial = solve_shooting(make(next), path, v_pred, xi_pred);
     sweeps += trial.sweeps;
     iterations += trial.inner_iterations;
-    if (trial.converged && trial.inner_iterations <= options.quick_iterations) {
-      s = next;
+    if (trial.converged() && distance(trial.v0 - v_pred, trial.xi0 - xi_pred) <= options.max_correction) {
+      previous.emplace(current.v0, current.xi0);
+      previous_s = end.reached;
+      end.reached = next;
       current = std::move(trial);
       increment *= 1.5;
     } else {
       increment /= 2;
-      if (std::abs(increment) < options.min_increment * std::abs(to - from)) break;
+      if (std::abs(increment) < options.min_increment * std::abs(to - from)) {
+        end.why = "the increment fell below " + format_value(options.min_increment) +
+                  " of the distance (a fold of the solution branch or a singularity near " +
+                  format_value(end.reached) + ")";
+        break;
+      }
     }
   }
   current.sweeps = sweeps;
   current.inner_iterations = iterations;
-  if (s != to) {
-    current.converged = false;
-    current.status = "continuation-failed";
-    path << "; stopped at " << format_value(s) << " of " << format_value(to);
+  end.complete = end.reached == to;
+  return end;
+}
+
+/// The failure result of a continuation of `problem`: the better (smaller scaled residual) of
+/// `direct` (an attempt on the requested problem, may be empty) and a solve of the requested
+/// problem from the last stage reached; status ContinuationFailed (or Interrupted), all work counted.
+template <LieGroup G, ReducedLagrangian<G> L>
+TransportedSolution<G> best_iterate(const TransportedProblem<G, L>& problem, const TransportedSolution<G>* direct,
+                                    const TransportedSolution<G>* last_stage, const ContinuationOptions& options,
+                                    int sweeps, int iterations) {
+  TransportedSolution<G> best;
+  best.trajectory = {};
+  double best_size = std::numeric_limits<double>::infinity();
+  const auto consider = [&](TransportedSolution<G> candidate) {
+    const double size = scaled_residual(problem, candidate);
+    if (size < best_size || best.trajectory.t.empty()) {
+      best_size = size;
+      best = std::move(candidate);
+    }
+  };
+  if (direct != nullptr) consider(*direct);
+  const bool stopped = options.shooting.monitor != nullptr && options.shooting.monitor->stop_requested();
+  if (last_stage != nullptr && !stopped) {
+    TransportedSolution<G> from_stage = solve_shooting(problem, path_shooting(options), last_stage->v0, last_stage->xi0);
+    sweeps += from_stage.sweeps;
+    iterations += from_stage.inner_iterations;
+    if (from_stage.converged()) {
+      from_stage.sweeps = sweeps;
+      from_stage.inner_iterations = iterations;
+      return from_stage;  // the last stage was close enough after all
+    }
+    consider(std::move(from_stage));
   }
-  return current;
+  best.status = stopped ? Status::Interrupted : Status::ContinuationFailed;
+  best.sweeps = sweeps;
+  best.inner_iterations = iterations;
+  return best;
 }
 
 }  // namespace detail
@@ -88,7 +184,9 @@ TransportedSolution<G> continue_parameter(const MakeProblem& make, double from, 
 /// Continuation in the horizon T (see the header comment).
 template <LieGroup G, ReducedLagrangian<G> L>
 TransportedSolution<G> solve_continuation_in_T(const TransportedProblem<G, L>& problem,
-                                               const ContinuationOptions& options = {}) {
+                                               const ContinuationOptions& options = {},
+                                               std::optional<TangentOf<G>> v0_guess = std::nullopt,
+                                               std::optional<CovectorOf<G>> xi0_guess = std::nullopt) {
   problem.validate();
   options.validate();
   const auto start_time = std::chrono::steady_clock::now();
@@ -100,36 +198,46 @@ TransportedSolution<G> solve_continuation_in_T(const TransportedProblem<G, L>& p
     if (horizon == problem.T) p.N = problem.N;
     return p;
   };
+  const ShootingOptions path = detail::path_shooting(options);
   double start = problem.T;
-  TransportedSolution<G> first;
+  TransportedSolution<G> first, direct;
   int sweeps = 0, iterations = 0;
   for (int halving = 0; halving <= options.max_halvings; ++halving, start /= 2) {
     const auto p = make(start);
-    first = solve_shooting(p, detail::quick_shooting(options), geodesic_guess(p), CovectorOf<G>::Zero());
+    // The given guess is a velocity of the requested problem: at horizon T' the same path
+    // needs T / T' times its speed.
+    const TangentOf<G> v0 = v0_guess ? TangentOf<G>(*v0_guess * (problem.T / start)) : geodesic_guess(p);
+    first = solve_shooting(p, path, v0, xi0_guess && halving == 0 ? *xi0_guess : CovectorOf<G>::Zero());
     sweeps += first.sweeps;
     iterations += first.inner_iterations;
-    if (first.converged && first.inner_iterations <= options.quick_iterations) break;
-    first.converged = false;
+    if (halving == 0) direct = first;
+    if (first.converged() || first.status == Status::Interrupted) break;
   }
   first.sweeps = sweeps;
   first.inner_iterations = iterations;
-  std::ostringstream path;
-  int stages = 0;
-  TransportedSolution<G> result = first;
-  if (!first.converged) {
-    result.status = "continuation-failed";
-    path << "no horizon down to T = " << format_value(start * 2) << " converged from the geodesic guess";
+  std::ostringstream path_text;
+  TransportedSolution<G> result;
+  if (!first.converged()) {
+    path_text << "no horizon down to T = " << format_value(start) << " converged from the "
+              << (v0_guess ? "given" : "geodesic") << " guess";
+    result = detail::best_iterate<G>(problem, &direct, nullptr, options, sweeps, iterations);
   } else if (start == problem.T) {
-    path << "direct from the geodesic guess";
+    path_text << (v0_guess || xi0_guess ? "direct from the given guess" : "direct from the geodesic guess");
+    result = std::move(first);
   } else {
-    path << "continued in T from T = " << format_value(start);
-    result = detail::continue_parameter<G>(make, start, problem.T, std::move(first), options, stages, path);
-    path << " (" << stages << " stages)";
+    path_text << "continued in T from T = " << format_value(start);
+    result = first;
+    const detail::PathEnd end = detail::continue_parameter<G>(make, start, problem.T, result, options);
+    path_text << " (" << end.stages << " stages)";
+    if (!end.complete) {
+      path_text << "; stopped at T = " << format_value(end.reached) << ": " << end.why;
+      result = detail::best_iterate<G>(problem, &direct, &result, options, result.sweeps, result.inner_iterations);
+    }
   }
-  result.method = "continuation";
-  result.branch = path.str();
-  result.message = "continuation in T: " + result.branch + "; " + std::to_string(result.sweeps) +
-                   " sweeps in all; last solve: " + result.message;
+  result.method = Method::Shooting;
+  result.branch = result.converged() ? path_text.str() : "failed: " + path_text.str();
+  result.message = "continuation in T: " + path_text.str() + "; " + std::to_string(result.sweeps) +
+                   " sweeps in all; the returned iterate: " + result.message;
   result.solve_time_s = detail::seconds_since(start_time);
   return result;
 }
@@ -150,22 +258,26 @@ TransportedSolution<G> solve_continuation_in_lambda(const TransportedProblem<G, 
     p.lambda = lambda;
     return p;
   };
-  TransportedSolution<G> first = solve_continuation_in_T(make(lambda_start), options);
-  std::ostringstream path;
-  int stages = 0;
-  TransportedSolution<G> result = first;
-  if (!first.converged) {
-    result.status = "continuation-failed";
-    path << "no solution at lambda = " << format_value(lambda_start) << " (" << first.branch << ")";
+  TransportedSolution<G> result = solve_continuation_in_T(make(lambda_start), options);
+  std::ostringstream path_text;
+  if (!result.converged()) {
+    path_text << "no solution at lambda = " << format_value(lambda_start) << " (" << result.branch << ")";
+    const bool same = lambda_start == problem.lambda;  // then that attempt was of the requested problem
+    result = detail::best_iterate<G>(problem, same ? &result : nullptr, nullptr, options, result.sweeps,
+                                     result.inner_iterations);
   } else {
-    path << "continued in lambda from lambda = " << format_value(lambda_start) << " [" << first.branch << "]";
-    result = detail::continue_parameter<G>(make, lambda_start, problem.lambda, std::move(first), options, stages, path);
-    path << " (" << stages << " stages)";
+    path_text << "continued in lambda from lambda = " << format_value(lambda_start) << " [" << result.branch << "]";
+    const detail::PathEnd end = detail::continue_parameter<G>(make, lambda_start, problem.lambda, result, options);
+    path_text << " (" << end.stages << " stages)";
+    if (!end.complete) {
+      path_text << "; stopped at lambda = " << format_value(end.reached) << ": " << end.why;
+      result = detail::best_iterate<G>(problem, nullptr, &result, options, result.sweeps, result.inner_iterations);
+    }
   }
-  result.method = "continuation";
-  result.branch = path.str();
-  result.message = "continuation in lambda: " + result.branch + "; " + std::to_string(result.sweeps) +
-                   " sweeps in all; last solve: " + result.message;
+  result.method = Method::Shooting;
+  result.branch = result.converged() ? path_text.str() : "failed: " + path_text.str();
+  result.message = "continuation in lambda: " + path_text.str() + "; " + std::to_string(result.sweeps) +
+                   " sweeps in all; the returned iterate: " + result.message;
   result.solve_time_s = detail::seconds_since(start_time);
   return result;
 }

@@ -46,6 +46,7 @@ struct MultipleShootingOptions {
   double tolerance = 1e-10;     ///< on the lifted residual and on one plain sweep's |(log(gT^{-1} g_N), xi_N)|
   int max_iterations = 100;     ///< Levenberg–Marquardt iterations over all rounds
   int recentre_every = 10;      ///< iterations per round; the charts are re-centred between rounds
+  const SolveMonitor* monitor = nullptr;  ///< progress and stop requests; may be null
 
   void validate() const {
     if (segments && *segments < 1) {
@@ -276,7 +277,7 @@ template <LieGroup G, ReducedLagrangian<G> L>
 double single_sweep_residual(const TransportedScheme<G, L>& scheme, const TangentOf<G>& v0, const CovectorOf<G>& xi0) {
   SweepOutput<G, L> out;
   if (!forward_sweep(scheme, v0, xi0, nullptr, 0, out)) return std::numeric_limits<double>::infinity();
-  return std::hypot(scheme.terminal_residual(out.last).norm(), out.last.xi.norm());
+  return std::hypot(scheme.terminal_residual(out.last).norm(), out.last.xi.norm() / xi_scale(scheme.problem()));
 }
 
 /// sigma_min / sigma_max of the lifted Jacobian at x (NaN if the evaluation failed): a value
@@ -316,7 +317,7 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
   const TransportedScheme<G, L> scheme(problem, options.order);
   System system(scheme, segments);
   TransportedSolution<G> solution;
-  solution.method = "multiple-shooting";
+  solution.method = Method::MultipleShooting;
   solution.order = static_cast<int>(options.order);
   const bool geodesic = options.start == MultipleShootingStart::Geodesic;
   solution.branch = std::string("from the initial guess, segment states from ") +
@@ -328,7 +329,7 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
   std::optional<Eigen::VectorXd> x =
       geodesic ? system.initialise_geodesic(v0_guess, xi0_guess) : system.initialise(v0_guess, xi0_guess);
   if (!x) {
-    solution.status = "non-finite";
+    solution.status = Status::NonFinite;
     solution.message = message.str() + "the initial segment states failed: " + system.failure();
     solution.solve_time_s = detail::seconds_since(start);
     return solution;
@@ -345,19 +346,20 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
   bool lifted_converged = false;
   while (solution.inner_iterations < options.max_iterations) {
     const int budget = std::min(options.recentre_every, options.max_iterations - solution.inner_iterations);
-    report = levenberg_marquardt(f, *x, {.tolerance = lifted_tolerance, .max_iterations = budget});
+    report = levenberg_marquardt(f, *x, {.tolerance = lifted_tolerance, .max_iterations = budget,
+                                         .monitor = options.monitor});
     solution.inner_iterations += report.iterations;
     const auto& h = report.residual_history;
     solution.residual_history.insert(solution.residual_history.end(), h.begin() + (rounds > 0 && !h.empty()), h.end());
     ++rounds;
     *x = report.x;
-    if (report.status == SolveStatus::MaxIterations) {
+    if (report.status == Status::MaxIterations) {
       system.recentre(*x);
       continue;
     }
     // Below the tolerance; after a tightening, a stall at the rounding floor counts too.
-    lifted_converged = report.status == SolveStatus::Converged ||
-                       (tightenings > 0 && report.status == SolveStatus::Stalled);
+    lifted_converged = report.status == Status::Converged ||
+                       (tightenings > 0 && report.status == Status::Stalled);
     if (!lifted_converged) break;
     ++solution.sweeps;
     const double single = detail::single_sweep_residual(scheme, System::v0(*x), System::xi0(*x));
@@ -367,12 +369,12 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
     if (!(lifted_tolerance > 0)) break;  // single is inf (its sweep failed) or |r| is exactly 0
   }
   const bool recorded = detail::record_solution(scheme, System::v0(*x), System::xi0(*x), nullptr, solution);
-  const bool consistent = recorded && std::hypot(solution.terminal_error, solution.xi_terminal) <= options.tolerance;
-  solution.converged = lifted_converged && consistent;
-  solution.status = !recorded                              ? "non-finite"
-                    : solution.converged                   ? "converged"
-                    : lifted_converged                     ? "inconsistent"
-                                                           : std::string(to_string(report.status));
+  const bool consistent =
+      recorded && std::hypot(solution.terminal_error, solution.xi_terminal / xi_scale(problem)) <= options.tolerance;
+  solution.status = !recorded                     ? Status::NonFinite
+                    : lifted_converged && consistent ? Status::Converged
+                    : lifted_converged               ? Status::Inconsistent
+                                                     : report.status;
   double conditioning = 0;
   if (!lifted_converged) {
     ++solution.sweeps;

@@ -5,8 +5,16 @@
 // two-level scheme (xi_k from the backward recursion with xi_N = 0), without the outer loop.
 // The Jacobian is analytic (a tangent-linear sweep, one sweep per evaluation) or by forward
 // differences (1 + 2n sweeps).
+//
+// Scale. The unknowns and residual are made dimensionless so that the same tolerance means the
+// same at every horizon: v0 in units of 1/T, xi in units of the curvature integral's size
+// xi_scale = T |v_ref| |mu_ref| (v_ref the geodesic velocity, mu_ref its momentum at g0; for a
+// kinetic Lagrangian the problem at horizon cT is then the same problem). The convergence test
+// is |(log(gT^{-1} g_N), xi_N / xi_scale)| <= tolerance: radians, and a relative xi.
 
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "cartan/nonlinear_solve.hpp"
@@ -17,9 +25,11 @@ namespace cartan {
 
 struct ShootingOptions {
   SchemeOrder order = SchemeOrder::First;
-  double tolerance = 1e-10;     ///< on |(log(gT^{-1} g_N), xi_N)|
+  double tolerance = 1e-10;     ///< on |(log(gT^{-1} g_N), xi_N / xi_scale)| (dimensionless)
   int max_iterations = 100;     ///< Levenberg–Marquardt iterations
   bool analytic_jacobian = true;
+  int no_progress_window = 0;   ///< > 0: abandon when |r| has not halved in this many iterations
+  const SolveMonitor* monitor = nullptr;  ///< progress and stop requests; may be null
 
   void validate() const {
     require_finite(tolerance, "ShootingOptions", "tolerance");
@@ -36,6 +46,16 @@ TangentOf<G> geodesic_guess(const TransportedProblem<G, L>& problem) {
   return G::log(G::compose(G::inverse(problem.g0), problem.gT)) / problem.T;
 }
 
+/// The size of xi on this problem (see the header comment): T |v_ref| |mu_ref|, with v_ref the
+/// geodesic velocity (or 1/T along the first axis when g0 = gT); at least the smallest normal.
+template <LieGroup G, ReducedLagrangian<G> L>
+double xi_scale(const TransportedProblem<G, L>& problem) {
+  TangentOf<G> v = geodesic_guess(problem);
+  if (!(v.norm() > 0)) v = TangentOf<G>::Unit(0) / problem.T;
+  const double scale = problem.T * v.norm() * problem.lagrangian.momentum(0, problem.g0, v).norm();
+  return std::isfinite(scale) && scale > std::numeric_limits<double>::min() ? scale : 1.0;
+}
+
 namespace detail {
 
 inline double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -49,7 +69,10 @@ bool record_solution(const TransportedScheme<G, L>& scheme, const TangentOf<G>& 
   SweepOutput<G, L> out;
   out.trajectory = &solution.trajectory;
   ++solution.sweeps;
-  if (!forward_sweep(scheme, v0, xi0, given_xi, 0, out)) return false;
+  if (!forward_sweep(scheme, v0, xi0, given_xi, 0, out)) {
+    solution.trajectory = {};  // never a partial trajectory
+    return false;
+  }
   solution.v0 = v0;
   solution.xi0 = out.trajectory->xi.front();
   solution.terminal_error = scheme.terminal_residual(out.last).norm();
@@ -70,12 +93,14 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   const auto start = std::chrono::steady_clock::now();
   const TransportedScheme<G, L> scheme(problem, options.order);
   TransportedSolution<G> solution;
-  solution.method = "shooting";
+  solution.method = Method::Shooting;
   solution.order = static_cast<int>(options.order);
   std::string failure;
+  // Dimensionless unknowns x = (T v0, xi0 / s) and residual (r_g, xi_N / s) (header comment).
+  const double T = problem.T, s = xi_scale(problem);
 
-  auto unpack = [](const Eigen::VectorXd& x) {
-    return std::pair<TangentOf<G>, CovectorOf<G>>(x.head<n>(), x.tail<n>());
+  auto unpack = [&](const Eigen::VectorXd& x) {
+    return std::pair<TangentOf<G>, CovectorOf<G>>(x.head<n>() / T, x.tail<n>() * s);
   };
   auto residual_only = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
     const auto [v0, xi0] = unpack(x);
@@ -86,7 +111,7 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
       return false;
     }
     r.resize(2 * n);
-    r << scheme.terminal_residual(out.last), out.last.xi;
+    r << scheme.terminal_residual(out.last), out.last.xi / s;
     return true;
   };
   ResidualFunction f;
@@ -102,28 +127,32 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
       }
       const TangentOf<G> rg = scheme.terminal_residual(out.last);
       r.resize(2 * n);
-      r << rg, out.last.xi;
+      r << rg, out.last.xi / s;
+      // Chain rule for the scaled unknowns: columns for v0 / T and xi0 s; rows of xi_N / s.
       jac->resize(2 * n, 2 * n);
       jac->topRows(n) = scheme.terminal_residual_tangent(rg, *out.tangent);
-      jac->bottomRows(n) = out.tangent->xi;
+      jac->bottomRows(n) = out.tangent->xi / s;
+      jac->leftCols(n) /= T;
+      jac->rightCols(n) *= s;
       return true;
     };
   } else {
     f = with_forward_difference_jacobian(residual_only, 1e-7);
   }
   Eigen::VectorXd x0(2 * n);
-  x0 << v0_guess, xi0_guess;
+  x0 << v0_guess * T, xi0_guess / s;
   const NonlinearSolveReport report =
-      levenberg_marquardt(f, x0, {.tolerance = options.tolerance, .max_iterations = options.max_iterations});
+      levenberg_marquardt(f, x0, {.tolerance = options.tolerance, .max_iterations = options.max_iterations,
+                                  .no_progress_window = options.no_progress_window, .monitor = options.monitor});
   solution.inner_iterations = report.iterations;
   solution.residual_history = report.residual_history;
   const auto [v0, xi0] = unpack(report.x);
   const bool recorded = detail::record_solution(scheme, v0, xi0, nullptr, solution);
-  solution.converged = report.status == SolveStatus::Converged && recorded;
-  solution.status = recorded ? std::string(to_string(report.status)) : "non-finite";
+  solution.status = recorded ? report.status : Status::NonFinite;
   std::ostringstream message;
   message << "shooting (" << (options.analytic_jacobian ? "analytic" : "finite-difference")
-          << " Jacobian): " << report.message << ", " << solution.sweeps << " sweeps";
+          << " Jacobian, xi scale " << format_value(s) << "): " << report.message << ", " << solution.sweeps
+          << " sweeps";
   if (!failure.empty()) message << "; last failed sweep: " << failure;
   solution.message = message.str();
   solution.solve_time_s = detail::seconds_since(start);

@@ -2,21 +2,34 @@
 // What every transported-velocity solver returns: a status and diagnostics, never a silent
 // trajectory (DESIGN.md "Results, not exceptions, for numerics").
 
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "cartan/status.hpp"
+#include "cartan/transported/method.hpp"
 #include "cartan/transported/scheme.hpp"
 
 namespace cartan {
 
+/// What only collocation reports: the final mesh size, the largest relative RMS residual on it,
+/// and for SO(3) max |g^T g - I| over the mesh of g and the transport element (NaN elsewhere).
+struct CollocationReport {
+  int mesh_size = 0;
+  double max_residual = 0;
+  double group_defect = std::numeric_limits<double>::quiet_NaN();
+};
+
 template <LieGroup G>
 struct TransportedSolution {
-  bool converged = false;
-  std::string status;   ///< "converged" or a failure word (max-iterations, stalled, non-finite, ...)
-  std::string message;  ///< human-readable diagnostics (iterations, residuals)
-  std::string method;   ///< two-level | shooting | multiple-shooting | continuation
-  std::string branch;   ///< how the solution was reached (initial guess, continuation path)
-  int order = 1;
+  Status status = Status::NotConverged;
+  std::string message;  ///< human-readable diagnostics (iterations, residuals, every attempt)
+  Method method = Method::Shooting;  ///< the method that produced this result (never Auto)
+  std::string branch;   ///< how the solution was reached (guess, continuation path, strategy)
+  int order = 1;        ///< of the discrete scheme (1, 2) or of collocation (4)
+  /// The requested problem's trajectory: at a failure, the best iterate found *for the requested
+  /// problem* (never a stage of a continuation at another T or lambda), or empty.
   TransportedTrajectory<G> trajectory;
   TangentOf<G> v0 = TangentOf<G>::Zero();
   CovectorOf<G> xi0 = CovectorOf<G>::Zero();
@@ -27,6 +40,13 @@ struct TransportedSolution {
   int sweeps = 0;             ///< forward sweeps of the scheme (tangent sweeps count once)
   std::vector<double> residual_history;
   double solve_time_s = 0;
+  /// The discrete transported action S_h of the trajectory (verify/action.hpp), so that users
+  /// can tell solution branches apart; NaN when there is no trajectory.
+  double action = std::numeric_limits<double>::quiet_NaN();
+
+  std::optional<CollocationReport> collocation;  ///< set by collocation only
+
+  bool converged() const { return status == Status::Converged; }
 };
 
 }  // namespace cartan

@@ -14,11 +14,12 @@ namespace cartan {
 
 struct TwoLevelOptions {
   SchemeOrder order = SchemeOrder::First;
-  double tolerance = 1e-8;         ///< outer: max_k |xi_new - xi_old|
+  double tolerance = 1e-8;         ///< outer: max_k |xi_new - xi_old| / xi_scale (shooting.hpp)
   double inner_tolerance = 1e-13;  ///< inner: |log(gT^{-1} g_N)| (far tighter than the outer one)
   int max_outer = 100;
   int max_inner = 100;
   bool analytic_jacobian = false;  ///< the paper uses finite differences
+  const SolveMonitor* monitor = nullptr;  ///< progress and stop requests; may be null
 
   void validate() const {
     for (auto [name, value] : {std::pair{"tolerance", tolerance}, std::pair{"inner_tolerance", inner_tolerance}}) {
@@ -42,7 +43,7 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
   const double dt = scheme.step_size();
   const std::size_t nodes = static_cast<std::size_t>(problem.N) + 1;
   TransportedSolution<G> solution;
-  solution.method = "two-level";
+  solution.method = Method::TwoLevel;
   solution.order = static_cast<int>(options.order);
 
   std::vector<CovectorOf<G>> xi(nodes, CovectorOf<G>::Zero());  // xi^(0) = 0 (Step 1)
@@ -67,6 +68,11 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
         [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) { return inner_residual(x, r, nullptr); }, 1e-7);
   }
 
+  // The outer test max_k |xi_new - xi_old| < tolerance is relative to xi's size (shooting.hpp).
+  const double scale = xi_scale(problem);
+  // Until a loop decides, the status is the initial NotConverged.
+  const auto decided = [](Status s) { return s != Status::NotConverged; };
+  solution.status = Status::NotConverged;
   Eigen::VectorXd v0 = v0_guess;
   double change = std::numeric_limits<double>::infinity();
   NonlinearSolveReport report;
@@ -74,11 +80,12 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
   for (int outer = 0; outer < options.max_outer; ++outer) {
     solution.outer_iterations = outer + 1;
     // Steps 2-3: inner shooting for v0 with the current {xi_k}.
-    report = levenberg_marquardt(inner, v0, {.tolerance = options.inner_tolerance, .max_iterations = options.max_inner});
+    report = levenberg_marquardt(inner, v0, {.tolerance = options.inner_tolerance, .max_iterations = options.max_inner,
+                                             .monitor = options.monitor});
     solution.inner_iterations += report.iterations;
     v0 = report.x;
-    if (report.status != SolveStatus::Converged) {
-      solution.status = "inner-not-converged";
+    if (report.status != Status::Converged) {
+      solution.status = report.status == Status::Interrupted ? Status::Interrupted : Status::InnerNotConverged;
       solution.message = "two-level: inner shooting failed in outer iteration " + std::to_string(outer + 1) + ": " +
                          report.message + (failure.empty() ? "" : "; last failed sweep: " + failure);
       break;
@@ -88,7 +95,7 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
     out.xi_rates = &rates;
     ++solution.sweeps;
     if (!forward_sweep(scheme, TangentOf<G>(v0), CovectorOf<G>::Zero(), &xi, 0, out)) {
-      solution.status = "non-finite";
+      solution.status = Status::NonFinite;
       solution.message = "two-level: the sweep for the xi rates failed in outer iteration " +
                          std::to_string(outer + 1) + ": " + out.failure;
       break;
@@ -101,24 +108,22 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
     history << (outer ? ", " : "") << format_value(change);
     solution.residual_history.push_back(change);
     // Step 5: stop when the sequence no longer changes.
-    if (change < options.tolerance) {
-      solution.converged = true;
-      solution.status = "converged";
+    if (change < options.tolerance * scale) {
+      solution.status = Status::Converged;
       break;
     }
     if (!std::isfinite(change)) {
-      solution.status = "non-finite";
+      solution.status = Status::NonFinite;
       break;
     }
   }
-  if (solution.status.empty()) solution.status = "outer-not-converged";
+  if (!decided(solution.status)) solution.status = Status::OuterNotConverged;
   // Step 6: the trajectory for the final {xi_k}.
   if (!detail::record_solution(scheme, TangentOf<G>(v0), CovectorOf<G>::Zero(), &xi, solution)) {
-    solution.converged = false;
-    solution.status = "non-finite";
+    solution.status = Status::NonFinite;
   }
   std::ostringstream message;
-  message << "two-level: " << solution.status << " after " << solution.outer_iterations << " outer and "
+  message << "two-level: " << to_string(solution.status) << " after " << solution.outer_iterations << " outer and "
           << solution.inner_iterations << " inner iterations, " << solution.sweeps
           << " sweeps; outer changes max|xi_new - xi_old| = [" << history.str() << "]; terminal error "
           << format_value(solution.terminal_error);

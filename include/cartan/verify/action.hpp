@@ -17,29 +17,47 @@
 
 namespace cartan {
 
-/// S_h of the path through g[0..N] over [0, T] (N >= 1). Throws std::invalid_argument for
-/// fewer than two nodes, a non-finite lambda, or T not positive and finite.
+/// S_h of the path through g[k] at the increasing times t[k] (at least two; steps may differ in
+/// length). Throws std::invalid_argument for fewer than two nodes, sizes that differ, times that
+/// do not increase, or a non-finite lambda.
+template <LieGroup G, ReducedLagrangian<G> L>
+double transported_action(const L& lagrangian, double lambda, const std::vector<double>& t,
+                          const std::vector<ElementOf<G>>& g) {
+  require_finite(lambda, "transported_action", "lambda");
+  if (g.size() < 2) {
+    throw_invalid("transported_action", "g.size()", std::to_string(g.size()), "must be at least 2 (one step)");
+  }
+  if (t.size() != g.size()) {
+    throw_invalid("transported_action", "t.size()", std::to_string(t.size()), "must equal g.size() = " + std::to_string(g.size()));
+  }
+  ElementOf<G> transport = G::identity();  // h_k with P_k = Ad(h_k)
+  double action = 0;
+  for (std::size_t k = 0; k + 1 < g.size(); ++k) {
+    const double h = t[k + 1] - t[k];
+    if (!(h > 0)) throw_invalid("transported_action", "t", format_value(t[k + 1]), "must increase");
+    const TangentOf<G> u = G::log(G::compose(G::inverse(g[k]), g[k + 1])) / h;
+    const ElementOf<G> g_mid = G::compose(g[k], G::exp(TangentOf<G>(h / 2 * u)));
+    const ElementOf<G> transport_mid = G::compose(G::exp(TangentOf<G>(-lambda * h / 2 * u)), transport);
+    const TangentOf<G> v_mid = G::Ad(G::inverse(transport_mid)) * u;
+    action += h * lagrangian.value(t[k] + h / 2, g_mid, v_mid);
+    transport = G::compose(G::exp(TangentOf<G>(-lambda * h * u)), transport);
+  }
+  return action;
+}
+
+/// S_h of the path through g[0..N] at the uniform times k T / N over [0, T] (N >= 1). Throws
+/// std::invalid_argument for fewer than two nodes, a non-finite lambda, or T not positive and finite.
 template <LieGroup G, ReducedLagrangian<G> L>
 double transported_action(const L& lagrangian, double lambda, double T, const std::vector<ElementOf<G>>& g) {
-  require_finite(lambda, "transported_action", "lambda");
   require_finite(T, "transported_action", "T");
   if (!(T > 0)) throw_invalid("transported_action", "T", format_value(T), "must be positive");
   if (g.size() < 2) {
     throw_invalid("transported_action", "g.size()", std::to_string(g.size()), "must be at least 2 (one step)");
   }
   const std::size_t steps = g.size() - 1;
-  const double h = T / static_cast<double>(steps);
-  ElementOf<G> transport = G::identity();  // h_k with P_k = Ad(h_k)
-  double action = 0;
-  for (std::size_t k = 0; k < steps; ++k) {
-    const TangentOf<G> u = G::log(G::compose(G::inverse(g[k]), g[k + 1])) / h;
-    const ElementOf<G> g_mid = G::compose(g[k], G::exp(TangentOf<G>(h / 2 * u)));
-    const ElementOf<G> transport_mid = G::compose(G::exp(TangentOf<G>(-lambda * h / 2 * u)), transport);
-    const TangentOf<G> v_mid = G::Ad(G::inverse(transport_mid)) * u;
-    action += h * lagrangian.value((static_cast<double>(k) + 0.5) * h, g_mid, v_mid);
-    transport = G::compose(G::exp(TangentOf<G>(-lambda * h * u)), transport);
-  }
-  return action;
+  std::vector<double> t(g.size());
+  for (std::size_t k = 0; k <= steps; ++k) t[k] = T * static_cast<double>(k) / static_cast<double>(steps);
+  return transported_action<G>(lagrangian, lambda, t, g);
 }
 
 /// d/de S_h(g_k exp(e w_k)) by central differences with step `epsilon` (w_0 = w_N = 0 expected).

@@ -1,0 +1,302 @@
+#pragma once
+// One entry point for the transported-velocity problem (eq:reduced-system): solve(problem,
+// options, guess) runs the requested method, or by default (Method::Auto) a strategy that tries
+// cartan's methods in turn and stops at the first success. The CLI, the Python module and
+// `cartan sweep` call this; the result it returns is complete (method used,
+// branch, status, action), so no caller patches it.
+//
+// The default strategy:
+//   1. shooting, direct from the guess (abandoned once |r| stops decreasing);
+//   2. continuation in T, unless the Lagrangian is purely kinetic (rescaling time maps the
+//      problem at a shorter horizon onto the same problem) or N is too small to halve T;
+//   3. continuation in lambda from lambda = 0, then from lambda = 1 (the flat connections);
+//   4. collocation of the continuous problem (natural Lagrangians), then shooting of the
+//      discrete scheme from the collocation solution, so that the result is on the N steps;
+//   5. multiple shooting from the guess.
+// `branch` names the whole path, e.g. "collocation, after shooting and continuation in T failed".
+// When everything fails, the result is the best iterate *of the requested problem* (smallest
+// terminal residual) with status StrategyFailed and every attempt in `message`.
+
+#include <optional>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "cartan/bvp/transported_solution.hpp"
+#include "cartan/models/natural_system.hpp"
+#include "cartan/transported/continuation.hpp"
+#include "cartan/transported/method.hpp"
+#include "cartan/transported/solve_options.hpp"
+#include "cartan/transported/multiple_shooting.hpp"
+#include "cartan/transported/two_level.hpp"
+#include "cartan/verify/action.hpp"
+
+namespace cartan {
+
+/// The potential V of a NaturalLagrangian<G, V> (void for any other Lagrangian): collocation
+/// needs mu = I v with a constant inertia.
+template <class L>
+struct NaturalPotentialOf {
+  using type = void;
+};
+template <LieGroup G, Potential<G> V>
+struct NaturalPotentialOf<NaturalLagrangian<G, V>> {
+  using type = V;
+};
+
+/// Purely kinetic Lagrangians (no potential, no explicit time): the problem at horizon cT is the
+/// problem at T with time rescaled, so continuation in T cannot help.
+template <class L>
+inline constexpr bool kPurelyKinetic = false;
+template <LieGroup G>
+inline constexpr bool kPurelyKinetic<NaturalLagrangian<G, ZeroPotential<G>>> = true;
+
+namespace detail {
+
+/// A note when gT lies near the cut locus of g0 (e.g. a rotation by about pi): there log is
+/// discontinuous, so the geodesic guess may point either way and the branch found depends on it.
+template <LieGroup G, ReducedLagrangian<G> L>
+std::string cut_locus_note(const TransportedProblem<G, L>& problem) {
+  const ElementOf<G> d = G::compose(G::inverse(problem.g0), problem.gT);
+  const TangentOf<G> x = G::log(d);
+  constexpr double eps = 1e-6;
+  for (int i = 0; i < G::kDim; ++i) {
+    const TangentOf<G> y = G::log(G::compose(d, G::exp(TangentOf<G>(eps * TangentOf<G>::Unit(i)))));
+    if ((y - x).norm() > 100 * eps * (1 + x.norm())) {
+      return "gT is near the cut locus of g0 (log(g0^-1 gT) jumps under a perturbation of 1e-6): "
+             "the geodesic guess's direction is ambiguous and the branch found depends on it";
+    }
+  }
+  return {};
+}
+
+/// Fills what every result carries: the action S_h of its trajectory, the total time.
+template <LieGroup G, ReducedLagrangian<G> L>
+void complete(const TransportedProblem<G, L>& problem, TransportedSolution<G>& s,
+              std::chrono::steady_clock::time_point start) {
+  const auto& tr = s.trajectory;
+  if (tr.t.size() >= 2) {
+    try {
+      s.action = transported_action<G>(problem.lagrangian, problem.lambda, tr.t, tr.g);
+    } catch (const std::invalid_argument&) {
+      s.action = std::numeric_limits<double>::quiet_NaN();  // a user Lagrangian failed on this path
+    }
+  }
+  s.solve_time_s = seconds_since(start);
+}
+
+template <LieGroup G, ReducedLagrangian<G> L>
+TransportedSolution<G> collocation(const TransportedProblem<G, L>& problem, const SolveOptions& options,
+                                   const SolveGuess<G>& guess, int samples) {
+  using V = typename NaturalPotentialOf<L>::type;
+  if constexpr (std::is_void_v<V>) {
+    throw_invalid("solve", "method", "collocation",
+                  "needs a natural Lagrangian (mu = I v with a constant inertia), such as the built-in "
+                  "models; the Legendre map of this one may depend on g");
+  } else {
+    const SolveMonitor stage = options.monitor.stage("collocation");
+    const bvp::CollocationOptions c{.tol = options.tol,
+                                    .max_nodes = options.max_nodes.value_or(bvp::kTransportedMaxNodes),
+                                    .max_newton_iterations = options.max_iterations,
+                                    .monitor = &stage};
+    if constexpr (std::is_same_v<G, Heisenberg>) {
+      if (options.method == Method::Collocation && (guess.trajectory || options.continuation != Continuation::None)) {
+        throw std::invalid_argument(
+            "solve: method collocation on heisenberg takes no trajectory guess and no continuation (the "
+            "closed-form collocation of H3 starts from the straight line in (a, b, c))");
+      }
+      return bvp::solve_heisenberg_transported(problem, c, samples);
+    } else {
+      return bvp::solve_transported_by_collocation(problem, c, samples, options.continuation,
+                                                   guess.trajectory ? &*guess.trajectory : nullptr);
+    }
+  }
+}
+
+template <LieGroup G, ReducedLagrangian<G> L>
+TransportedSolution<G> shooting(const TransportedProblem<G, L>& problem, const SolveOptions& options,
+                                const SolveGuess<G>& guess) {
+  const SolveMonitor stage = options.monitor.stage("shooting");
+  ContinuationOptions c{.shooting = {.order = options.order, .tolerance = options.tol,
+                                     .max_iterations = options.max_iterations, .monitor = &stage}};
+  const std::optional<TangentOf<G>> v0 = guess.empty() ? std::nullopt : std::optional(guess.start_velocity());
+  const std::optional<CovectorOf<G>> xi0 = guess.xi0 ? guess.xi0
+                                           : guess.trajectory ? std::optional(guess.trajectory->xi.front())
+                                                              : std::nullopt;
+  switch (options.continuation) {
+    case Continuation::T: return solve_continuation_in_T(problem, c, v0, xi0);
+    case Continuation::Lambda:
+      if (!guess.empty() && options.method == Method::Shooting) {
+        throw std::invalid_argument(
+            "solve: continuation lambda starts from the solution at lambda_start and takes no guess (v0, xi0 "
+            "or trajectory); use continuation none or T with a guess");
+      }
+      return solve_continuation_in_lambda(problem, options.lambda_start.value_or(0.0), c);
+    case Continuation::None: break;
+  }
+  TransportedSolution<G> s =
+      solve_shooting(problem, c.shooting, v0.value_or(geodesic_guess(problem)), xi0.value_or(CovectorOf<G>::Zero()));
+  s.branch = guess.empty() ? "direct from the geodesic guess" : "direct from the given guess";
+  return s;
+}
+
+/// The default strategy (header comment).
+template <LieGroup G, ReducedLagrangian<G> L>
+TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const SolveOptions& options,
+                                const SolveGuess<G>& guess) {
+  std::vector<std::string> failed;  // "shooting (no-progress, |r| = ...)"
+  std::ostringstream log;
+  TransportedSolution<G> best;
+  double best_size = std::numeric_limits<double>::infinity();
+  int sweeps = 0, iterations = 0;
+  // Records an attempt; returns true when it solved the problem (then `best` is it).
+  const auto attempt = [&](const std::string& name, TransportedSolution<G> s, bool requested_problem = true) {
+    sweeps += s.sweeps;
+    iterations += s.inner_iterations;
+    log << (failed.empty() && log.tellp() == 0 ? "" : "; ") << name << ": " << to_string(s.status);
+    if (s.converged()) {
+      std::string after;
+      for (std::size_t i = 0; i < failed.size(); ++i) after += (i ? (i + 1 == failed.size() ? " and " : ", ") : "") + failed[i];
+      s.branch = name + (s.branch.empty() ? "" : " (" + s.branch + ")") + (failed.empty() ? "" : ", after " + after + " failed");
+      best = std::move(s);
+      return true;
+    }
+    failed.push_back(name);
+    const double size = requested_problem ? scaled_residual(problem, s) : std::numeric_limits<double>::infinity();
+    if (size < best_size) {
+      best_size = size;
+      best = std::move(s);
+    }
+    return false;
+  };
+  const auto stopped = [&] { return options.monitor.stop_requested(); };
+  const auto finish = [&](bool solved) {
+    best.sweeps = sweeps;
+    best.inner_iterations = iterations;
+    if (!solved) {
+      best.status = stopped() ? Status::Interrupted : Status::StrategyFailed;
+      best.branch = "failed: " + log.str();
+    }
+    best.message = "default strategy: " + log.str() + "; the returned result: " + best.message;
+    return best;
+  };
+
+  const bool guessed = !guess.empty();
+  SolveOptions direct = options;
+  direct.method = Method::Shooting;
+  // 1. Shooting from the guess, abandoned when it makes no progress.
+  {
+    const SolveMonitor stage = options.monitor.stage("shooting");
+    const ShootingOptions s{.order = options.order, .tolerance = options.tol, .max_iterations = options.max_iterations,
+                            .no_progress_window = 6, .monitor = &stage};
+    const TangentOf<G> v0 = guessed ? guess.start_velocity() : geodesic_guess(problem);
+    const CovectorOf<G> xi0 = guess.xi0 ? *guess.xi0 : guess.trajectory ? guess.trajectory->xi.front() : CovectorOf<G>::Zero();
+    TransportedSolution<G> r = solve_shooting(problem, s, v0, xi0);
+    r.branch = guessed ? "direct from the given guess" : "direct from the geodesic guess";
+    if (attempt("shooting", std::move(r))) return finish(true);
+  }
+  // 2. Continuation in T where a shorter horizon is an easier problem.
+  constexpr int kMinStepsToHalve = 16;
+  if (!kPurelyKinetic<L> && problem.N >= kMinStepsToHalve && !stopped()) {
+    direct.continuation = Continuation::T;
+    if (attempt("continuation in T", shooting(problem, direct, guess))) return finish(true);
+  }
+  // 3. Continuation in lambda from the flat connections.
+  for (const double start : {0.0, 1.0}) {
+    if (problem.lambda == start || stopped()) continue;
+    direct.continuation = Continuation::Lambda;
+    direct.lambda_start = start;
+    if (attempt("continuation in lambda from " + format_value(start), shooting(problem, direct, SolveGuess<G>{}))) {
+      return finish(true);
+    }
+  }
+  direct.lambda_start.reset();
+  // 4. Collocation of the continuous problem, then the discrete scheme from its solution.
+  if constexpr (!std::is_void_v<typename NaturalPotentialOf<L>::type>) {
+    if (!stopped()) {
+      SolveOptions c = options;
+      c.method = Method::Collocation;
+      TransportedSolution<G> continuous = collocation(problem, c, guess, problem.N + 1);
+      if (continuous.converged()) {
+        direct.continuation = Continuation::None;
+        SolveGuess<G> from;
+        from.v0 = continuous.v0;
+        from.xi0 = continuous.xi0;
+        TransportedSolution<G> polished = shooting(problem, direct, from);
+        sweeps += continuous.sweeps;
+        polished.branch = "from the collocation solution";
+        if (attempt("shooting", std::move(polished))) return finish(true);
+        failed.pop_back();
+        continuous.branch = "of the continuous problem; shooting the discrete scheme from it failed";
+      }
+      if (attempt("collocation", std::move(continuous))) return finish(true);
+    }
+  }
+  // 5. Multiple shooting from the guess.
+  if (!stopped() && problem.N >= 2) {
+    const SolveMonitor stage = options.monitor.stage("multiple shooting");
+    MultipleShootingOptions m{.order = options.order, .tolerance = options.tol,
+                              .max_iterations = options.max_iterations, .monitor = &stage};
+    const TangentOf<G> v0 = guessed ? guess.start_velocity() : geodesic_guess(problem);
+    const CovectorOf<G> xi0 = guess.xi0 ? *guess.xi0 : guess.trajectory ? guess.trajectory->xi.front() : CovectorOf<G>::Zero();
+    if (attempt("multiple shooting", solve_multiple_shooting(problem, m, v0, xi0))) {
+      return finish(true);
+    }
+  }
+  return finish(false);
+}
+
+}  // namespace detail
+
+/// Solves `problem` as `options` say (header comment). Throws std::invalid_argument for a bad
+/// problem, options or guess; numerical failures are statuses.
+template <LieGroup G, ReducedLagrangian<G> L>
+TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const SolveOptions& options = {},
+                             const SolveGuess<G>& guess = {}) {
+  problem.validate();
+  options.validate();
+  guess.validate(problem.T);
+  const auto start = std::chrono::steady_clock::now();
+  TransportedSolution<G> s;
+  switch (options.method) {
+    case Method::Auto:
+      s = detail::strategy(problem, options, guess);
+      break;
+    case Method::Shooting:
+      s = detail::shooting(problem, options, guess);
+      break;
+    case Method::MultipleShooting: {
+      const SolveMonitor stage = options.monitor.stage("multiple shooting");
+      s = solve_multiple_shooting(problem,
+                                  {.order = options.order, .segments = options.segments, .tolerance = options.tol,
+                                   .max_iterations = options.max_iterations, .monitor = &stage},
+                                  guess.empty() ? geodesic_guess(problem) : guess.start_velocity(),
+                                  guess.xi0 ? *guess.xi0
+                                  : guess.trajectory ? guess.trajectory->xi.front()
+                                                     : CovectorOf<G>::Zero());
+      break;
+    }
+    case Method::TwoLevel: {
+      if (guess.xi0) throw std::invalid_argument("solve: method two-level takes a v0 guess, not xi0 (xi starts at 0)");
+      const SolveMonitor stage = options.monitor.stage("two-level");
+      s = solve_two_level(problem,
+                          {.order = options.order, .tolerance = options.tol, .max_outer = options.max_iterations,
+                           .max_inner = options.max_iterations, .monitor = &stage},
+                          guess.empty() ? geodesic_guess(problem) : guess.start_velocity());
+      s.branch = guess.empty() ? "direct from the geodesic guess" : "direct from the given guess";
+      break;
+    }
+    case Method::Collocation:
+      if (guess.v0 || guess.xi0) {
+        throw std::invalid_argument("solve: method collocation takes a trajectory guess, not v0/xi0");
+      }
+      s = detail::collocation(problem, options, guess, options.samples);
+      break;
+  }
+  if (const std::string note = detail::cut_locus_note(problem); !note.empty()) s.message += "; note: " + note;
+  detail::complete(problem, s, start);
+  return s;
+}
+
+}  // namespace cartan

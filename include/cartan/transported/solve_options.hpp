@@ -1,0 +1,110 @@
+#pragma once
+// The options and guesses of the library's solve (transported/solve.hpp), in a light header
+// for the CLI and the Python module.
+
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "cartan/errors.hpp"
+#include "cartan/monitor.hpp"
+#include "cartan/transported/method.hpp"
+#include "cartan/transported/scheme.hpp"
+
+namespace cartan {
+
+struct SolveOptions {
+  Method method = Method::Auto;
+  /// shooting: how to reach a problem that fails from the guess; collocation: where to start
+  /// when Newton from the geodesic guess fails (from the order-2 shooting solution so found).
+  Continuation continuation = Continuation::None;
+  SchemeOrder order = SchemeOrder::First;
+  /// Shooting and multiple shooting: on |(log(gT^{-1} g_N), xi_N / xi_scale)| (radians and a
+  /// relative xi, shooting.hpp); two-level: the outer change of xi relative to xi_scale (its inner
+  /// loop works to 1e-13); collocation: the relative RMS residual on every interval.
+  double tol = 1e-10;
+  int max_iterations = 200;
+  std::optional<int> segments;         ///< multiple shooting only (default: about 100 steps each, at most 16)
+  std::optional<double> lambda_start;  ///< continuation in lambda only (default 0)
+  int samples = 0;                     ///< collocation only: output at this many uniform times (0: the final mesh)
+  std::optional<int> max_nodes;        ///< collocation only (default bvp::kTransportedMaxNodes)
+  SolveMonitor monitor;                ///< progress reports and stop requests
+
+  /// Throws std::invalid_argument naming the first bad or inapplicable option.
+  void validate() const {
+    constexpr std::string_view where = "SolveOptions";
+    require_finite(tol, where, "tol");
+    if (!(tol > 0)) throw_invalid(where, "tol", format_value(tol), "must be positive");
+    if (max_iterations < 1) throw_invalid(where, "max_iterations", std::to_string(max_iterations), "must be at least 1");
+    if (order != SchemeOrder::First && order != SchemeOrder::Second) {
+      throw_invalid(where, "order", std::to_string(static_cast<int>(order)), "must be 1 or 2");
+    }
+    const std::string m = std::string(to_string(method));
+    if (segments && method != Method::MultipleShooting) {
+      throw_invalid(where, "segments", std::to_string(*segments), "applies to method multiple-shooting only, not " + m);
+    }
+    if (segments && *segments < 1) throw_invalid(where, "segments", std::to_string(*segments), "must be at least 1");
+    if (continuation != Continuation::None && method != Method::Shooting && method != Method::Collocation) {
+      throw_invalid(where, "continuation", std::string(to_string(continuation)),
+                    "applies to methods shooting and collocation only, not " + m);
+    }
+    if (lambda_start && continuation != Continuation::Lambda) {
+      throw_invalid(where, "lambda_start", format_value(*lambda_start), "applies to continuation lambda only");
+    }
+    if (lambda_start) require_finite(*lambda_start, where, "lambda_start");
+    if (samples != 0 && method != Method::Collocation) {
+      throw_invalid(where, "samples", std::to_string(samples), "applies to method collocation only, not " + m);
+    }
+    if (samples < 0 || samples == 1) {
+      throw_invalid(where, "samples", std::to_string(samples),
+                    "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");
+    }
+    if (max_nodes && method != Method::Collocation) {
+      throw_invalid(where, "max_nodes", std::to_string(*max_nodes), "applies to method collocation only, not " + m);
+    }
+  }
+};
+
+/// Optional starting points: v0 and xi0, or a whole trajectory (t from 0 to T, g, v and xi at
+/// every entry; mu is not read). A trajectory supplies v0 and xi0 to the shooting methods and
+/// the whole guess to collocation.
+template <LieGroup G>
+struct SolveGuess {
+  std::optional<TangentOf<G>> v0;
+  std::optional<CovectorOf<G>> xi0;
+  std::optional<TransportedTrajectory<G>> trajectory;
+
+  bool empty() const { return !v0 && !xi0 && !trajectory; }
+  TangentOf<G> start_velocity() const { return v0 ? *v0 : trajectory->v.front(); }
+
+  /// Throws std::invalid_argument for non-finite values, both v0/xi0 and a trajectory, or a
+  /// trajectory that is not on [0, T] with strictly increasing times and rows of equal count.
+  void validate(double T) const {
+    constexpr std::string_view where = "SolveGuess";
+    if (v0) require_finite(*v0, where, "v0");
+    if (xi0) require_finite(*xi0, where, "xi0");
+    if (!trajectory) return;
+    if (v0 || xi0) throw std::invalid_argument("SolveGuess: give v0/xi0 or a trajectory, not both");
+    const auto& tr = *trajectory;
+    const std::size_t m = tr.t.size();
+    if (m < 2) throw_invalid(where, "trajectory.t.size()", std::to_string(m), "must be at least 2");
+    if (tr.g.size() != m || tr.v.size() != m || tr.xi.size() != m) {
+      throw_invalid(where, "trajectory", "(" + std::to_string(m) + " times)", "needs g, v and xi at every time");
+    }
+    for (std::size_t i = 0; i < m; ++i) {
+      require_finite(tr.v[i], where, "trajectory.v");
+      require_finite(tr.xi[i], where, "trajectory.xi");
+      if (i > 0 && !(tr.t[i] > tr.t[i - 1])) {
+        throw_invalid(where, "trajectory.t", format_value(tr.t[i]), "must be strictly increasing");
+      }
+    }
+    if (std::abs(tr.t.front()) > 1e-12 * T || std::abs(tr.t.back() - T) > 1e-12 * T) {
+      throw_invalid(where, "trajectory.t", "[" + format_value(tr.t.front()) + ", " + format_value(tr.t.back()) + "]",
+                    "must run from 0 to T = " + format_value(T));
+    }
+  }
+};
+
+}  // namespace cartan
