@@ -86,6 +86,14 @@ def test_guesses_select_the_start_and_every_result_has_an_action():
     assert a["action"] == pytest.approx(b["action"], rel=1e-9)
 
 
+@pytest.mark.parametrize("method", ["auto", "shooting", "multiple-shooting"])
+def test_a_xi0_guess_alone_starts_from_the_geodesic_velocity(method):
+    # Only xi0 given: v0 falls back to the geodesic guess (this used to dereference an empty guess).
+    d = solved("--model", "oscillator", "--lambda", "0.5", "--T", "1", "--N", "10", "--a0", "1,0,0", "--aT", "0,1,0",
+               "--method", method, "--xi0", "0,0,0")
+    assert d["terminal_error"] < 1e-10
+
+
 @pytest.mark.parametrize("args, words", [
     (["--v0", "1,2"], ["v0", "3 numbers"]),
     (["--xi0", "1,nan,2"], ["xi0"]),

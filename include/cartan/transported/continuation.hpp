@@ -78,7 +78,7 @@ struct PathEnd {
 /// problem at parameter s. Predictor: the secant through the last two accepted solutions (the
 /// previous solution for the first stage). Corrector: shooting from the prediction. A stage is
 /// accepted when it converges *and* lands within max_correction of the prediction (in the
-/// relative norm of `PathNorm`); otherwise the increment is halved. On a smooth branch the
+/// relative norm of `distance` below); otherwise the increment is halved. On a smooth branch the
 /// correction shrinks with the increment (quadratically after the first stage), so a small
 /// enough stage is always accepted; a corrector that converges far from the prediction has
 /// jumped to another branch (measured on the paper's T = 12 oscillator: jumps correct by

@@ -120,10 +120,8 @@ TransportedSolution<G> shooting(const TransportedProblem<G, L>& problem, const S
   const SolveMonitor stage = options.monitor.stage("shooting");
   ContinuationOptions c{.shooting = {.order = options.order, .tolerance = options.tol,
                                      .max_iterations = options.max_iterations, .monitor = &stage}};
-  const std::optional<TangentOf<G>> v0 = guess.empty() ? std::nullopt : std::optional(guess.start_velocity());
-  const std::optional<CovectorOf<G>> xi0 = guess.xi0 ? guess.xi0
-                                           : guess.trajectory ? std::optional(guess.trajectory->xi.front())
-                                                              : std::nullopt;
+  const std::optional<TangentOf<G>> v0 = guess.start_v0();
+  const std::optional<CovectorOf<G>> xi0 = guess.start_xi0();
   switch (options.continuation) {
     case Continuation::T: return solve_continuation_in_T(problem, c, v0, xi0);
     case Continuation::Lambda:
@@ -190,9 +188,8 @@ TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const S
     const SolveMonitor stage = options.monitor.stage("shooting");
     const ShootingOptions s{.order = options.order, .tolerance = options.tol, .max_iterations = options.max_iterations,
                             .no_progress_window = 6, .monitor = &stage};
-    const TangentOf<G> v0 = guessed ? guess.start_velocity() : geodesic_guess(problem);
-    const CovectorOf<G> xi0 = guess.xi0 ? *guess.xi0 : guess.trajectory ? guess.trajectory->xi.front() : CovectorOf<G>::Zero();
-    TransportedSolution<G> r = solve_shooting(problem, s, v0, xi0);
+    TransportedSolution<G> r = solve_shooting(problem, s, guess.start_v0().value_or(geodesic_guess(problem)),
+                                              guess.start_xi0().value_or(CovectorOf<G>::Zero()));
     r.branch = guessed ? "direct from the given guess" : "direct from the geodesic guess";
     if (attempt("shooting", std::move(r))) return finish(true);
   }
@@ -238,9 +235,8 @@ TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const S
     const SolveMonitor stage = options.monitor.stage("multiple shooting");
     MultipleShootingOptions m{.order = options.order, .tolerance = options.tol,
                               .max_iterations = options.max_iterations, .monitor = &stage};
-    const TangentOf<G> v0 = guessed ? guess.start_velocity() : geodesic_guess(problem);
-    const CovectorOf<G> xi0 = guess.xi0 ? *guess.xi0 : guess.trajectory ? guess.trajectory->xi.front() : CovectorOf<G>::Zero();
-    if (attempt("multiple shooting", solve_multiple_shooting(problem, m, v0, xi0))) {
+    if (attempt("multiple shooting", solve_multiple_shooting(problem, m, guess.start_v0().value_or(geodesic_guess(problem)),
+                                                             guess.start_xi0().value_or(CovectorOf<G>::Zero())))) {
       return finish(true);
     }
   }
@@ -271,10 +267,8 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
       s = solve_multiple_shooting(problem,
                                   {.order = options.order, .segments = options.segments, .tolerance = options.tol,
                                    .max_iterations = options.max_iterations, .monitor = &stage},
-                                  guess.empty() ? geodesic_guess(problem) : guess.start_velocity(),
-                                  guess.xi0 ? *guess.xi0
-                                  : guess.trajectory ? guess.trajectory->xi.front()
-                                                     : CovectorOf<G>::Zero());
+                                  guess.start_v0().value_or(geodesic_guess(problem)),
+                                  guess.start_xi0().value_or(CovectorOf<G>::Zero()));
       break;
     }
     case Method::TwoLevel: {
@@ -283,7 +277,7 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
       s = solve_two_level(problem,
                           {.order = options.order, .tolerance = options.tol, .max_outer = options.max_iterations,
                            .max_inner = options.max_iterations, .monitor = &stage},
-                          guess.empty() ? geodesic_guess(problem) : guess.start_velocity());
+                          guess.start_v0().value_or(geodesic_guess(problem)));
       s.branch = guess.empty() ? "direct from the geodesic guess" : "direct from the given guess";
       break;
     }

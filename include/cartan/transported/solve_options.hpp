@@ -77,7 +77,11 @@ struct SolveGuess {
   std::optional<TransportedTrajectory<G>> trajectory;
 
   bool empty() const { return !v0 && !xi0 && !trajectory; }
-  TangentOf<G> start_velocity() const { return v0 ? *v0 : trajectory->v.front(); }
+  /// The guess of v(0) and of xi(0): given directly, or the trajectory's first entry; none if neither.
+  std::optional<TangentOf<G>> start_v0() const { return v0 ? v0 : trajectory ? std::optional(trajectory->v.front()) : std::nullopt; }
+  std::optional<CovectorOf<G>> start_xi0() const {
+    return xi0 ? xi0 : trajectory ? std::optional(trajectory->xi.front()) : std::nullopt;
+  }
 
   /// Throws std::invalid_argument for non-finite values, both v0/xi0 and a trajectory, or a
   /// trajectory that is not on [0, T] with strictly increasing times and rows of equal count.
