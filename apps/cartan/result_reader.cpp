@@ -1,5 +1,6 @@
 #include "result_reader.hpp"
 
+#include "cartan/status.hpp"
 #include "cartan/transported/method.hpp"
 
 #include <Eigen/Dense>
@@ -130,9 +131,7 @@ Eigen::VectorXd times(const nlohmann::json& value, double T) {
 ResultFile read(const nlohmann::json& j) {
   if (!j.is_object()) bad("result file", describe(j), "must be a JSON object");
   ResultFile r;
-  const nlohmann::json& status = require_key(j, "status");
-  if (!status.is_string()) bad("status", describe(status), "must be a string");
-  r.status = status.get<std::string>();
+  r.status = one_of(require_key(j, "status"), "status", enum_words<Status>());
   r.group = one_of(require_key(j, "group"), "group", {"so3", "heisenberg"});
   const bool so3 = r.group == "so3";
   r.model = one_of(require_key(j, "model"), "model",

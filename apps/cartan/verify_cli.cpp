@@ -20,22 +20,20 @@ struct VerifyFlags {
   bool json = false;
 };
 
-/// The verdict on a failed solve: FAIL with a check saying so, whatever else holds. Its data
-/// are the solver's best iterate, which may not even be valid group elements (collocation's
-/// dense output off the solution); then that check is the whole report.
-VerifyReport verify_failed(const nlohmann::json& j, const std::string& status) {
-  const CheckResult not_converged{"converged", 1, 0, true,
-                                  "status = " + quote_input(status) +
-                                      ": the solver did not converge; the data are its best iterate, not a solution"};
-  VerifyReport report;
+/// The verdict on a failed solve: its data are the solver's best iterate, which may not even be
+/// valid group elements (collocation's dense output off the solution); then the failing
+/// `converged` check and a note are the whole report.
+verify::Report verify_failed(const nlohmann::json& j, const std::string& status) {
   try {
-    report = verify(read_result(j));
+    return verify(read_result(j));
   } catch (const std::invalid_argument& e) {
-    report.checks.clear();
+    verify::Report report;
+    report.checks.push_back({"converged", 1, 0, true,
+                             "status = " + quote_input(status) +
+                                 ": the solver did not converge; the data are its best iterate, not a solution"});
     report.checks.push_back({"data", 1, 0, false, std::string("not checked: ") + e.what()});
+    return report;
   }
-  report.checks.insert(report.checks.begin(), not_converged);
-  return report;
 }
 
 int run_verify(const VerifyFlags& flags) {
@@ -43,9 +41,10 @@ int run_verify(const VerifyFlags& flags) {
   const std::string status =
       j.is_object() && j.contains("status") && j["status"].is_string() ? j["status"].get<std::string>() : "";
   const bool failed = !status.empty() && status != "converged";
-  const VerifyReport report = failed ? verify_failed(j, status) : verify(read_result(j));
+  if (failed) (void)parse_enum<Status>(status, "cartan verify");  // an unknown word is bad input (exit 2)
+  const verify::Report report = failed ? verify_failed(j, status) : verify(read_result(j));
   if (flags.json) {
-    std::cout << report.json().dump() << '\n';
+    std::cout << report_json(report).dump() << '\n';
   } else if (failed) {
     std::cout << flags.file << ": status " << quote_input(status) << " (not converged)\n" << report.text();
   } else {

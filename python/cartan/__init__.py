@@ -23,7 +23,8 @@ Integrators
     :func:`euler_poincare` (eq:EP-left, eq:EP-right), :func:`lie_poisson` (eq:LP-left, eq:LP-right).
 The transported-velocity boundary-value problem (eq:reduced-system)
     :func:`solve` with ``method`` one of :data:`METHODS` (shooting solvers of the discrete scheme,
-    or "collocation" of the continuous problem); returns a :class:`SolveResult`.
+    or "collocation" of the continuous problem); returns a :class:`SolveResult`, which
+    :func:`verify` checks independently of the solver (a :class:`VerifyReport`).
 General two-point boundary-value problems
     :func:`solve_bvp`, fourth-order adaptive collocation with scipy.integrate.solve_bvp's
     arguments (fun, bc, x, y, p, fun_jac, bc_jac, tol, max_nodes, bc_tol); returns a
@@ -65,6 +66,7 @@ __all__ = [
     "RigidBody", "SO3Oscillator", "SpatialRigidBody", "H3Oscillator",
     "RigidBodyHamiltonian", "SO3OscillatorHamiltonian", "SpatialRigidBodyHamiltonian", "H3OscillatorHamiltonian",
     "Trajectory", "SolveResult", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve",
+    "VerifyReport", "verify",
     "BvpResult", "BvpSolution", "solve_bvp",
 ]
 
@@ -125,6 +127,8 @@ class SolveResult:
     the transported velocity left-trivialised at g0 (collocation: at the final mesh or `samples`
     times). A failed result carries the best iterate *of the requested problem* (never a stage of a
     continuation at another T or lambda), or no rows at all.
+    g0, gT, tol: the problem's boundary elements and the requested tolerance (what :func:`verify` checks
+    against).
     v0, xi0: the initial values; terminal_error = |log(gT^-1 g_N)|, xi_terminal = |xi_N|;
     action: the discrete transported action S_h of the trajectory (tells branches apart);
     outer_iterations, inner_iterations, sweeps: work done (collocation: mesh refinements, Newton
@@ -141,6 +145,9 @@ class SolveResult:
     lam: float
     T: float
     N: int
+    g0: np.ndarray = field(repr=False)
+    gT: np.ndarray = field(repr=False)
+    tol: float
     t: np.ndarray
     g: np.ndarray
     v: np.ndarray
@@ -217,6 +224,40 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="no
     request.samples, request.max_nodes = samples, max_nodes
     d = grp._solve(lagrangian, lam, T, N, g0, gT, request, v0, xi0, guess, progress)
     return SolveResult(**d)
+
+
+@dataclass
+class VerifyReport:
+    """The verdict of :func:`verify` (the same checks and thresholds as `cartan verify`;
+    docs/verify.md): passed (every check passes), verdict ("PASS" or "FAIL"), resolution
+    rho = h omega, order p of the thresholds, amplification a (the lambda factor), checks (a list of
+    dicts name, figure, threshold, result ("PASS", "FAIL", "N/A"), note) and text (the report as
+    `cartan verify` prints it; also ``str(report)``)."""
+    passed: bool
+    verdict: str
+    resolution: float
+    order: int
+    amplification: float
+    checks: list
+    text: str = field(repr=False)
+
+    def __str__(self):
+        return self.text
+
+
+def verify(result, lagrangian, *, group=None):
+    """Checks a :class:`SolveResult` of the Lagrangian `lagrangian` independently of the solver, as
+    `cartan verify` does (docs/verify.md): boundary conditions against result.tol, the Legendre
+    relation, conservation of E = mu.v - l (for a Lagrangian that does not depend on t), the residual
+    of eq:reduced-system by finite differences and the stationarity of the discrete transported
+    action, with thresholds from the order and the resolution h omega. A result that did not converge
+    always fails (check "converged"). `result` may be any object with the fields lam, T, g0, gT, order,
+    tol, status, t, g, v, mu, xi (e.g. a SolveResult with a changed field); `lagrangian` is a built-in
+    model or a Python-defined Lagrangian as for :func:`solve`. Returns a :class:`VerifyReport`."""
+    grp = _group_of(lagrangian, group, "verify")
+    d = grp._verify(lagrangian, result, result.lam, result.T, result.g0, result.gT, result.order, result.tol,
+                    result.status)
+    return VerifyReport(**d)
 
 
 @dataclass

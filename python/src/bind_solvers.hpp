@@ -7,6 +7,8 @@
 // Ctrl-C: the monitor's stop request takes the GIL and runs PyErr_CheckSignals, so a long solve
 // of a built-in model (which runs without the GIL) raises KeyboardInterrupt within one iteration.
 // A `progress` callable receives (stage, iteration, residual) once per iteration.
+// `<Group>._verify(...)`: the library's checks and verdict (include/cartan/verify/report.hpp) on a
+// result of any model, as a dict of VerifyReport's fields.
 
 #include <optional>
 #include <string>
@@ -16,6 +18,7 @@
 
 #include "bind_models.hpp"
 #include "cartan/transported/solve.hpp"
+#include "cartan/verify/report.hpp"
 
 namespace cartan::python {
 
@@ -52,34 +55,62 @@ struct SolveRequest {
 /// Python error through the solver (error_already_set).
 SolveMonitor python_monitor(const py::object& progress);
 
-/// A trajectory guess from any object with t, g, v, xi (attributes or keys), e.g. a SolveResult.
+/// A trajectory from any object with t, g, v, xi (and mu when `with_mu`) as attributes or keys,
+/// e.g. a SolveResult: a guess for `solve` (mu is then not needed) or the data of `verify`.
 template <LieGroup G>
-TransportedTrajectory<G> trajectory_guess(const py::object& guess, const Args<G>& a) {
+TransportedTrajectory<G> trajectory_of(const py::object& source, const Args<G>& a, const std::string& where,
+                                       const char* argument, bool with_mu) {
   const auto field = [&](const char* name) -> py::object {
-    if (py::hasattr(guess, name)) return guess.attr(name);
-    if (py::isinstance<py::dict>(guess) && guess.contains(name)) return guess[py::str(name)];
-    throw_invalid("cartan.solve", "guess", "(" + std::string(py::str(py::type::of(guess).attr("__name__"))) + ")",
-                  std::string("has no field ") + name + " (give t, g, v and xi, e.g. a SolveResult)");
+    if (py::hasattr(source, name)) return source.attr(name);
+    if (py::isinstance<py::dict>(source) && source.contains(name)) return source[py::str(name)];
+    throw_invalid("cartan." + where, argument, "(" + std::string(py::str(py::type::of(source).attr("__name__"))) + ")",
+                  std::string("has no field ") + name + (with_mu ? " (give t, g, v, mu and xi, e.g. a SolveResult)"
+                                                                 : " (give t, g, v and xi, e.g. a SolveResult)"));
   };
   const auto t = field("t").template cast<std::vector<double>>();
   const py::sequence g = field("g"), v = field("v"), xi = field("xi");
-  if (py::len(g) != t.size() || py::len(v) != t.size() || py::len(xi) != t.size()) {
-    throw_invalid("cartan.solve", "guess", "(" + std::to_string(t.size()) + " times)", "needs g, v and xi at every time");
+  const py::sequence mu = with_mu ? py::sequence(field("mu")) : py::sequence(py::list());
+  if (py::len(g) != t.size() || py::len(v) != t.size() || py::len(xi) != t.size() ||
+      (with_mu && py::len(mu) != t.size())) {
+    throw_invalid("cartan." + where, argument, "(" + std::to_string(t.size()) + " times)",
+                  with_mu ? "needs g, v, mu and xi at every time" : "needs g, v and xi at every time");
   }
+  const std::string name(argument);
   TransportedTrajectory<G> tr;
   for (std::size_t i = 0; i < t.size(); ++i) {
     tr.t.push_back(t[i]);
-    tr.g.push_back(a.element(g[i], "solve", "guess.g"));
-    tr.v.push_back(a.tangent(v[i], "solve", "guess.v"));
-    tr.mu.push_back(CovectorOf<G>::Zero());
-    tr.xi.push_back(a.tangent(xi[i], "solve", "guess.xi"));
+    tr.g.push_back(a.element(g[i], where, name + ".g"));
+    tr.v.push_back(a.tangent(v[i], where, name + ".v"));
+    tr.mu.push_back(with_mu ? CovectorOf<G>(a.tangent(mu[i], where, name + ".mu")) : CovectorOf<G>::Zero());
+    tr.xi.push_back(a.tangent(xi[i], where, name + ".xi"));
   }
   return tr;
 }
 
+/// The report of verify::verify_trajectory as a dict (python/cartan/__init__.py, VerifyReport).
+inline py::dict report_dict(const verify::Report& report) {
+  py::list checks;
+  for (const auto& c : report.checks) {
+    py::dict d;
+    d["name"] = c.name, d["figure"] = c.figure, d["threshold"] = c.threshold, d["result"] = c.verdict();
+    d["note"] = c.note;
+    checks.append(d);
+  }
+  py::dict d;
+  d["passed"] = report.passed();
+  d["verdict"] = report.passed() ? "PASS" : "FAIL";
+  d["resolution"] = report.resolution;
+  d["order"] = report.order;
+  d["amplification"] = report.amplification;
+  d["checks"] = checks;
+  d["text"] = report.text();
+  return d;
+}
+
 /// The solution as a dict of the fields of SolveResult (python/cartan/__init__.py).
 template <LieGroup G>
-py::dict solution_dict(const TransportedSolution<G>& s, const std::string& group, double lambda, double T, int N) {
+py::dict solution_dict(const TransportedSolution<G>& s, const std::string& group, double lambda, double T, int N,
+                       const ElementOf<G>& g0, const ElementOf<G>& gT, double tol) {
   py::dict d;
   d["status"] = std::string(to_string(s.status));
   d["message"] = s.message;
@@ -91,6 +122,9 @@ py::dict solution_dict(const TransportedSolution<G>& s, const std::string& group
   d["lam"] = lambda;
   d["T"] = T;
   d["N"] = N;
+  d["g0"] = to_numpy(g0);
+  d["gT"] = to_numpy(gT);
+  d["tol"] = tol;
   const auto& tr = s.trajectory;
   d["t"] = to_numpy(tr.t);
   d["g"] = to_numpy(tr.g);
@@ -126,16 +160,31 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
     SolveGuess<G> start;
     if (!v0.is_none()) start.v0 = a.tangent(v0, "solve", "v0");
     if (!xi0.is_none()) start.xi0 = a.tangent(xi0, "solve", "xi0");
-    if (!guess.is_none()) start.trajectory = trajectory_guess<G>(guess, a);
+    if (!guess.is_none()) start.trajectory = trajectory_of<G>(guess, a, "solve", "guess", false);
     const ElementOf<G> first = g0.is_none() ? G::identity() : a.element(g0, "solve", "g0");
     const ElementOf<G> last = a.element(gT, "solve", "gT");
     const TransportedSolution<G> s = visit_model<PythonLagrangian<G>, Models...>(model, [&](const auto& l) {
       using L = std::decay_t<decltype(l)>;
       return solve(TransportedProblem<G, L>{l, lambda, T, N, first, last}, options, start);
     });
-    return solution_dict(s, a.group, lambda, T, N);
+    return solution_dict(s, a.group, lambda, T, N, first, last, options.tol);
   }, py::arg("lagrangian"), py::arg("lam"), py::arg("T"), py::arg("N"), py::arg("g0"), py::arg("gT"),
      py::arg("request"), py::arg("v0"), py::arg("xi0"), py::arg("guess"), py::arg("progress"));
+  group.def_static("_verify", [a](const py::object& model, const py::object& result, double lambda, double T,
+                                  const py::object& g0, const py::object& gT, int order, double tol,
+                                  const std::string& status) {
+    const TransportedTrajectory<G> x = trajectory_of<G>(result, a, "verify", "result", true);
+    const ElementOf<G> first = a.element(g0, "verify", "g0"), last = a.element(gT, "verify", "gT");
+    const Status outcome = parse_enum<Status>(status, "cartan.verify");
+    if (x.t.empty() && outcome != Status::Converged) return report_dict(verify::unchecked_failure(outcome));
+    const verify::Report report = visit_model<PythonLagrangian<G>, Models...>(model, [&](const auto& l) {
+      using L = std::decay_t<decltype(l)>;
+      const int steps = std::max<int>(1, static_cast<int>(x.t.size()) - 1);
+      return verify::verify_trajectory(TransportedProblem<G, L>{l, lambda, T, steps, first, last}, x, order, tol, outcome);
+    });
+    return report_dict(report);
+  }, py::arg("lagrangian"), py::arg("result"), py::arg("lam"), py::arg("T"), py::arg("g0"), py::arg("gT"),
+     py::arg("order"), py::arg("tol"), py::arg("status"));
 }
 
 }  // namespace cartan::python

@@ -17,6 +17,7 @@
 
 #include <exception>
 #include <memory>
+#include <cmath>
 #include <optional>
 #include <type_traits>
 #include <string>
@@ -92,6 +93,16 @@ struct FromPython<LagrangianHessian<G>> {
   }
 };
 
+inline bool all_finite(double x) { return std::isfinite(x); }
+template <class Derived>
+bool all_finite(const Eigen::MatrixBase<Derived>& x) {
+  return x.allFinite();
+}
+template <LieGroup G>
+bool all_finite(const LagrangianHessian<G>& h) {
+  return h.momentum_v.allFinite() && h.momentum_g.allFinite() && h.gradient_v.allFinite() && h.gradient_g.allFinite();
+}
+
 /// The Python object and its methods, looked up once (optional ones may be missing).
 class PythonModel {
  public:
@@ -108,7 +119,14 @@ class PythonModel {
   R call(std::size_t index, double t, const E& g, const X& x) const {
     const std::string who = kind_ + "." + names_[index];
     return guarded_callback(*state_, who, [&] {
-      return FromPython<R>::convert(methods_[index](t, to_numpy(g), to_numpy(x)), who);
+      R result = FromPython<R>::convert(methods_[index](t, to_numpy(g), to_numpy(x)), who);
+      // A non-finite value from finite arguments is the callback's fault: name it at once rather
+      // than let the solvers retry (continuation would halve T eight times first).
+      if (!all_finite(result) && std::isfinite(t) && g.allFinite() && x.allFinite()) {
+        throw std::invalid_argument(who + " returned a non-finite value at t = " + format_value(t) + ", g = " +
+                                    format_value(g) + ", argument = " + format_value(x));
+      }
+      return result;
     });
   }
 

@@ -221,6 +221,32 @@ def test_python_callback_errors_propagate():
         cartan.solve(WrongShape(INERTIA), lam=0.5, T=1, N=10, gT=GT, method="two-level")
 
 
+def test_non_finite_callback_values_are_named_at_once():
+    # A NaN from finite arguments is the callback's fault: ValueError naming it, and no callback runs
+    # after the first NaN (the solvers do not retry with shorter horizons or other methods).
+    class NaNForce(PyRigidBody):
+        nans = 0
+
+        def group_gradient(self, t, g, v):
+            if t > 0.5:
+                NaNForce.nans += 1
+                return np.array([np.nan, 0.0, 0.0])
+            return np.zeros(3)
+
+    with pytest.raises(ValueError, match=r"^Lagrangian\.group_gradient returned a non-finite value at t = 0\.(6|59999)"):
+        cartan.solve(NaNForce(INERTIA), lam=0.5, T=1, N=10, gT=GT)
+    assert NaNForce.nans == 1
+
+
+def test_a_velocity_that_does_not_invert_momentum_is_named():
+    class WrongInverse(PyRigidBody):
+        def velocity(self, t, g, mu):
+            return mu  # should be I^-1 mu
+
+    with pytest.raises(ValueError, match="lagrangian .* does not invert its momentum"):
+        cartan.solve(WrongInverse(INERTIA), lam=0.5, T=1, N=10, gT=GT)
+
+
 class PyKineticEnergy:
     """l = 1/2 v.I v on any group, written in Python (free motion for a left-invariant metric)."""
 

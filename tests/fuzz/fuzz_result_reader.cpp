@@ -30,12 +30,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const cartan::cli::ResultFile result = cartan::cli::read_result(cartan::cli::parse_json(text, "cartan verify: FILE"));
     require(result.t.size() >= 2 && result.g.rows() == result.t.size(), "validated sizes");
-    const cartan::cli::VerifyReport report = cartan::cli::verify(result);
+    const cartan::verify::Report report = cartan::cli::verify(result);
     require(!report.checks.empty(), "a report has checks");
     for (const auto& check : report.checks) {
       require(std::isfinite(check.threshold) && check.threshold >= 0, "thresholds are finite and non-negative");
     }
-    require(!report.text().empty() && report.json().is_object(), "the report renders");
+    require(!report.text().empty() && cartan::cli::report_json(report).is_object(), "the report renders");
   } catch (const std::invalid_argument&) {
     // expected rejection of bad input: the CLI reports it with exit code 2
   }

@@ -1,12 +1,13 @@
-// The checks of include/cartan/verify/checks.hpp on synthetic trajectories: an exact solution
-// gives rounding-level figures, and each kind of non-solution gives an O(1) figure in the check
-// that should see it.
+// The checks of include/cartan/verify/checks.hpp and the verdict of verify/report.hpp on synthetic
+// trajectories: an exact solution gives rounding-level figures, and each kind of non-solution
+// gives an O(1) figure in the check that should see it.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "cartan/models/rigid_body.hpp"
 #include "cartan/verify/checks.hpp"
+#include "cartan/verify/report.hpp"
 #include "test_support.hpp"
 
 namespace cartan::verify {
@@ -96,6 +97,96 @@ TEST(VerifyChecks, UniformMeshes) {
   EXPECT_FALSE(is_uniform({0.0}));
   EXPECT_EQ(relative_to(0.0, 0.0), 0.0);
   EXPECT_NEAR(discretisation_threshold(2.0, 0.1, 2), 0.02, 1e-15);
+}
+
+// The lambda factor a = max(1, |2 lambda - 1| + |lambda (1 - lambda)| kappa) with kappa =
+// max |ad*_v xi| / max |ad*_v mu|: with v = e1, mu = e2, xi = e3 on SO(3) both coadjoint terms
+// have size 1 (ad*_v mu = mu x v), so kappa = 1.
+TEST(VerifyChecks, AmplificationFollowsTheTorsionAndCurvatureCoefficients) {
+  TransportedTrajectory<SO3> x;
+  for (int k = 0; k <= 4; ++k) {
+    x.t.push_back(0.25 * k);
+    x.g.push_back(SO3::exp(SO3::Tangent(0.25 * k, 0, 0)));
+    x.v.push_back(SO3::Tangent::UnitX());
+    x.mu.push_back(SO3::Tangent::UnitY());
+    x.xi.push_back(SO3::Tangent::UnitZ());
+  }
+  const RigidBody body(Eigen::Matrix3d::Identity());
+  for (auto [lambda, a] : {std::pair{2.0, 5.0}, std::pair{-1.0, 5.0}, std::pair{-0.5, 2.75}, std::pair{1.5, 2.75},
+                           std::pair{0.5, 1.0}, std::pair{0.0, 1.0}, std::pair{1.0, 1.0}}) {
+    const TrajectoryChecks<SO3, RigidBody> checks(body, lambda, 1.0, x);
+    EXPECT_NEAR(checks.amplification(), a, 1e-14) << lambda;
+  }
+}
+
+// Steady rotation about an axis of an isotropic body solves eq:reduced-system for every lambda
+// (see ExactSolutionGivesRoundingLevelFigures): the verdict passes at lambda outside [0, 1] too,
+// and its thresholds grow with a = |2 lambda - 1| (xi = 0, so kappa = 0): energy as a^(p+1),
+// the others as a^p (report.hpp).
+TEST(VerifyReport, ExactSolutionPassesForEveryLambda) {
+  const Eigen::Matrix3d inertia = 2 * Eigen::Matrix3d::Identity();
+  const auto x = rotation_about(kAxis, 2.0, 50, [](double t) { return 0.7 * t; }, [](double) { return 0.7; }, inertia);
+  const TransportedProblem<SO3, RigidBody> base{RigidBody(inertia), 0.0, 2.0, 50, SO3::identity(),
+                                                SO3::exp(SO3::Tangent(1.4 * kAxis))};
+  const Report at_zero = verify_trajectory(base, x, 1, 1e-10);
+  for (double lambda : {-1.0, -0.5, 1.5, 2.0}) {
+    SCOPED_TRACE(lambda);
+    auto problem = base;
+    problem.lambda = lambda;
+    const Report report = verify_trajectory(problem, x, 1, 1e-10);
+    EXPECT_TRUE(report.passed()) << report.text();
+    const double a = std::abs(2 * lambda - 1);
+    EXPECT_NEAR(report.amplification, a, 1e-14);
+    ASSERT_EQ(report.checks.size(), at_zero.checks.size());
+    for (std::size_t i = 0; i < report.checks.size(); ++i) {
+      const Check& c = report.checks[i];
+      const double floor = threshold_floor(1e-10), power = c.name == "energy" ? 2 : 1;
+      if (c.name == "energy" || c.name == "residual" || c.name == "stationarity") {
+        EXPECT_NEAR(c.threshold - floor, std::pow(a, power) * (at_zero.checks[i].threshold - floor), 1e-14) << c.name;
+      }
+    }
+  }
+}
+
+// A result that did not converge fails with a `converged` check whatever its data; without data
+// the report says they were not checked.
+TEST(VerifyReport, FailedResultsNeverPass) {
+  const Eigen::Matrix3d inertia = 2 * Eigen::Matrix3d::Identity();
+  const auto x = rotation_about(kAxis, 2.0, 50, [](double t) { return 0.7 * t; }, [](double) { return 0.7; }, inertia);
+  const TransportedProblem<SO3, RigidBody> problem{RigidBody(inertia), 0.5, 2.0, 50, SO3::identity(),
+                                                   SO3::exp(SO3::Tangent(1.4 * kAxis))};
+  const Report failed = verify_trajectory(problem, x, 1, 1e-10, Status::MaxIterations);
+  EXPECT_FALSE(failed.passed());
+  EXPECT_EQ(failed.checks.front().name, "converged");
+  EXPECT_EQ(failed.checks.front().verdict(), "FAIL");
+  EXPECT_TRUE(std::all_of(failed.checks.begin() + 1, failed.checks.end(), [](const Check& c) { return c.passed(); }));
+  TransportedSolution<SO3> empty;
+  empty.status = Status::StrategyFailed;
+  const Report unchecked = verify_solution(problem, empty, 1e-10);
+  EXPECT_FALSE(unchecked.passed());
+  EXPECT_NE(unchecked.text().find("not checked"), std::string::npos);
+  EXPECT_NE(unchecked.text().find("strategy-failed"), std::string::npos);
+}
+
+// Invalid data are rejected with a message naming the value.
+TEST(VerifyReport, InvalidTrajectoriesAreRejected) {
+  const Eigen::Matrix3d inertia = 2 * Eigen::Matrix3d::Identity();
+  const TransportedProblem<SO3, RigidBody> problem{RigidBody(inertia), 0.5, 2.0, 50, SO3::identity(), SO3::identity()};
+  const auto x = rotation_about(kAxis, 2.0, 50, [](double t) { return 0.7 * t; }, [](double) { return 0.7; }, inertia);
+  auto short_x = x;
+  short_x.t.resize(1), short_x.g.resize(1), short_x.v.resize(1), short_x.mu.resize(1), short_x.xi.resize(1);
+  testing::expect_invalid([&] { (void)verify_trajectory(problem, short_x, 1, 1e-10); }, "1 samples");
+  auto backwards = x;
+  std::swap(backwards.t[3], backwards.t[4]);
+  testing::expect_invalid([&] { (void)verify_trajectory(problem, backwards, 1, 1e-10); }, "not increasing");
+  auto nan = x;
+  nan.mu[7][1] = std::nan("");
+  testing::expect_invalid([&] { (void)verify_trajectory(problem, nan, 1, 1e-10); }, "mu (row 7)");
+  auto longer = problem;
+  longer.T = 3.0;
+  testing::expect_invalid([&] { (void)verify_trajectory(longer, x, 1, 1e-10); }, "must run from 0 to T");
+  testing::expect_invalid([&] { (void)verify_trajectory(problem, x, 0, 1e-10); }, "order");
+  testing::expect_invalid([&] { (void)verify_trajectory(problem, x, 1, -1.0); }, "tol");
 }
 
 }  // namespace

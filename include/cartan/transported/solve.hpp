@@ -24,7 +24,9 @@
 #include <vector>
 
 #include "cartan/bvp/transported_solution.hpp"
+#include "cartan/models/heisenberg_oscillator.hpp"
 #include "cartan/models/natural_system.hpp"
+#include "cartan/models/rigid_body.hpp"
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/method.hpp"
 #include "cartan/transported/solve_options.hpp"
@@ -69,6 +71,26 @@ std::string cut_locus_note(const TransportedProblem<G, L>& problem) {
     }
   }
   return {};
+}
+
+/// Throws std::invalid_argument when the Lagrangian's `velocity` does not invert its `momentum`
+/// (the scheme recovers v from mu with it at every step): checked at t = 0, g0 and t = T, gT on
+/// the geodesic velocity and the basis vectors, to 1e-6 relative (an exact inverse agrees to
+/// rounding; an iterative one to its own tolerance, which should be far below the solver's).
+template <LieGroup G, ReducedLagrangian<G> L>
+void check_legendre_inverse(const TransportedProblem<G, L>& problem) {
+  const TangentOf<G> geodesic = geodesic_guess(problem);
+  for (const auto& [t, g] : {std::pair{0.0, problem.g0}, std::pair{problem.T, problem.gT}}) {
+    for (int i = -1; i < G::kDim; ++i) {
+      const TangentOf<G> v = i < 0 ? geodesic : TangentOf<G>(TangentOf<G>::Unit(i));
+      const TangentOf<G> back = problem.lagrangian.velocity(t, g, problem.lagrangian.momentum(t, g, v));
+      if (!((back - v).norm() <= 1e-6 * (1 + v.norm()))) {
+        throw_invalid("solve", "lagrangian", "(velocity(t, g, momentum(t, g, v)) = " + format_value(back) +
+                                                 " for v = " + format_value(v) + " at t = " + format_value(t) + ")",
+                      "does not invert its momentum: velocity must be the inverse Legendre map of momentum");
+      }
+    }
+  }
 }
 
 /// Fills what every result carries: the action S_h of its trajectory, the total time.
@@ -253,6 +275,7 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
   problem.validate();
   options.validate();
   guess.validate(problem.T);
+  detail::check_legendre_inverse(problem);
   const auto start = std::chrono::steady_clock::now();
   TransportedSolution<G> s;
   switch (options.method) {
@@ -292,5 +315,14 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
   detail::complete(problem, s, start);
   return s;
 }
+
+// The built-in models' solve is compiled once, in the library (src/transported/solve_*.cpp), not
+// again in every translation unit that calls it: each instance is the heaviest code in cartan.
+extern template TransportedSolution<SO3> solve(const TransportedProblem<SO3, RigidBody>&, const SolveOptions&,
+                                               const SolveGuess<SO3>&);
+extern template TransportedSolution<SO3> solve(const TransportedProblem<SO3, SO3Oscillator>&, const SolveOptions&,
+                                               const SolveGuess<SO3>&);
+extern template TransportedSolution<Heisenberg> solve(const TransportedProblem<Heisenberg, H3Oscillator>&,
+                                                      const SolveOptions&, const SolveGuess<Heisenberg>&);
 
 }  // namespace cartan

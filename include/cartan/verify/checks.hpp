@@ -49,7 +49,7 @@ inline bool is_uniform(const std::vector<double>& t) {
 }
 
 /// Threshold of a discretisation error of order p at resolution rho = h omega (radians per step):
-/// constant * rho^p. The constants are chosen in verify_command.cpp from measured margins.
+/// constant * rho^p. The constants are chosen in verify/report.hpp from measured margins.
 inline double discretisation_threshold(double constant, double resolution, int order) {
   return constant * std::pow(resolution, order);
 }
@@ -118,6 +118,22 @@ class TrajectoryChecks {
       if (smallest > 0) stiffness = std::max(stiffness, hess.gradient_g.norm() / smallest);
     }
     return speed + std::sqrt(stiffness);
+  }
+
+  /// How much faster than omega the coadjoint terms of the mu equation can move mu:
+  /// a = max(1, |2 lambda - 1| + |lambda (1 - lambda)| kappa), kappa = max_k |ad*_v xi| / max_k
+  /// |ad*_v mu| (the curvature term's operand against the torsion term's; 0/0 = 0). On
+  /// lambda in [0, 1] a = 1 whenever kappa <= 2 (the measured calibration range); outside it the
+  /// torsion coefficient |2 lambda - 1| > 1 and the curvature coefficient grow, and the scheme's
+  /// error with them (docs/verify.md#lambda-outside-0-1).
+  double amplification() const {
+    double torsion_operand = 0, curvature_operand = 0;
+    for (std::size_t k = 0; k < size(); ++k) {
+      torsion_operand = std::max(torsion_operand, coad<G>(x_.v[k], x_.mu[k]).norm());
+      curvature_operand = std::max(curvature_operand, coad<G>(x_.v[k], x_.xi[k]).norm());
+    }
+    const double kappa = relative_to(curvature_operand, torsion_operand);
+    return std::max(1.0, std::abs(2 * lambda_ - 1) + std::abs(lambda_ * (1 - lambda_)) * kappa);
   }
 
   /// The largest step of t.

@@ -1,0 +1,109 @@
+"""cartan.verify: the library's checks and verdict (include/cartan/verify/report.hpp) from Python,
+on results of built-in and Python-defined Lagrangians; the same report as `cartan verify`.
+
+Tolerances (theory):
+* Python vs CLI report: the same C++ checks on the same samples, up to the JSON round trip of the
+  CLI's file (17 significant digits); the figures are relative sizes of order rho = h omega
+  computed from those samples, so they agree to 1e-9 relative.
+* Python-defined vs built-in Lagrangian: the same formulas in the callbacks, so the same figures to
+  rounding (1e-9 relative: the checks difference the samples, losing up to 1e6 of 1e-16)."""
+import dataclasses
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import cartan
+from python_models import PyRigidBody
+
+ROOT = Path(__file__).resolve().parents[2]
+CARTAN_BIN = os.environ.get("CARTAN_BIN", str(ROOT / "build" / "cartan"))
+A0, AT = np.array([1.0, 0, 0]), np.array([0.0, 1, 0.3])
+GT = cartan.SO3.minimal_rotation(A0, AT)
+
+
+@pytest.mark.parametrize("lam", [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0])
+def test_honest_results_pass_for_every_lambda(lam):
+    model = cartan.SO3Oscillator([1.0, 5.0, 9.0])
+    r = cartan.solve(model, lam=lam, T=3, N=200, gT=GT, tol=1e-11)
+    assert r.success, r.message
+    report = cartan.verify(r, model)
+    assert report.passed and report.verdict == "PASS", str(report)
+    assert [c["name"] for c in report.checks] == ["boundary", "legendre", "energy", "residual", "stationarity"]
+    assert str(report).endswith("VERDICT: PASS\n")
+    # a = 1 on [0, 1] here (kappa <= 2); outside, at least |2 lambda - 1|.
+    assert report.amplification == pytest.approx(1.0) if 0 <= lam <= 1 else report.amplification >= abs(2 * lam - 1)
+
+
+def test_same_report_as_the_cli(tmp_path):
+    path = tmp_path / "r.json"
+    out = subprocess.run([CARTAN_BIN, "solve", "--model", "oscillator", "--inertia", "1,5,9", "--lambda", "2", "--T",
+                          "3", "--N", "200", "--a0", "1,0,0", "--aT", "0,1,0.3", "--tol", "1e-11", "--output",
+                          str(path)], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    cli = json.loads(subprocess.run([CARTAN_BIN, "verify", "--json", str(path)], capture_output=True, text=True,
+                                    timeout=120).stdout)
+    data = json.loads(path.read_text())
+    result = dict(lam=data["lambda"], T=data["T"], g0=np.array(data["g0"]).reshape(3, 3),
+                  gT=np.array(data["gT"]).reshape(3, 3), order=data["order"], tol=data["tol"],
+                  status=data["status"], t=data["t"], g=np.array(data["g"]).reshape(-1, 3, 3), v=data["v"],
+                  mu=data["mu"], xi=data["xi"])
+    report = cartan.verify(type("Result", (), result), cartan.SO3Oscillator([1.0, 5.0, 9.0]))
+    assert report.verdict == cli["verdict"] == "PASS"
+    assert report.amplification == pytest.approx(cli["amplification"], rel=1e-9)
+    for mine, theirs in zip(report.checks, cli["checks"]):
+        assert mine["name"] == theirs["name"] and mine["result"] == theirs["result"]
+        assert mine["figure"] == pytest.approx(theirs["figure"], rel=1e-9, abs=1e-15)
+        assert mine["threshold"] == pytest.approx(theirs["threshold"], rel=1e-9)
+
+
+def test_python_lagrangian_gives_the_builtin_figures():
+    builtin = cartan.RigidBody([2.0, 3.0, 4.0])
+    r = cartan.solve(builtin, lam=0.5, T=2, N=100, gT=GT, tol=1e-11)
+    a, b = cartan.verify(r, builtin), cartan.verify(r, PyRigidBody([2.0, 3.0, 4.0]))
+    assert a.passed and b.passed
+    for x, y in zip(a.checks, b.checks):
+        assert x["figure"] == pytest.approx(y["figure"], rel=1e-9, abs=1e-15), x["name"]
+
+
+def test_tampered_results_fail():
+    model = cartan.SO3Oscillator([2.0, 3.0, 4.0])
+    r = cartan.solve(model, lam=0.0, T=3, N=200, gT=GT, tol=1e-11)
+    assert cartan.verify(r, model).passed
+    # The transported action of lambda = 0 is not stationary for lambda = 1: residual and action see it.
+    wrong = cartan.verify(dataclasses.replace(r, lam=1.0), model)
+    failed = {c["name"] for c in wrong.checks if c["result"] == "FAIL"}
+    assert not wrong.passed and {"residual", "stationarity"} <= failed, str(wrong)
+    # An oscillator solution is not a free body's: 1/2 v.I v alone is not conserved.
+    as_free_body = cartan.verify(r, cartan.RigidBody([2.0, 3.0, 4.0]))
+    assert "energy" in {c["name"] for c in as_free_body.checks if c["result"] == "FAIL"}
+
+
+def test_a_failed_solve_never_passes():
+    model = cartan.SO3Oscillator([2.0, 3.0, 4.0])
+    gT = cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1])
+    r = cartan.solve(model, lam=0.5, T=12, N=800, gT=gT, method="shooting", max_iterations=3)
+    assert not r.success
+    report = cartan.verify(r, model)
+    assert not report.passed and report.checks[0]["name"] == "converged" and report.checks[0]["result"] == "FAIL"
+    assert r.status in report.checks[0]["note"]
+    empty = dataclasses.replace(r, t=np.zeros(0), g=np.zeros((0, 3, 3)), v=np.zeros((0, 3)), mu=np.zeros((0, 3)),
+                                xi=np.zeros((0, 3)))
+    unchecked = cartan.verify(empty, model)
+    assert not unchecked.passed and "not checked" in str(unchecked)
+
+
+def test_bad_input_raises_value_error():
+    model = cartan.RigidBody([2.0, 3.0, 4.0])
+    r = cartan.solve(model, lam=0.5, T=2, N=20, gT=GT)
+    with pytest.raises(ValueError, match="status"):
+        cartan.verify(dataclasses.replace(r, status="done"), model)
+    with pytest.raises(ValueError, match="needs g, v, mu and xi at every time"):
+        cartan.verify(dataclasses.replace(r, v=r.v[:-1]), model)
+    with pytest.raises(ValueError, match="must run from 0 to T"):
+        cartan.verify(dataclasses.replace(r, T=3.0), model)
+    with pytest.raises(ValueError, match="group"):
+        cartan.verify(r, object())
