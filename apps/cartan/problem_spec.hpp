@@ -34,8 +34,8 @@ struct ProblemSpec {
 /// Memory limit of one `cartan solve` run, checked by validate() so that a huge N, --samples or
 /// --segments is refused with a message instead of ending in std::bad_alloc or the OOM killer.
 inline constexpr double kMemoryLimitBytes = 4.0 * 1024 * 1024 * 1024;
-/// Peak memory per stored node (trajectory, solver copies, JSON tree and text): measured 0.96 KB
-/// (peak RSS / N at N = 2e5 for two-level, shooting and multiple shooting, so3 and H3), rounded up.
+/// Peak memory per stored node (trajectory, solver copies, JSON tree and text), rounded up from
+/// the measured peak RSS / N (bench/README.md, "memory per node").
 inline constexpr double kBytesPerNode = 1024;
 /// Multiple shooting's dense lifted algebra: (12 M)^2 doubles per matrix for M segments, about 4
 /// such matrices alive at once (Jacobian, normal matrix, its damped copy and factorisation).

@@ -49,7 +49,6 @@ SolveOptions solve_options(const ProblemSpec& spec) {
   options.max_iterations = spec.max_iterations;
   if (spec.segments > 0) options.segments = spec.segments;
   options.samples = spec.samples;
-  if (options.method == Method::Collocation) options.max_nodes = bvp::kTransportedMaxNodes;
   return options;
 }
 

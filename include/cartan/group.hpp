@@ -71,18 +71,6 @@ CovectorOf<G> coad(const TangentOf<G>& u, const CovectorOf<G>& mu) {
   return G::ad(u).transpose() * mu;
 }
 
-/// The adjoint action of the group on its algebra, g . v = Ad_g v.
-template <LieGroup G>
-TangentOf<G> act(const ElementOf<G>& g, const TangentOf<G>& v) {
-  return G::Ad(g) * v;
-}
-
-/// The coadjoint action on g*, Ad*_{g^{-1}} mu = Ad_{g^{-1}}^T mu (a left action).
-template <LieGroup G>
-CovectorOf<G> coadjoint_act(const ElementOf<G>& g, const CovectorOf<G>& mu) {
-  return G::Ad(G::inverse(g)).transpose() * mu;
-}
-
 /// Entrywise (Frobenius) pairing of an ambient covector with an ambient tangent vector.
 template <LieGroup G>
 double ambient_pairing(const ElementOf<G>& alpha, const ElementOf<G>& x) {

@@ -132,7 +132,8 @@ class SolveResult:
     v0, xi0: the initial values; terminal_error = |log(gT^-1 g_N)|, xi_terminal = |xi_N|;
     action: the discrete transported action S_h of the trajectory (tells branches apart);
     outer_iterations, inner_iterations, sweeps: work done (collocation: mesh refinements, Newton
-    iterations, Jacobians); mesh_size, max_residual: collocation only (else None);
+    iterations, Jacobians); mesh_size, max_residual, group_defect: collocation only (else None;
+    group_defect = max |g^T g - I| over the mesh of g and the transport element on SO(3), NaN elsewhere);
     solve_time: seconds in the solver.
     """
     status: str
@@ -165,6 +166,7 @@ class SolveResult:
     solve_time: float
     mesh_size: Optional[int] = None
     max_residual: Optional[float] = None
+    group_defect: Optional[float] = None
 
     def __repr__(self):
         return (f"SolveResult(status={self.status!r}, success={self.success}, method={self.method!r}, "

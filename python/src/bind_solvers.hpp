@@ -46,7 +46,6 @@ struct SolveRequest {
     o.lambda_start = lambda_start;
     o.samples = samples.value_or(0);
     o.max_nodes = max_nodes;
-    if (o.method == Method::Collocation && !o.max_nodes) o.max_nodes = bvp::kTransportedMaxNodes;
     return o;
   }
 };
@@ -143,6 +142,7 @@ py::dict solution_dict(const TransportedSolution<G>& s, const std::string& group
   d["solve_time"] = s.solve_time_s;
   d["mesh_size"] = s.collocation ? py::object(py::int_(s.collocation->mesh_size)) : py::object(py::none());
   d["max_residual"] = s.collocation ? py::object(py::float_(s.collocation->max_residual)) : py::object(py::none());
+  d["group_defect"] = s.collocation ? py::object(py::float_(s.collocation->group_defect)) : py::object(py::none());
   return d;
 }
 

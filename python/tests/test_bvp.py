@@ -265,6 +265,20 @@ def test_so3_free_body_collocation_matches_shooting_at_the_schemes_order(lam):
     assert np.all(np.abs(rates - 2) < 0.25)
 
 
+def test_group_defect_is_reported_as_by_the_cli():
+    # SO(3) collocation reports max |g^T g - I| over its mesh (the CLI's "group_defect"): the
+    # collocation polynomial of g leaves the group by O(h^4) between renormalisations, so tiny;
+    # H3 has no such defect (NaN); shooting does not report one (None).
+    gT = cartan.SO3.minimal_rotation(A0, AT)
+    c = cartan.solve(cartan.RigidBody([2.0, 3.0, 4.0]), lam=0.5, T=2.0, N=40, gT=gT, method="collocation", tol=1e-10)
+    d = cli("--method", "collocation", "--lambda", "0.5", "--T", "2", "--N", "40", "--a0=-1,-1,-1", "--aT", "0.9,1,1",
+            "--tol", "1e-10")
+    assert c.success and c.group_defect < 1e-9
+    assert c.group_defect == pytest.approx(d["group_defect"], rel=1e-6, abs=1e-15)
+    assert np.isnan(cartan.solve(cartan.H3Oscillator(), N=20, method="collocation", **H3).group_defect)
+    assert cartan.solve(cartan.RigidBody([2.0, 3.0, 4.0]), lam=0.5, T=2.0, N=40, gT=gT).group_defect is None
+
+
 def test_so3_oscillator_collocation_matches_shooting_at_the_schemes_order():
     gT = cartan.SO3.minimal_rotation(np.array([-0.7, -1.0, -0.7]), np.array([0.8, 0.8, 1.0]))
     rates = order_against_shooting(cartan.SO3Oscillator([2.0, 3.0, 4.0]), lam=0.5, T=3.0, gT=gT)

@@ -26,19 +26,17 @@ double trajectory_difference(const TransportedTrajectory<G>& a, const Transporte
 
 // The segments join into the discrete solution of single shooting: v0 and every node agree to
 // 1e-10 (both solves converge to |r| <= 1e-12; the sweep's sensitivity over T = 50 turns that
-// into ~1e-11 at most). Both initial segment states (sweep, geodesic) lead there.
+// into ~1e-11 at most).
 TEST(MultipleShooting, SameSolutionAsSingleShooting) {
   for (double lambda : {0.0, 0.5, 1.0}) {
     const auto problem = paper_free_body(lambda);
     const auto single = solve_shooting(problem, {.tolerance = 1e-12});
     ASSERT_TRUE(single.converged()) << single.message;
     for (int segments : {1, 4, 10}) {
-      for (auto start : {MultipleShootingStart::Sweep, MultipleShootingStart::Geodesic}) {
-        if (start == MultipleShootingStart::Geodesic && segments != 10) continue;
-        const auto multiple =
-            solve_multiple_shooting(problem, {.start = start, .segments = segments, .tolerance = 1e-12});
-        const std::string where = "lambda " + std::to_string(lambda) + " M " + std::to_string(segments) + " start " +
-                                  std::to_string(static_cast<int>(start)) + ": " + multiple.message;
+      {
+        const auto multiple = solve_multiple_shooting(problem, {.segments = segments, .tolerance = 1e-12});
+        const std::string where =
+            "lambda " + std::to_string(lambda) + " M " + std::to_string(segments) + ": " + multiple.message;
         ASSERT_TRUE(multiple.converged()) << where;
         EXPECT_EQ(multiple.status, Status::Converged) << where;
         EXPECT_EQ(multiple.method, Method::MultipleShooting);
@@ -61,7 +59,7 @@ void expect_jacobian_matches_differences(const TransportedProblem<G, L>& problem
                                          std::mt19937& rng) {
   const TransportedScheme<G, L> scheme(problem, order);
   MultipleShootingSystem<G, L> system(scheme, 4);
-  const auto start = system.initialise_geodesic(random_tangent<G>(rng, 0.5), random_tangent<G>(rng, 0.3));
+  const auto start = system.initialise(random_tangent<G>(rng, 0.5), random_tangent<G>(rng, 0.3));
   ASSERT_TRUE(start) << system.failure();
   Eigen::VectorXd x = *start;
   std::uniform_real_distribution<double> uniform(-0.3, 0.3);
@@ -125,8 +123,8 @@ TEST(MultipleShooting, SweepStartJoinsAndRecentringKeepsTheState) {
 
 // docs/paper-notes.md#erratum-4: at T = 12 single shooting from the geodesic guess fails. Measured:
 // multiple shooting does not rescue it either. For lambda = 0, 1/2, 1, with segment states
-// from the sweep (M = 2, 4, 8, 10, 16, 20, 32, 50, 64) or from the geodesic (M = 2, 3, 4, 6, 8,
-// 12, 16, 24, 32, 48, 100), and LM damping 1e-8..1, LM ends on a fold of the lifted system
+// from the sweep (M = 2, 4, 8, 10, 16, 20, 32, 50, 64) or from the geodesic (an option since
+// removed; M = 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 100), and LM damping 1e-8..1, LM ends on a fold of the lifted system
 // (sigma_min / sigma_max of the Jacobian 1e-11..1e-9, the residual entirely along the null
 // direction): a local minimum of |r| (0.01..0.7), far from the branch continuation follows.
 // The test records the outcome for M = 8 (the default at N = 800) and 16 (M = 32 behaves the

@@ -117,8 +117,8 @@ TransportedSolution<Heisenberg> solve_heisenberg_transported(const HeisenbergNat
 /// the order-2 shooting solution found by continuation in T or in lambda (from lambda = 0), whose
 /// solution branch the collocation then refines to the continuous solution; `branch` says which.
 /// With a fallback, Newton from the geodesic guess must first converge on the N-interval mesh: otherwise
-/// the adaptive solver would refine a guess outside Newton's basin up to max_nodes (measured: 9 s
-/// of 10 on the T = 12 oscillator) before the fallback could start. A `guess` trajectory (times
+/// the adaptive solver would refine a guess outside Newton's basin up to max_nodes (most of the
+/// solve time; bench/README.md, "collocation fallback") before the fallback could start. A `guess` trajectory (times
 /// from 0 to T) replaces the geodesic guess.
 template <LieGroup G, Potential<G> V>
 TransportedSolution<G> solve_transported_by_collocation(const TransportedProblem<G, NaturalLagrangian<G, V>>& problem,

@@ -84,7 +84,7 @@ class Inertia {
   Vector apply(const Vector& v) const { return matrix_ * v; }
   /// I^{-1} mu by the inverse computed once (Cholesky, symmetrised): a product instead of two
   /// triangular solves with divisions on every call (the inverse Legendre map sits in every
-  /// right-hand side; measured ~15% of a collocation solve's time). Errors: cond(I) eps |mu|.
+  /// right-hand side; bench/README.md, "inverse inertia"). Errors: cond(I) eps |mu|.
   Vector solve(const Vector& mu) const { return inverse_ * mu; }
 
  private:

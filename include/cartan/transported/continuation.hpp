@@ -81,8 +81,8 @@ struct PathEnd {
 /// relative norm of `distance` below); otherwise the increment is halved. On a smooth branch the
 /// correction shrinks with the increment (quadratically after the first stage), so a small
 /// enough stage is always accepted; a corrector that converges far from the prediction has
-/// jumped to another branch (measured on the paper's T = 12 oscillator: jumps correct by
-/// 0.3-0.8, steps along the branch by < 0.05). Accumulates work into `current`.
+/// jumped to another branch (bench/README.md, "continuation acceptance"). Accumulates work into
+/// `current`.
 template <LieGroup G, class MakeProblem>
 PathEnd continue_parameter(const MakeProblem& make, double from, double to, TransportedSolution<G>& current,
                            const ContinuationOptions& options) {

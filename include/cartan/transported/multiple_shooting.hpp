@@ -33,15 +33,8 @@
 
 namespace cartan {
 
-/// Where the start states of segments 1..M-1 come from initially.
-enum class MultipleShootingStart {
-  Sweep,     ///< one sweep from the initial guess (v0, xi0): the initial residual is single shooting's
-  Geodesic,  ///< the geodesic from g0 to gT (MultipleShootingSystem::initialise_geodesic)
-};
-
 struct MultipleShootingOptions {
   SchemeOrder order = SchemeOrder::First;
-  MultipleShootingStart start = MultipleShootingStart::Sweep;
   std::optional<int> segments = std::nullopt;  ///< M; unset: default_segments(N)
   double tolerance = 1e-10;     ///< on the lifted residual and on one plain sweep's |(log(gT^{-1} g_N), xi_N)|
   int max_iterations = 100;     ///< Levenberg–Marquardt iterations over all rounds
@@ -119,39 +112,6 @@ class MultipleShootingSystem {
       reference_.push_back(out.last);
       x.segment<n>(offset(j) + 2 * n) = out.last.mu;
       x.segment<n>(offset(j) + 3 * n) = out.last.xi;
-    }
-    return x;
-  }
-
-  /// References on the geodesic g(t) = g0 exp(t w), w = log(g0^{-1} gT) / T, which joins both
-  /// ends: its body velocity is u = w, so h(t) = exp(-lambda t w), v = Ad(h)^{-1} w = w,
-  /// mu = dl/dv(w) and xi(t) = (T - t) ad*_w mu (xi' = -ad*_w mu, xi(T) = 0, exact when mu is
-  /// constant). Segment 0 starts from (v0, xi0). Returns the unknowns (chart coordinates 0).
-  std::optional<Eigen::VectorXd> initialise_geodesic(const TangentOf<G>& v0, const CovectorOf<G>& xi0) {
-    const auto& p = scheme_.problem();
-    const TangentOf<G> w = geodesic_guess(p);
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(size());
-    x.head<n>() = v0;
-    x.segment<n>(n) = xi0;
-    reference_.assign(static_cast<std::size_t>(segments()) - 1, Node{});
-    double t = 0;  // accumulated as the sweep does
-    for (int k = 0, j = 1; j < segments(); ++k) {
-      if (k == boundary_[static_cast<std::size_t>(j)]) {
-        Node& ref = reference_[static_cast<std::size_t>(j) - 1];
-        ref.t = t;
-        ref.g = G::compose(p.g0, G::exp(TangentOf<G>(t * w)));
-        ref.transport = G::exp(TangentOf<G>(-p.lambda * t * w));
-        try {
-          ref.mu = p.lagrangian.momentum(t, ref.g, w);
-        } catch (const std::exception& e) {
-          failure_ = e.what();
-          return std::nullopt;
-        }
-        x.segment<n>(offset(j) + 2 * n) = ref.mu;
-        x.segment<n>(offset(j) + 3 * n) = (p.T - t) * coad<G>(w, ref.mu);
-        ++j;
-      }
-      t += scheme_.step_size();
     }
     return x;
   }
@@ -319,15 +279,12 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
   TransportedSolution<G> solution;
   solution.method = Method::MultipleShooting;
   solution.order = static_cast<int>(options.order);
-  const bool geodesic = options.start == MultipleShootingStart::Geodesic;
-  solution.branch = std::string("from the initial guess, segment states from ") +
-                    (geodesic ? "the geodesic g0 -> gT" : "a sweep from the guess");
+  solution.branch = "from the initial guess, segment states from a sweep from the guess";
   std::ostringstream message;
   message << "multiple shooting (" << segments << " segments of ~" << problem.N / segments << " steps): ";
 
-  if (!geodesic && segments > 1) ++solution.sweeps;
-  std::optional<Eigen::VectorXd> x =
-      geodesic ? system.initialise_geodesic(v0_guess, xi0_guess) : system.initialise(v0_guess, xi0_guess);
+  if (segments > 1) ++solution.sweeps;
+  std::optional<Eigen::VectorXd> x = system.initialise(v0_guess, xi0_guess);
   if (!x) {
     solution.status = Status::NonFinite;
     solution.message = message.str() + "the initial segment states failed: " + system.failure();
