@@ -23,14 +23,12 @@ struct VerifyFlags {
 /// The verdict on a failed solve: its data are the solver's best iterate, which may not even be
 /// valid group elements (collocation's dense output off the solution); then the failing
 /// `converged` check and a note are the whole report.
-verify::Report verify_failed(const nlohmann::json& j, const std::string& status) {
+verify::Report verify_failed(const nlohmann::json& j, Status status) {
   try {
     return verify(read_result(j));
   } catch (const std::invalid_argument& e) {
     verify::Report report;
-    report.checks.push_back({"converged", 1, 0, true,
-                             "status = " + quote_input(status) +
-                                 ": the solver did not converge; the data are its best iterate, not a solution"});
+    report.checks.push_back(verify::convergence_check(status));
     report.checks.push_back({"data", 1, 0, false, std::string("not checked: ") + e.what()});
     return report;
   }
@@ -41,8 +39,9 @@ int run_verify(const VerifyFlags& flags) {
   const std::string status =
       j.is_object() && j.contains("status") && j["status"].is_string() ? j["status"].get<std::string>() : "";
   const bool failed = !status.empty() && status != "converged";
-  if (failed) (void)parse_enum<Status>(status, "cartan verify");  // an unknown word is bad input (exit 2)
-  const verify::Report report = failed ? verify_failed(j, status) : verify(read_result(j));
+  // An unknown status word is bad input (exit 2).
+  const verify::Report report =
+      failed ? verify_failed(j, parse_enum<Status>(status, "cartan verify")) : verify(read_result(j));
   if (flags.json) {
     std::cout << report_json(report).dump() << '\n';
   } else if (failed) {

@@ -175,13 +175,13 @@ TEST(VerifyReport, InvalidTrajectoriesAreRejected) {
   const auto x = rotation_about(kAxis, 2.0, 50, [](double t) { return 0.7 * t; }, [](double) { return 0.7; }, inertia);
   auto short_x = x;
   short_x.t.resize(1), short_x.g.resize(1), short_x.v.resize(1), short_x.mu.resize(1), short_x.xi.resize(1);
-  testing::expect_invalid([&] { (void)verify_trajectory(problem, short_x, 1, 1e-10); }, "1 samples");
+  testing::expect_invalid([&] { (void)verify_trajectory(problem, short_x, 1, 1e-10); }, "trajectory.t.size() = 1");
   auto backwards = x;
   std::swap(backwards.t[3], backwards.t[4]);
-  testing::expect_invalid([&] { (void)verify_trajectory(problem, backwards, 1, 1e-10); }, "not increasing");
+  testing::expect_invalid([&] { (void)verify_trajectory(problem, backwards, 1, 1e-10); }, "must be strictly increasing");
   auto nan = x;
   nan.mu[7][1] = std::nan("");
-  testing::expect_invalid([&] { (void)verify_trajectory(problem, nan, 1, 1e-10); }, "mu (row 7)");
+  testing::expect_invalid([&] { (void)verify_trajectory(problem, nan, 1, 1e-10); }, "trajectory.mu (row 7)");
   auto longer = problem;
   longer.T = 3.0;
   testing::expect_invalid([&] { (void)verify_trajectory(longer, x, 1, 1e-10); }, "must run from 0 to T");

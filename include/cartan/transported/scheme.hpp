@@ -60,6 +60,31 @@ struct TransportedTrajectory {
   void push(const SchemeNode<G>& node) {
     t.push_back(node.t), g.push_back(node.g), v.push_back(node.v), mu.push_back(node.mu), xi.push_back(node.xi);
   }
+
+  /// Throws std::invalid_argument ("<where>: trajectory... = <value> <problem>") unless there are
+  /// at least 2 samples with g, v and xi (and mu when `with_mu`) at every time, those vectors are
+  /// finite, and the times increase strictly from 0 to T (to `time_tolerance` T).
+  void validate(double T, std::string_view where, bool with_mu, double time_tolerance) const {
+    const std::size_t m = t.size();
+    if (m < 2) throw_invalid(where, "trajectory.t.size()", std::to_string(m), "must be at least 2");
+    if (g.size() != m || v.size() != m || xi.size() != m || (with_mu && mu.size() != m)) {
+      throw_invalid(where, "trajectory", "(" + std::to_string(m) + " times)",
+                    with_mu ? "needs g, v, mu and xi at every time" : "needs g, v and xi at every time");
+    }
+    for (std::size_t k = 0; k < m; ++k) {
+      const std::string row = " (row " + std::to_string(k) + ")";
+      require_finite(v[k], where, "trajectory.v" + row);
+      require_finite(xi[k], where, "trajectory.xi" + row);
+      if (with_mu) require_finite(mu[k], where, "trajectory.mu" + row);
+      if (k > 0 && !(t[k] > t[k - 1])) {
+        throw_invalid(where, "trajectory.t" + row, format_value(t[k]), "must be strictly increasing");
+      }
+    }
+    if (std::abs(t.front()) > time_tolerance * T || std::abs(t.back() - T) > time_tolerance * T) {
+      throw_invalid(where, "trajectory.t", "[" + format_value(t.front()) + ", " + format_value(t.back()) + "]",
+                    "must run from 0 to T = " + format_value(T));
+    }
+  }
 };
 
 template <LieGroup G, ReducedLagrangian<G> L>

@@ -91,23 +91,7 @@ struct SolveGuess {
     if (xi0) require_finite(*xi0, where, "xi0");
     if (!trajectory) return;
     if (v0 || xi0) throw std::invalid_argument("SolveGuess: give v0/xi0 or a trajectory, not both");
-    const auto& tr = *trajectory;
-    const std::size_t m = tr.t.size();
-    if (m < 2) throw_invalid(where, "trajectory.t.size()", std::to_string(m), "must be at least 2");
-    if (tr.g.size() != m || tr.v.size() != m || tr.xi.size() != m) {
-      throw_invalid(where, "trajectory", "(" + std::to_string(m) + " times)", "needs g, v and xi at every time");
-    }
-    for (std::size_t i = 0; i < m; ++i) {
-      require_finite(tr.v[i], where, "trajectory.v");
-      require_finite(tr.xi[i], where, "trajectory.xi");
-      if (i > 0 && !(tr.t[i] > tr.t[i - 1])) {
-        throw_invalid(where, "trajectory.t", format_value(tr.t[i]), "must be strictly increasing");
-      }
-    }
-    if (std::abs(tr.t.front()) > 1e-12 * T || std::abs(tr.t.back() - T) > 1e-12 * T) {
-      throw_invalid(where, "trajectory.t", "[" + format_value(tr.t.front()) + ", " + format_value(tr.t.back()) + "]",
-                    "must run from 0 to T = " + format_value(T));
-    }
+    trajectory->validate(T, where, false, 1e-12);
   }
 };
 

@@ -107,49 +107,25 @@ inline Report unchecked_failure(Status status) {
   return report;
 }
 
-/// Throws std::invalid_argument unless x has at least 2 samples, consistent sizes, finite
-/// values, strictly increasing t with t_0 = 0 and t_M = T (to 1e-9 T).
-template <LieGroup G>
-void validate_trajectory(const TransportedTrajectory<G>& x, double T) {
-  const std::size_t m = x.t.size();
-  if (m < 2) throw_invalid("verify", "trajectory", std::to_string(m) + " samples", "needs at least 2");
-  if (x.g.size() != m || x.v.size() != m || x.mu.size() != m || x.xi.size() != m) {
-    throw_invalid("verify", "trajectory", std::to_string(m) + " times", "needs g, v, mu and xi at every time");
-  }
-  for (std::size_t k = 0; k < m; ++k) {
-    const std::string row = "row " + std::to_string(k);
-    require_finite(x.t[k], "verify", "t (" + row + ")");
-    require_finite(x.v[k], "verify", "v (" + row + ")");
-    require_finite(x.mu[k], "verify", "mu (" + row + ")");
-    require_finite(x.xi[k], "verify", "xi (" + row + ")");
-    if (k > 0 && !(x.t[k] > x.t[k - 1])) throw_invalid("verify", "t (" + row + ")", format_value(x.t[k]), "is not increasing");
-  }
-  if (std::abs(x.t.front()) > 1e-9 * T || std::abs(x.t.back() - T) > 1e-9 * T) {
-    throw_invalid("verify", "t", format_value(x.t.front()) + " .. " + format_value(x.t.back()),
-                  "must run from 0 to T = " + format_value(T));
-  }
-}
-
 /// Runs every check on `x`, a solution of `problem` (its Lagrangian, lambda, T, g0, gT; N is not
 /// used: x may have any number of samples) computed to tolerance `tol` by a method of the given
 /// order (1, 2, or 4 for collocation). A `status` other than converged adds a failing
 /// `converged` check (the data are then a best iterate). Throws std::invalid_argument for an
-/// invalid trajectory (validate_trajectory), order or tol.
+/// invalid trajectory (TransportedTrajectory::validate, with mu), order or tol.
 template <LieGroup G, ReducedLagrangian<G> L>
 Report verify_trajectory(const TransportedProblem<G, L>& problem, TransportedTrajectory<G> x, int order, double tol,
                          Status status = Status::Converged) {
   if (order < 1) throw_invalid("verify", "order", std::to_string(order), "must be at least 1");
   if (!(tol > 0) || !std::isfinite(tol)) throw_invalid("verify", "tol", format_value(tol), "must be positive and finite");
-  validate_trajectory<G>(x, problem.T);
+  x.validate(problem.T, "verify", true, 1e-9);
   const TrajectoryChecks<G, L> checks(problem.lagrangian, problem.lambda, problem.T, std::move(x));
   Report report;
   report.order = std::min(order, 2);
   report.resolution = checks.max_step() * checks.frequency();
   report.amplification = checks.amplification();
   auto threshold = [&](double constant, int extra_power) {
-    return constant * std::pow(report.amplification, report.order + extra_power) *
-               std::pow(report.resolution, report.order) +
-           threshold_floor(tol);
+    const double lambda_factor = std::pow(report.amplification, report.order + extra_power);
+    return discretisation_threshold(constant * lambda_factor, report.resolution, report.order) + threshold_floor(tol);
   };
   if (status != Status::Converged) report.checks.push_back(convergence_check(status));
   report.checks.push_back({"boundary", checks.boundary_error(problem.g0, problem.gT), tol, true,
