@@ -7,8 +7,8 @@
 
 #include <array>
 
-#include "cartan/bvp/heisenberg_transported.hpp"
-#include "cartan/models/heisenberg_oscillator.hpp"
+#include "cartan/transported/heisenberg_collocation.hpp"
+#include "cartan/mechanics/heisenberg_oscillator.hpp"
 
 namespace {
 
@@ -18,11 +18,11 @@ void BM_H3Collocation(benchmark::State& state) {
   const auto& gT = kEndpoints[static_cast<std::size_t>(state.range(0))];
   const double lambda = static_cast<double>(state.range(1)) / 2;
   const bool reuse = state.range(2) != 0;
-  const cartan::TransportedProblem<cartan::Heisenberg, cartan::H3Oscillator> problem{
-      cartan::h3_oscillator(), lambda, 1.0, 10, cartan::Heisenberg::identity(), Eigen::Vector3d(gT[0], gT[1], gT[2])};
-  cartan::bvp::BvpResult r;
+  const cartan::transported::TransportedProblem<cartan::groups::Heisenberg, cartan::mechanics::H3Oscillator> problem{
+      cartan::mechanics::h3_oscillator(), lambda, 1.0, 10, cartan::groups::Heisenberg::identity(), Eigen::Vector3d(gT[0], gT[1], gT[2])};
+  cartan::numerics::BvpResult r;
   for (auto _ : state) {
-    r = cartan::bvp::solve_heisenberg_collocation(problem, {.tol = 1e-8, .reuse_jacobian = reuse});
+    r = cartan::transported::solve_heisenberg_collocation(problem, {.tol = 1e-8, .reuse_jacobian = reuse});
     benchmark::DoNotOptimize(r.y.data());
   }
   if (!r.success()) state.SkipWithError(r.message.c_str());

@@ -26,7 +26,7 @@ void report(benchmark::State& state, const auto& solution) {
 void BM_FreeBody_TwoLevel(benchmark::State& state) {
   const auto p = paper_free_body(static_cast<double>(state.range(0)) / 2);
   for (auto _ : state) {
-    const auto s = cartan::solve_two_level(p, {.tolerance = 1e-8});
+    const auto s = cartan::transported::solve_two_level(p, {.tolerance = 1e-8});
     report(state, s);
   }
 }
@@ -34,14 +34,14 @@ void BM_FreeBody_TwoLevel(benchmark::State& state) {
 void BM_FreeBody_Shooting(benchmark::State& state) {
   const auto p = paper_free_body(static_cast<double>(state.range(0)) / 2);
   for (auto _ : state) {
-    const auto s = cartan::solve_shooting(p, {.tolerance = 1e-8});
+    const auto s = cartan::transported::solve_shooting(p, {.tolerance = 1e-8});
     report(state, s);
   }
 }
 void BM_FreeBody_ShootingOrder2(benchmark::State& state) {
   const auto p = paper_free_body(static_cast<double>(state.range(0)) / 2);
   for (auto _ : state) {
-    const auto s = cartan::solve_shooting(p, {.order = cartan::SchemeOrder::Second, .tolerance = 1e-8});
+    const auto s = cartan::transported::solve_shooting(p, {.order = cartan::transported::SchemeOrder::Second, .tolerance = 1e-8});
     report(state, s);
   }
 }
@@ -49,7 +49,7 @@ void BM_FreeBody_ShootingOrder2(benchmark::State& state) {
 void BM_FreeBody_MultipleShooting(benchmark::State& state) {
   const auto p = paper_free_body(static_cast<double>(state.range(0)) / 2);
   for (auto _ : state) {
-    const auto s = cartan::solve_multiple_shooting(p, {.tolerance = 1e-8});
+    const auto s = cartan::transported::solve_multiple_shooting(p, {.tolerance = 1e-8});
     report(state, s);
   }
 }
@@ -57,7 +57,7 @@ void BM_FreeBody_MultipleShooting(benchmark::State& state) {
 void BM_Oscillator_Continuation(benchmark::State& state) {
   const auto p = paper_oscillator(static_cast<double>(state.range(0)) / 2);
   for (auto _ : state) {
-    const auto s = cartan::solve_continuation_in_T(p, {.shooting = {.tolerance = 1e-6}});
+    const auto s = cartan::transported::solve_continuation_in_T(p, {.shooting = {.tolerance = 1e-6}});
     report(state, s);
   }
 }
@@ -67,10 +67,10 @@ void BM_Oscillator_Continuation(benchmark::State& state) {
 void BM_TangentSweep(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const auto p = paper_oscillator(0.5, n);  // T = 12 fixed: h = 12 / N
-  const cartan::TransportedScheme<cartan::SO3, cartan::SO3Oscillator> scheme(p, cartan::SchemeOrder::First);
+  const cartan::transported::TransportedScheme<cartan::groups::SO3, cartan::mechanics::SO3Oscillator> scheme(p, cartan::transported::SchemeOrder::First);
   for (auto _ : state) {
-    cartan::SweepOutput<cartan::SO3, cartan::SO3Oscillator> out;
-    if (!cartan::forward_sweep(scheme, Eigen::Vector3d(-1.4, 0.1, 0.1), Eigen::Vector3d::Zero(), nullptr, 6, out)) {
+    cartan::transported::SweepOutput<cartan::groups::SO3, cartan::mechanics::SO3Oscillator> out;
+    if (!cartan::transported::forward_sweep(scheme, Eigen::Vector3d(-1.4, 0.1, 0.1), Eigen::Vector3d::Zero(), nullptr, 6, out)) {
       state.SkipWithError(out.failure.c_str());
     }
   }
@@ -106,7 +106,7 @@ void BM_FreeBodySolveScaling(benchmark::State& state) {
   const auto p = paper_free_body(0.5, n);
   for (auto _ : state) {
     const PeakMemory memory;
-    const auto s = cartan::solve_shooting(p, {.tolerance = 1e-8});
+    const auto s = cartan::transported::solve_shooting(p, {.tolerance = 1e-8});
     report(state, s);
     state.counters["peak_MiB"] = memory.extra_mib();
   }
@@ -117,13 +117,13 @@ void BM_FreeBodySolveScaling(benchmark::State& state) {
 void BM_RecordedSweep(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const auto p = paper_oscillator(0.5, n);  // T = 12 fixed: h = 12 / N
-  const cartan::TransportedScheme<cartan::SO3, cartan::SO3Oscillator> scheme(p, cartan::SchemeOrder::First);
+  const cartan::transported::TransportedScheme<cartan::groups::SO3, cartan::mechanics::SO3Oscillator> scheme(p, cartan::transported::SchemeOrder::First);
   for (auto _ : state) {
     const PeakMemory memory;
-    cartan::TransportedTrajectory<cartan::SO3> trajectory;
-    cartan::SweepOutput<cartan::SO3, cartan::SO3Oscillator> out;
+    cartan::transported::TransportedTrajectory<cartan::groups::SO3> trajectory;
+    cartan::transported::SweepOutput<cartan::groups::SO3, cartan::mechanics::SO3Oscillator> out;
     out.trajectory = &trajectory;
-    if (!cartan::forward_sweep(scheme, Eigen::Vector3d(-1.4, 0.1, 0.1), Eigen::Vector3d::Zero(), nullptr, 0, out)) {
+    if (!cartan::transported::forward_sweep(scheme, Eigen::Vector3d(-1.4, 0.1, 0.1), Eigen::Vector3d::Zero(), nullptr, 0, out)) {
       state.SkipWithError(out.failure.c_str());
     }
     state.counters["peak_MiB"] = memory.extra_mib();

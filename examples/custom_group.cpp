@@ -1,5 +1,5 @@
 // A user-defined Lie group: the affine group of the line Aff(1) = {x -> a x + b, a > 0}, written
-// against the LieGroup concept (cartan/group.hpp) with closed forms, then used by the generic
+// against the LieGroup concept (cartan/groups/group.hpp) with closed forms, then used by the generic
 // algorithms: a Cartan–Schouten connection and its parallel transport, and the
 // transported-velocity boundary-value problem (eq:reduced-system) for a free particle.
 // docs/user-guide.md "Defining a new group" walks through this file. Run by ctest
@@ -9,11 +9,11 @@
 #include <cstdio>
 #include <string>
 
-#include "cartan/cartan_schouten.hpp"
-#include "cartan/euler_poincare.hpp"
-#include "cartan/matrix_group.hpp"
-#include "cartan/models/natural_system.hpp"
-#include "cartan/ordered_exp.hpp"
+#include "cartan/connections/cartan_schouten.hpp"
+#include "cartan/mechanics/euler_poincare.hpp"
+#include "cartan/groups/matrix_group.hpp"
+#include "cartan/mechanics/natural_system.hpp"
+#include "cartan/transport/ordered_exp.hpp"
 #include "cartan/transported/continuation.hpp"
 
 // Elements are the coordinates (a, b) of the matrix [[a, b], [0, 1]]; the algebra basis is
@@ -64,9 +64,9 @@ struct AffineLine {
   static double phi(double s) { return s == 0 ? 1.0 : std::expm1(s) / s; }
 };
 
-static_assert(cartan::LieGroup<AffineLine>);
+static_assert(cartan::groups::LieGroup<AffineLine>);
 
-// The same group from its basis alone (cartan/matrix_group.hpp): a reference for the closed forms.
+// The same group from its basis alone (cartan/groups/matrix_group.hpp): a reference for the closed forms.
 struct AffineLineBasis {
   static constexpr int kDim = 2;
   static constexpr int kMatrixSize = 2;
@@ -75,7 +75,7 @@ struct AffineLineBasis {
     return {(Eigen::Matrix2d() << 1, 0, 0, 0).finished(), (Eigen::Matrix2d() << 0, 1, 0, 0).finished()};
   }
 };
-using AffineLineGeneric = cartan::MatrixLieGroup<AffineLineBasis>;
+using AffineLineGeneric = cartan::groups::MatrixLieGroup<AffineLineBasis>;
 
 namespace {
 
@@ -109,12 +109,12 @@ int main() {
   check(worst < 1e-12, "closed forms agree with the generic group to 1e-12");
 
   std::printf("Cartan-Schouten connection, lambda = 1/2 (tor-cur-lie-alg)\n");
-  const InvariantConnection<G> conn = cartan_schouten<G>(0.5);
+  const connections::InvariantConnection<G> conn = connections::cartan_schouten<G>(0.5);
   const G::Tangent torsion = conn.torsion(v, w);
   const G::Tangent curvature = conn.curvature(v, w, v);
   std::printf("  T(v, w) = (%.3g, %.3g), R(v, w) v = (%.6f, %.6f)\n", torsion[0], torsion[1], curvature[0],
               curvature[1]);
-  check(max_abs(curvature - cartan_schouten_curvature<G>(0.5, v, w, v)) < 1e-14,
+  check(max_abs(curvature - connections::cartan_schouten_curvature<G>(0.5, v, w, v)) < 1e-14,
         "curvature = -1/4 [[v, w], v] (closed form, rounding only)");
 
   // Transport along the one-parameter subgroup t -> exp(t u) (constant body velocity u): the
@@ -122,25 +122,25 @@ int main() {
   // exactly, for every method (cor-parr, parr-tran-Cartan-lambda).
   const double lambda = 0.3;
   const G::Tangent u(0.8, 0.5);
-  const G::AlgebraMatrix p = transport_operator(cartan_schouten<G>(lambda), [&](double) { return u; }, 0.0, 1.0, 20,
-                                                TransportMethod::Magnus4);
+  const G::AlgebraMatrix p = transport::transport_operator(connections::cartan_schouten<G>(lambda), [&](double) { return u; }, 0.0, 1.0, 20,
+                                                transport::TransportMethod::Magnus4);
   const double transport_error = max_abs(p - G::Ad(G::exp(G::Tangent(-lambda * u))));
   std::printf("Transport along exp(t u), lambda = %.1f: |P - Ad(exp(-lambda u))| = %.2e\n", lambda, transport_error);
   check(transport_error < 1e-13, "transport equals the closed form Ad(exp(-lambda u))");
 
   // A free particle with a left-invariant kinetic energy l = 1/2 v.I v on Aff(1), from the
   // identity to gT at T = 2 (the second-order scheme).
-  using Free = NaturalLagrangian<G, ZeroPotential<G>>;
+  using Free = mechanics::NaturalLagrangian<G, mechanics::ZeroPotential<G>>;
   const Free particle((G::AlgebraMatrix() << 1.0, 0.2, 0.2, 2.0).finished());
   const G::Element gT(2.0, 1.5);
   const double tol = 1e-10;
   std::printf("Transported-velocity BVP, l = 1/2 v.I v, g0 = e, gT = (2, 1.5), T = 2, N = 400, order 2\n");
-  ContinuationOptions options;
-  options.shooting = {.order = SchemeOrder::Second, .tolerance = tol};
-  TransportedSolution<G> classical;
+  transported::ContinuationOptions options;
+  options.shooting = {.order = transported::SchemeOrder::Second, .tolerance = tol};
+  transported::TransportedSolution<G> classical;
   for (const double lam : {0.0, 0.5, 1.0}) {
-    const TransportedProblem<G, Free> problem{particle, lam, 2.0, 400, G::identity(), gT};
-    const TransportedSolution<G> s = solve_continuation_in_T(problem, options);
+    const transported::TransportedProblem<G, Free> problem{particle, lam, 2.0, 400, G::identity(), gT};
+    const transported::TransportedSolution<G> s = transported::solve_continuation_in_T(problem, options);
     std::printf("  lambda = %.1f: %s, v0 = (%.6f, %.6f), terminal error %.2e, %d sweeps (%s)\n", lam,
                 std::string(to_string(s.status)).c_str(), s.v0[0], s.v0[1], s.terminal_error, s.sweeps, s.branch.c_str());
     check(s.converged() && s.terminal_error <= tol, "lambda = " + std::to_string(lam).substr(0, 3) + " converged");
@@ -151,7 +151,7 @@ int main() {
   // eq:EP-left: integrating the classical equations from v0 must land on gT. RKMK4 with 4000
   // steps is exact to ~1e-12 here, so the gap is the order-2 scheme's O(h^2) error: with
   // h = 0.005 and O(1) derivatives ~1e-5 (measured 1.1e-6); 1e-4 flags an O(h) or wrong solution.
-  const Trajectory<G> ep = euler_poincare<G>(Side::Left, particle, G::identity(), classical.v0, 2.0, 4000);
+  const mechanics::Trajectory<G> ep = mechanics::euler_poincare<G>(groups::Side::Left, particle, G::identity(), classical.v0, 2.0, 4000);
   const double gap = G::log(G::compose(G::inverse(gT), ep.g.back())).norm();
   std::printf("Euler-Poincare from the lambda = 0 v0 ends |log(gT^-1 g(T))| = %.2e from gT\n", gap);
   check(gap < 1e-4, "lambda = 0 solution is the classical Euler-Poincare motion (to the scheme's O(h^2))");

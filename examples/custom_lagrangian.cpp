@@ -1,7 +1,7 @@
-// A user-defined reduced Lagrangian (cartan/lagrangian.hpp, concept ReducedLagrangian) solved by
+// A user-defined reduced Lagrangian (cartan/mechanics/lagrangian.hpp, concept ReducedLagrangian) solved by
 // the transported-velocity solvers (eq:reduced-system): a heavy top on SO(3) whose kinetic
 // energy has a quartic correction, so that the Legendre map v -> mu is nonlinear and its inverse
-// comes from cartan::inverse_legendre (Newton):
+// comes from cartan::mechanics::inverse_legendre (Newton):
 //   l(g, v) = 1/2 v.I v + eps/4 |v|^4 - c e3.(g chi),
 //   mu = dl/dv = I v + eps |v|^2 v,   zeta = -c chi x (g^T e3)  (left-trivialised dl/dg).
 // docs/user-guide.md "Defining a new Lagrangian" walks through this file. Run by ctest
@@ -10,8 +10,8 @@
 #include <cstdio>
 #include <string>
 
-#include "cartan/lagrangian_hessian.hpp"
-#include "cartan/so3.hpp"
+#include "cartan/mechanics/lagrangian_hessian.hpp"
+#include "cartan/groups/so3.hpp"
 #include "cartan/transported/continuation.hpp"
 
 /// The four required members; no `hessian`, so the solvers differentiate momentum and
@@ -21,23 +21,23 @@ class HeavyTop {
   HeavyTop(const Eigen::Vector3d& inertia, double eps, double weight, const Eigen::Vector3d& centre)
       : inertia_(inertia.asDiagonal()), eps_(eps), weight_(weight), centre_(centre) {}
 
-  double value(double, const cartan::SO3::Element& g, const cartan::SO3::Tangent& v) const {
+  double value(double, const cartan::groups::SO3::Element& g, const cartan::groups::SO3::Tangent& v) const {
     return 0.5 * v.dot(inertia_ * v) + eps_ / 4 * v.squaredNorm() * v.squaredNorm() -
            weight_ * (g * centre_).z();
   }
-  cartan::SO3::Tangent momentum(double, const cartan::SO3::Element&, const cartan::SO3::Tangent& v) const {
+  cartan::groups::SO3::Tangent momentum(double, const cartan::groups::SO3::Element&, const cartan::groups::SO3::Tangent& v) const {
     return inertia_ * v + eps_ * v.squaredNorm() * v;
   }
   /// d/de of -V(g exp(e w)): the height of g exp(e w) chi changes by (g^T e3).(w x chi).
-  cartan::SO3::Tangent group_gradient(double, const cartan::SO3::Element& g, const cartan::SO3::Tangent&) const {
+  cartan::groups::SO3::Tangent group_gradient(double, const cartan::groups::SO3::Element& g, const cartan::groups::SO3::Tangent&) const {
     return -weight_ * centre_.cross(vertical_in_body(g));
   }
   /// The inverse Legendre map by Newton's method, with the analytic d mu/dv and the linear
   /// part's inverse as the starting guess.
-  cartan::SO3::Tangent velocity(double t, const cartan::SO3::Element& g, const cartan::SO3::Tangent& mu) const {
-    const auto momentum_of = [&](const cartan::SO3::Tangent& v) { return momentum(t, g, v); };
-    const auto jacobian = [&](const cartan::SO3::Tangent& v) { return momentum_jacobian(v); };
-    return cartan::inverse_legendre<cartan::SO3>(momentum_of, jacobian, mu, inertia_.inverse() * mu);
+  cartan::groups::SO3::Tangent velocity(double t, const cartan::groups::SO3::Element& g, const cartan::groups::SO3::Tangent& mu) const {
+    const auto momentum_of = [&](const cartan::groups::SO3::Tangent& v) { return momentum(t, g, v); };
+    const auto jacobian = [&](const cartan::groups::SO3::Tangent& v) { return momentum_jacobian(v); };
+    return cartan::mechanics::inverse_legendre<cartan::groups::SO3>(momentum_of, jacobian, mu, inertia_.inverse() * mu);
   }
 
  protected:
@@ -45,26 +45,26 @@ class HeavyTop {
   Eigen::Matrix3d momentum_jacobian(const Eigen::Vector3d& v) const {
     return inertia_ + eps_ * (v.squaredNorm() * Eigen::Matrix3d::Identity() + 2 * v * v.transpose());
   }
-  Eigen::Vector3d vertical_in_body(const cartan::SO3::Element& g) const { return g.transpose().col(2); }
+  Eigen::Vector3d vertical_in_body(const cartan::groups::SO3::Element& g) const { return g.transpose().col(2); }
 
   Eigen::Matrix3d inertia_;
   double eps_, weight_;
   Eigen::Vector3d centre_;
 };
-static_assert(cartan::ReducedLagrangian<HeavyTop, cartan::SO3>);
+static_assert(cartan::mechanics::ReducedLagrangian<HeavyTop, cartan::groups::SO3>);
 
 /// The same model with the optional analytic second derivatives (fewer callbacks per step).
 /// g exp(e w) turns z = g^T e3 into z + e z x w, so d zeta / d gamma = -c hat(chi) hat(z).
 class HeavyTopWithHessian : public HeavyTop {
  public:
   using HeavyTop::HeavyTop;
-  cartan::LagrangianHessian<cartan::SO3> hessian(double, const cartan::SO3::Element& g,
-                                                 const cartan::SO3::Tangent& v) const {
+  cartan::mechanics::LagrangianHessian<cartan::groups::SO3> hessian(double, const cartan::groups::SO3::Element& g,
+                                                 const cartan::groups::SO3::Tangent& v) const {
     const Eigen::Matrix3d zero = Eigen::Matrix3d::Zero();
     return {.momentum_v = momentum_jacobian(v),
             .momentum_g = zero,
             .gradient_v = zero,
-            .gradient_g = -weight_ * cartan::SO3::hat(centre_) * cartan::SO3::hat(vertical_in_body(g))};
+            .gradient_g = -weight_ * cartan::groups::SO3::hat(centre_) * cartan::groups::SO3::hat(vertical_in_body(g))};
   }
 };
 
@@ -78,28 +78,28 @@ void check(bool ok, const std::string& what) {
 }
 
 template <class L>
-cartan::TransportedSolution<cartan::SO3> solve(const L& top, double lambda, int steps, double tol) {
-  const cartan::SO3::Element gT =
-      cartan::SO3::minimal_rotation(Eigen::Vector3d(-0.7, -1, -0.7), Eigen::Vector3d(0.8, 0.8, 1));
-  const cartan::TransportedProblem<cartan::SO3, L> problem{top, lambda, 3.0, steps, cartan::SO3::identity(), gT};
-  cartan::ContinuationOptions options;  // the CLI's default path: shooting, continued in T if needed
-  options.shooting = {.order = cartan::SchemeOrder::Second, .tolerance = tol};
-  return cartan::solve_continuation_in_T(problem, options);
+cartan::transported::TransportedSolution<cartan::groups::SO3> solve(const L& top, double lambda, int steps, double tol) {
+  const cartan::groups::SO3::Element gT =
+      cartan::groups::SO3::minimal_rotation(Eigen::Vector3d(-0.7, -1, -0.7), Eigen::Vector3d(0.8, 0.8, 1));
+  const cartan::transported::TransportedProblem<cartan::groups::SO3, L> problem{top, lambda, 3.0, steps, cartan::groups::SO3::identity(), gT};
+  cartan::transported::ContinuationOptions options;  // the CLI's default path: shooting, continued in T if needed
+  options.shooting = {.order = cartan::transported::SchemeOrder::Second, .tolerance = tol};
+  return cartan::transported::solve_continuation_in_T(problem, options);
 }
 
-void print(const char* label, const cartan::TransportedSolution<cartan::SO3>& s) {
+void print(const char* label, const cartan::transported::TransportedSolution<cartan::groups::SO3>& s) {
   std::printf("  %s: %s, v0 = (%.8f, %.8f, %.8f), terminal error %.2e, %d iterations, %d sweeps, %.3f s (%s)\n",
               label, std::string(cartan::to_string(s.status)).c_str(), s.v0[0], s.v0[1], s.v0[2], s.terminal_error, s.inner_iterations, s.sweeps,
               s.solve_time_s, s.branch.c_str());
 }
 
 /// max_k |E_k - E_0| of the energy mu.v - l along a solution.
-double energy_drift(const HeavyTop& top, const cartan::TransportedSolution<cartan::SO3>& s) {
+double energy_drift(const HeavyTop& top, const cartan::transported::TransportedSolution<cartan::groups::SO3>& s) {
   const auto& tr = s.trajectory;
-  const double e0 = cartan::lagrangian_energy<cartan::SO3>(top, tr.t[0], tr.g[0], tr.v[0]);
+  const double e0 = cartan::mechanics::lagrangian_energy<cartan::groups::SO3>(top, tr.t[0], tr.g[0], tr.v[0]);
   double drift = 0;
   for (std::size_t k = 0; k < tr.t.size(); ++k) {
-    drift = std::max(drift, std::abs(cartan::lagrangian_energy<cartan::SO3>(top, tr.t[k], tr.g[k], tr.v[k]) - e0));
+    drift = std::max(drift, std::abs(cartan::mechanics::lagrangian_energy<cartan::groups::SO3>(top, tr.t[k], tr.g[k], tr.v[k]) - e0));
   }
   return drift;
 }
@@ -115,10 +115,10 @@ int main() {
   std::printf("Heavy top with quartic kinetic energy on SO(3)\n");
   // The central differences (step 1e-5) are accurate to ~1e-10 (lagrangian_hessian.hpp); 1e-7
   // catches a wrong analytic formula, which would be off by O(1).
-  const cartan::SO3::Element g = cartan::SO3::exp(Eigen::Vector3d(0.3, -0.5, 0.8));
+  const cartan::groups::SO3::Element g = cartan::groups::SO3::exp(Eigen::Vector3d(0.3, -0.5, 0.8));
   const Eigen::Vector3d v(0.4, -0.2, 0.7);
   const auto analytic = top_hessian.hessian(0, g, v);
-  const auto differences = cartan::lagrangian_hessian_fd<cartan::SO3>(top, 0, g, v);
+  const auto differences = cartan::mechanics::lagrangian_hessian_fd<cartan::groups::SO3>(top, 0, g, v);
   const double hessian_gap = std::max({(analytic.momentum_v - differences.momentum_v).cwiseAbs().maxCoeff(),
                                        (analytic.momentum_g - differences.momentum_g).cwiseAbs().maxCoeff(),
                                        (analytic.gradient_v - differences.gradient_v).cwiseAbs().maxCoeff(),

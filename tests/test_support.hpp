@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "cartan/group.hpp"
+#include "cartan/groups/group.hpp"
 
 namespace cartan::testing {
 
@@ -25,13 +25,13 @@ Vec random_vector(std::mt19937& rng, double scale) {
   return v;
 }
 
-template <LieGroup G>
-TangentOf<G> random_tangent(std::mt19937& rng, double scale = 1.0) {
-  return random_vector<TangentOf<G>>(rng, scale);
+template <groups::LieGroup G>
+groups::TangentOf<G> random_tangent(std::mt19937& rng, double scale = 1.0) {
+  return random_vector<groups::TangentOf<G>>(rng, scale);
 }
 
-template <LieGroup G>
-ElementOf<G> random_element(std::mt19937& rng, double scale = 1.0) {
+template <groups::LieGroup G>
+groups::ElementOf<G> random_element(std::mt19937& rng, double scale = 1.0) {
   return G::exp(random_tangent<G>(rng, scale));
 }
 

@@ -51,13 +51,13 @@ void add_problem_options(CLI::App& command, ProblemFlags& flags) {
   command.add_option("--a0", flags.a0, "so3: initial direction; gT = minimal rotation taking a0 to aT");
   command.add_option("--aT", flags.aT, "so3: final direction");
   command.add_option("--method", f.method,
-                     enum_choices<Method>() +
+                     enum_choices<transported::Method>() +
                          " (default auto: a strategy that tries shooting, continuation in T and in lambda, "
                          "collocation and multiple shooting in turn and stops at the first success; shooting: "
                          "augmented shooting with an analytic Jacobian; multiple-shooting: lifted LM over --segments "
                          "segments; two-level: the paper's scheme; collocation: fourth-order adaptive collocation)");
   command.add_option("--continuation", f.continuation,
-                     enum_choices<Continuation>() +
+                     enum_choices<transported::Continuation>() +
                          " (default none). shooting: how to reach a problem that fails from the guess (T: from a "
                          "shorter horizon; lambda: from the lambda = 0 solution); so3 collocation: where to start "
                          "when Newton from the geodesic guess fails (from that order-2 shooting solution)");

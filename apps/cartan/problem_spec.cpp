@@ -7,7 +7,7 @@
 #include <Eigen/Dense>
 
 #include "cartan/errors.hpp"
-#include "cartan/so3.hpp"
+#include "cartan/groups/so3.hpp"
 #include "cartan/transported/method.hpp"
 
 namespace cartan::cli {
@@ -94,7 +94,7 @@ void require_memory(const std::string& name, int count, double bytes, const std:
 
 std::vector<double> final_element(const ProblemSpec& spec) {
   if (spec.a0.empty()) return spec.gT;
-  const SO3::Element r = SO3::minimal_rotation(Eigen::Vector3d(spec.a0.data()), Eigen::Vector3d(spec.aT.data()));
+  const groups::SO3::Element r = groups::SO3::minimal_rotation(Eigen::Vector3d(spec.a0.data()), Eigen::Vector3d(spec.aT.data()));
   std::vector<double> out(9);
   for (int i = 0; i < 9; ++i) out[static_cast<std::size_t>(i)] = r(i / 3, i % 3);  // row-major
   return out;
@@ -161,18 +161,18 @@ void validate(ProblemSpec& spec) {
   require_one_of("group", spec.group, {"so3", "heisenberg"});
   require_one_of("model", spec.model, spec.group == "so3" ? std::vector<std::string>{"free-rigid-body", "oscillator"}
                                                            : std::vector<std::string>{"oscillator"});
-  const Method method = parse_enum<Method>(spec.method, "cartan solve");
-  const Continuation continuation = parse_enum<Continuation>(spec.continuation, "cartan solve");
-  if (continuation != Continuation::None && method != Method::Shooting && method != Method::Collocation) {
+  const transported::Method method = parse_enum<transported::Method>(spec.method, "cartan solve");
+  const transported::Continuation continuation = parse_enum<transported::Continuation>(spec.continuation, "cartan solve");
+  if (continuation != transported::Continuation::None && method != transported::Method::Shooting && method != transported::Method::Collocation) {
     bad("continuation", quote_input(spec.continuation), "is an option of --method shooting and collocation only");
   }
   if (!spec.v0.empty()) require_size("v0", spec.v0, 3, "a guess of v(0)");
   if (!spec.xi0.empty()) require_size("xi0", spec.xi0, 3, "a guess of xi(0)");
-  if ((!spec.v0.empty() || !spec.xi0.empty()) && method == Method::Collocation) {
+  if ((!spec.v0.empty() || !spec.xi0.empty()) && method == transported::Method::Collocation) {
     bad(spec.v0.empty() ? "xi0" : "v0", join(spec.v0.empty() ? spec.xi0 : spec.v0),
         "is a guess for the shooting methods, not for --method collocation");
   }
-  if (!spec.xi0.empty() && method == Method::TwoLevel) {
+  if (!spec.xi0.empty() && method == transported::Method::TwoLevel) {
     bad("xi0", join(spec.xi0), "is not a guess of --method two-level (its xi starts at 0)");
   }
   if (spec.order != 1 && spec.order != 2) bad("order", std::to_string(spec.order), "must be 1 or 2");
@@ -189,10 +189,10 @@ void validate(ProblemSpec& spec) {
   require_memory("samples", spec.samples, kBytesPerNode * spec.samples, "the sampled output, ~1 KiB per sample");
   require_memory("segments", spec.segments, kBytesPerSegmentSquared * spec.segments * spec.segments,
                  "the dense multiple-shooting Jacobian");
-  if (spec.samples != 0 && method != Method::Collocation) {
+  if (spec.samples != 0 && method != transported::Method::Collocation) {
     bad("samples", std::to_string(spec.samples), "is an option of --method collocation only");
   }
-  if (spec.segments != 0 && method != Method::MultipleShooting) {
+  if (spec.segments != 0 && method != transported::Method::MultipleShooting) {
     bad("segments", std::to_string(spec.segments), "is an option of --method multiple-shooting only");
   }
   if (spec.samples == 1) bad("samples", "1", "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");

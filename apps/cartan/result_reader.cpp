@@ -136,7 +136,7 @@ ResultFile read(const nlohmann::json& j) {
   const bool so3 = r.group == "so3";
   r.model = one_of(require_key(j, "model"), "model",
                    so3 ? std::vector<std::string>{"free-rigid-body", "oscillator"} : std::vector<std::string>{"oscillator"});
-  r.method = one_of(require_key(j, "method"), "method", enum_words<Method>());
+  r.method = one_of(require_key(j, "method"), "method", enum_words<transported::Method>());
   r.order = integer(require_key(j, "order"), "order");
   if (r.order != 1 && r.order != 2 && r.order != 4) bad("order", std::to_string(r.order), "must be 1, 2 or 4");
   r.lambda = finite_number(require_key(j, "lambda"), "lambda");

@@ -36,8 +36,8 @@ inline nlohmann::json number_or_null(double x) { return std::isfinite(x) ? nlohm
 /// diagnostics (terminal_error, xi_terminal, action, iterations, solve_time_s) and, for
 /// collocation, mesh_size, max_residual and (so3) group_defect. `order` is the scheme's order
 /// (1 or 2 for the discrete schemes, 4 for collocation).
-template <LieGroup G>
-nlohmann::json solution_json(const ProblemSpec& spec, const TransportedSolution<G>& s) {
+template <groups::LieGroup G>
+nlohmann::json solution_json(const ProblemSpec& spec, const transported::TransportedSolution<G>& s) {
   const auto& tr = s.trajectory;
   nlohmann::json out = result_header(spec, std::string(to_string(s.status)), s.message,
                                      std::string(to_string(s.method)), s.order, s.branch);

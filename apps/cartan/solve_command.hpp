@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cartan/monitor.hpp"
-#include "cartan/so3.hpp"
+#include "cartan/groups/so3.hpp"
 #include "cartan/transported/solve_options.hpp"
 #include "problem_spec.hpp"
 
@@ -15,12 +15,12 @@ namespace cartan::cli {
 /// onto SO(3) when within 1e-6 of it), gT the minimal rotation taking a0 to aT when those are
 /// given. Cheap; throws std::invalid_argument naming g0/gT when a matrix is not a rotation.
 struct SO3Endpoints {
-  SO3::Element g0, gT;
+  groups::SO3::Element g0, gT;
 };
 SO3Endpoints so3_endpoints(const ProblemSpec& spec);
 
 /// The library's SolveOptions of a validated spec (method, continuation, order, tol, ...).
-SolveOptions solve_options(const ProblemSpec& spec);
+transported::SolveOptions solve_options(const ProblemSpec& spec);
 
 /// Solves a validated spec with the library's solve (transported/solve.hpp). The JSON has
 /// status, message, group, model, lambda, T, N, method, order, branch, t, g, v, mu, xi,

@@ -1,26 +1,26 @@
 #include "verify_command.hpp"
 
-#include "cartan/models/heisenberg_oscillator.hpp"
-#include "cartan/models/rigid_body.hpp"
+#include "cartan/mechanics/heisenberg_oscillator.hpp"
+#include "cartan/mechanics/rigid_body.hpp"
 
 namespace cartan::cli {
 
 namespace {
 
-template <LieGroup G>
-ElementOf<G> element(const Eigen::VectorXd& x) {
-  if constexpr (std::is_same_v<G, SO3>) {
+template <groups::LieGroup G>
+groups::ElementOf<G> element(const Eigen::VectorXd& x) {
+  if constexpr (std::is_same_v<G, groups::SO3>) {
     Eigen::Matrix3d m;
     for (int i = 0; i < 9; ++i) m(i / 3, i % 3) = x[i];
     return m;
   } else {
-    return ElementOf<G>(x);
+    return groups::ElementOf<G>(x);
   }
 }
 
-template <LieGroup G>
-TransportedTrajectory<G> trajectory(const ResultFile& r) {
-  TransportedTrajectory<G> x;
+template <groups::LieGroup G>
+transported::TransportedTrajectory<G> trajectory(const ResultFile& r) {
+  transported::TransportedTrajectory<G> x;
   x.reserve(static_cast<std::size_t>(r.t.size()));
   for (Eigen::Index k = 0; k < r.t.size(); ++k) {
     x.t.push_back(r.t[k]);
@@ -32,9 +32,9 @@ TransportedTrajectory<G> trajectory(const ResultFile& r) {
   return x;
 }
 
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 verify::Report run_checks(const ResultFile& r, const L& lagrangian) {
-  const TransportedProblem<G, L> problem{lagrangian, r.lambda, r.T, r.N, element<G>(r.g0), element<G>(r.gT)};
+  const transported::TransportedProblem<G, L> problem{lagrangian, r.lambda, r.T, r.N, element<G>(r.g0), element<G>(r.gT)};
   return verify::verify_trajectory(problem, trajectory<G>(r), r.order, r.tol, parse_enum<Status>(r.status));
 }
 
@@ -52,9 +52,9 @@ nlohmann::json report_json(const verify::Report& report) {
 
 verify::Report verify(const ResultFile& r) {
   const Eigen::Matrix3d inertia = r.inertia.asDiagonal();
-  if (r.group == "heisenberg") return run_checks<Heisenberg>(r, H3Oscillator(inertia));
-  if (r.model == "oscillator") return run_checks<SO3>(r, SO3Oscillator(inertia));
-  return run_checks<SO3>(r, RigidBody(inertia));
+  if (r.group == "heisenberg") return run_checks<groups::Heisenberg>(r, mechanics::H3Oscillator(inertia));
+  if (r.model == "oscillator") return run_checks<groups::SO3>(r, mechanics::SO3Oscillator(inertia));
+  return run_checks<groups::SO3>(r, mechanics::RigidBody(inertia));
 }
 
 }  // namespace cartan::cli

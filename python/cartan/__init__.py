@@ -299,7 +299,7 @@ def solve_bvp(fun, bc, x, y, p=None, *, fun_jac=None, bc_jac=None, tol=1e-3, max
               max_newton_iterations=20, max_refinements=40, fd_step=2.0 ** -26, linear_solver="block-lu"):
     """Solves y' = fun(x, y[, p]) on [x[0], x[-1]] with bc(y(a), y(b)[, p]) = 0 (n + k conditions)
     by fourth-order adaptive collocation (the three-stage Lobatto IIIA scheme of SciPy's solve_bvp;
-    include/cartan/bvp/collocation.hpp) from the guess y (n, m) on the mesh x (m,) and p (k,).
+    include/cartan/numerics/collocation.hpp) from the guess y (n, m) on the mesh x (m,) and p (k,).
 
     Arguments follow scipy.integrate.solve_bvp, so a SciPy script ports by changing the import:
     fun(x, y[, p]) -> (n,) or (n, 1); bc(ya, yb[, p]) -> (n + k,); fun_jac(x, y[, p]) -> df_dy

@@ -9,7 +9,7 @@
 
 namespace cartan::python {
 
-template <LieGroup G, class Lagrangians, class Hamiltonians, class SolverModels>
+template <groups::LieGroup G, class Lagrangians, class Hamiltonians, class SolverModels>
 GroupClass<G> bind_all(py::module_& m, const char* name, const char* doc) {
   GroupClass<G> group = bind_group<G>(m, name, doc);
   bind_connection<G>(group, name);

@@ -1,4 +1,4 @@
-// cartan.solve_bvp: the collocation solver (include/cartan/bvp/collocation.hpp) for first-order
+// cartan.solve_bvp: the collocation solver (include/cartan/numerics/collocation.hpp) for first-order
 // systems written in Python, with scipy.integrate.solve_bvp's argument conventions, and its dense
 // output (CubicHermite). The solver evaluates f one point at a time, so each callback gets
 // SciPy's vectorised shapes with m = 1: x (1,), y (n, 1), p (k,); results may keep the trailing
@@ -12,17 +12,17 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
-#include "cartan/bvp/collocation.hpp"
-#include "cartan/bvp/transported_solution.hpp"
+#include "cartan/numerics/collocation.hpp"
+#include "cartan/transported/collocation_solution.hpp"
 #include "python_models.hpp"
 
 namespace cartan::python {
 
 namespace {
 
-using bvp::ConstVectorRef;
-using bvp::MatrixRef;
-using bvp::VectorRef;
+using numerics::ConstVectorRef;
+using numerics::MatrixRef;
+using numerics::VectorRef;
 
 constexpr std::string_view kWhere = "cartan.solve_bvp";
 
@@ -78,13 +78,13 @@ struct PythonBvp {
   int n = 0, k = 0;
   CallbackState state;
 
-  py::tuple point_args(double t, ConstVectorRef y, ConstVectorRef p) const {
+  py::tuple point_args(double t, numerics::ConstVectorRef y, numerics::ConstVectorRef p) const {
     py::array_t<double> x(1);
     x.mutable_at(0) = t;
     const py::array_t<double> column = to_numpy(Eigen::MatrixXd(y));  // (n, 1)
     return k > 0 ? py::make_tuple(x, column, to_numpy(p)) : py::make_tuple(x, column);
   }
-  py::tuple boundary_args(ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p) const {
+  py::tuple boundary_args(numerics::ConstVectorRef ya, numerics::ConstVectorRef yb, numerics::ConstVectorRef p) const {
     return k > 0 ? py::make_tuple(to_numpy(ya), to_numpy(yb), to_numpy(p)) : py::make_tuple(to_numpy(ya), to_numpy(yb));
   }
 
@@ -99,16 +99,16 @@ struct PythonBvp {
   }
 };
 
-bvp::BvpSystem python_system(const std::shared_ptr<PythonBvp>& f) {
-  bvp::BvpSystem s;
+numerics::BvpSystem python_system(const std::shared_ptr<PythonBvp>& f) {
+  numerics::BvpSystem s;
   s.n = f->n;
   s.k = f->k;
-  s.rhs = [f](double t, ConstVectorRef y, ConstVectorRef p, VectorRef dydt) {
+  s.rhs = [f](double t, numerics::ConstVectorRef y, numerics::ConstVectorRef p, numerics::VectorRef dydt) {
     f->call(f->fun, "fun", f->point_args(t, y, p), [&](const py::object& v, const std::string& who) {
       read_result(v, who, dydt);
     });
   };
-  s.bc = [f](ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p, VectorRef residual) {
+  s.bc = [f](numerics::ConstVectorRef ya, numerics::ConstVectorRef yb, numerics::ConstVectorRef p, numerics::VectorRef residual) {
     f->call(f->bc, "bc", f->boundary_args(ya, yb, p), [&](const py::object& v, const std::string& who) {
       read_result(v, who, residual);
     });
@@ -116,7 +116,7 @@ bvp::BvpSystem python_system(const std::shared_ptr<PythonBvp>& f) {
   // SciPy's fun_jac returns df_dy, or (df_dy, df_dp) with parameters; bc_jac returns
   // (dbc_dya, dbc_dyb), or (dbc_dya, dbc_dyb, dbc_dp).
   if (!f->fun_jac.is_none()) {
-    s.rhs_jacobian = [f](double t, ConstVectorRef y, ConstVectorRef p, MatrixRef dfdy, MatrixRef dfdp) {
+    s.rhs_jacobian = [f](double t, numerics::ConstVectorRef y, numerics::ConstVectorRef p, numerics::MatrixRef dfdy, numerics::MatrixRef dfdp) {
       f->call(f->fun_jac, "fun_jac", f->point_args(t, y, p), [&](const py::object& v, const std::string& who) {
         if (f->k == 0) return read_result(v, who, dfdy);
         const py::sequence items = returned_items(v, who, 2);
@@ -126,8 +126,8 @@ bvp::BvpSystem python_system(const std::shared_ptr<PythonBvp>& f) {
     };
   }
   if (!f->bc_jac.is_none()) {
-    s.bc_jacobian = [f](ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p, MatrixRef dya, MatrixRef dyb,
-                        MatrixRef dp) {
+    s.bc_jacobian = [f](numerics::ConstVectorRef ya, numerics::ConstVectorRef yb, numerics::ConstVectorRef p, numerics::MatrixRef dya, numerics::MatrixRef dyb,
+                        numerics::MatrixRef dp) {
       f->call(f->bc_jac, "bc_jac", f->boundary_args(ya, yb, p), [&](const py::object& v, const std::string& who) {
         const py::sequence items = returned_items(v, who, f->k == 0 ? 2 : 3);
         read_result(items[0], who + " (dbc_dya)", dya);
@@ -139,9 +139,9 @@ bvp::BvpSystem python_system(const std::shared_ptr<PythonBvp>& f) {
   return s;
 }
 
-bvp::LinearSolverKind parse_linear_solver(const std::string& name) {
-  if (name == "block-lu") return bvp::LinearSolverKind::BlockLU;
-  if (name == "sparse-lu") return bvp::LinearSolverKind::SparseLU;
+numerics::LinearSolverKind parse_linear_solver(const std::string& name) {
+  if (name == "block-lu") return numerics::LinearSolverKind::BlockLU;
+  if (name == "sparse-lu") return numerics::LinearSolverKind::SparseLU;
   throw_invalid(kWhere, "linear_solver", "\"" + name + "\"", "is not one of: block-lu, sparse-lu");
 }
 
@@ -156,7 +156,7 @@ int scipy_status(Status status) {
   }
 }
 
-py::dict result_dict(const bvp::BvpResult& r, double seconds) {
+py::dict result_dict(const numerics::BvpResult& r, double seconds) {
   py::dict d;
   d["status"] = scipy_status(r.status);
   d["status_name"] = std::string(to_string(r.status));
@@ -179,7 +179,7 @@ py::dict result_dict(const bvp::BvpResult& r, double seconds) {
 }
 
 /// S(x) (nu = 0) or S'(x) (nu = 1): (n,) for a scalar x, (n, q) for q times.
-py::array_t<double> evaluate_interpolant(const bvp::CubicHermite& s, const py::object& x, int nu) {
+py::array_t<double> evaluate_interpolant(const numerics::CubicHermite& s, const py::object& x, int nu) {
   if (nu != 0 && nu != 1) throw_invalid("cartan.BvpSolution", "nu", std::to_string(nu), "must be 0 or 1");
   const Array times = as_array(x, "cartan.BvpSolution", "x");
   if (times.ndim() > 1) {
@@ -199,11 +199,11 @@ py::array_t<double> evaluate_interpolant(const bvp::CubicHermite& s, const py::o
 }  // namespace
 
 void bind_bvp(py::module_& m) {
-  py::class_<bvp::CubicHermite>(m, "BvpSolution",
+  py::class_<numerics::CubicHermite>(m, "BvpSolution",
                                 "The C^1 piecewise-cubic dense output of cartan.solve_bvp: sol(x) is y(x), "
                                 "sol(x, 1) is y'(x); (n,) for a number x, (n, q) for q times.")
       .def("__call__", &evaluate_interpolant, py::arg("x"), py::arg("nu") = 0)
-      .def_property_readonly("x", [](const bvp::CubicHermite& s) { return to_numpy(s.nodes()); }, "The mesh.");
+      .def_property_readonly("x", [](const numerics::CubicHermite& s) { return to_numpy(s.nodes()); }, "The mesh.");
 
   m.def("_solve_bvp", [](const py::object& fun, const py::object& bc, const py::object& x, const py::object& y,
                          const py::object& p, const py::object& fun_jac, const py::object& bc_jac, double tol,
@@ -213,7 +213,7 @@ void bind_bvp(py::module_& m) {
     const Eigen::MatrixXd guess = dynamic_matrix(y, "y", 2);
     const Eigen::VectorXd parameters = p.is_none() ? Eigen::VectorXd(0) : Eigen::VectorXd(dynamic_matrix(p, "p", 1));
     if (bc_tol && !(*bc_tol > 0)) throw_invalid(kWhere, "bc_tol", format_value(*bc_tol), "must be positive");
-    const bvp::CollocationOptions options{.tol = tol, .bc_tol = bc_tol.value_or(0), .max_nodes = max_nodes,
+    const numerics::CollocationOptions options{.tol = tol, .bc_tol = bc_tol.value_or(0), .max_nodes = max_nodes,
                                           .max_newton_iterations = max_newton_iterations,
                                           .max_refinements = max_refinements, .fd_step = fd_step,
                                           .linear_solver = parse_linear_solver(linear_solver)};
@@ -225,8 +225,8 @@ void bind_bvp(py::module_& m) {
     callbacks->n = static_cast<int>(guess.rows());
     callbacks->k = static_cast<int>(parameters.size());
     double seconds = 0;
-    const bvp::BvpResult r = run_with_callbacks(callbacks->state, [&] {
-      return bvp::timed(seconds, [&] { return bvp::solve_collocation(python_system(callbacks), mesh, guess, parameters, options); });
+    const numerics::BvpResult r = run_with_callbacks(callbacks->state, [&] {
+      return transported::timed(seconds, [&] { return numerics::solve_collocation(python_system(callbacks), mesh, guess, parameters, options); });
     });
     return result_dict(r, seconds);
   }, py::arg("fun"), py::arg("bc"), py::arg("x"), py::arg("y"), py::arg("p"), py::arg("fun_jac"), py::arg("bc_jac"),

@@ -6,40 +6,40 @@
 
 #include <string>
 
-#include "cartan/group.hpp"
+#include "cartan/groups/group.hpp"
 #include "convert.hpp"
 
 namespace cartan::python {
 
 /// The C++ type behind the Python class of group G (it has no instances: all methods are static).
-template <LieGroup G>
+template <groups::LieGroup G>
 struct GroupTag {};
 
-template <LieGroup G>
+template <groups::LieGroup G>
 using GroupClass = py::class_<GroupTag<G>>;
 
 /// Converts the argument `name` of `Group.method` to G's element, tangent or algebra-matrix type.
-template <LieGroup G>
+template <groups::LieGroup G>
 struct Args {
   std::string group;
-  ElementOf<G> element(const py::handle& x, std::string_view method, std::string_view name) const {
-    return to_eigen<ElementOf<G>>(x, group + "." + std::string(method), name);
+  groups::ElementOf<G> element(const py::handle& x, std::string_view method, std::string_view name) const {
+    return to_eigen<groups::ElementOf<G>>(x, group + "." + std::string(method), name);
   }
-  TangentOf<G> tangent(const py::handle& x, std::string_view method, std::string_view name) const {
-    return to_eigen<TangentOf<G>>(x, group + "." + std::string(method), name);
+  groups::TangentOf<G> tangent(const py::handle& x, std::string_view method, std::string_view name) const {
+    return to_eigen<groups::TangentOf<G>>(x, group + "." + std::string(method), name);
   }
   typename G::MatrixRep matrix_rep(const py::handle& x, std::string_view method, std::string_view name) const {
     return to_eigen<typename G::MatrixRep>(x, group + "." + std::string(method), name);
   }
 };
 
-template <LieGroup G>
+template <groups::LieGroup G>
 GroupClass<G> bind_group(py::module_& m, const char* name, const char* doc) {
   GroupClass<G> cls(m, name, doc);
   const Args<G> a{name};
   cls.attr("name") = std::string(G::name());
   cls.attr("dim") = G::kDim;
-  constexpr int rows = ElementOf<G>::RowsAtCompileTime, cols = ElementOf<G>::ColsAtCompileTime;
+  constexpr int rows = groups::ElementOf<G>::RowsAtCompileTime, cols = groups::ElementOf<G>::ColsAtCompileTime;
   cls.attr("element_shape") = cols == 1 ? py::make_tuple(rows) : py::make_tuple(rows, cols);
   cls.def_static("identity", [] { return to_numpy(G::identity()); }, "The identity element.");
   cls.def_static("compose", [a](const py::object& g, const py::object& h) {
@@ -62,13 +62,13 @@ GroupClass<G> bind_group(py::module_& m, const char* name, const char* doc) {
   cls.def_static("ad", [a](const py::object& v) { return to_numpy(G::ad(a.tangent(v, "ad", "v"))); },
                  py::arg("v"), "The matrix of ad_v = [v, .] on algebra coordinates.");
   cls.def_static("ad_star", [a](const py::object& v, const py::object& mu) -> py::object {
-    const TangentOf<G> vv = a.tangent(v, "ad_star", "v");
-    if (mu.is_none()) return to_numpy(coad<G>(vv));
-    return to_numpy(coad<G>(vv, a.tangent(mu, "ad_star", "mu")));
+    const groups::TangentOf<G> vv = a.tangent(v, "ad_star", "v");
+    if (mu.is_none()) return to_numpy(groups::coad<G>(vv));
+    return to_numpy(groups::coad<G>(vv, a.tangent(mu, "ad_star", "mu")));
   }, py::arg("v"), py::arg("mu") = py::none(),
      "ad*_v mu = ad_v^T mu (docs/conventions.md); the matrix ad_v^T when mu is omitted.");
   cls.def_static("bracket", [a](const py::object& u, const py::object& v) {
-    return to_numpy(bracket<G>(a.tangent(u, "bracket", "u"), a.tangent(v, "bracket", "v")));
+    return to_numpy(groups::bracket<G>(a.tangent(u, "bracket", "u"), a.tangent(v, "bracket", "v")));
   }, py::arg("u"), py::arg("v"), "The Lie bracket [u, v] = ad_u v.");
   cls.def_static("left_translate", [a](const py::object& g, const py::object& v) {
     return to_numpy(G::left_translate(a.element(g, "left_translate", "g"), a.tangent(v, "left_translate", "v")));

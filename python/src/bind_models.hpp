@@ -1,5 +1,5 @@
 #pragma once
-// Built-in reduced Lagrangians and Hamiltonians (models/), their second derivatives
+// Built-in reduced Lagrangians and Hamiltonians (mechanics/), their second derivatives
 // (lagrangian_hessian.hpp), and the classical Euler–Poincaré / Lie–Poisson integrators
 // (euler_poincare.hpp: eq:EP-left, eq:EP-right; lie_poisson.hpp: eq:LP-left, eq:LP-right) for
 // built-in and Python-defined models alike.
@@ -7,14 +7,14 @@
 #include <string>
 
 #include "bind_group.hpp"
-#include "cartan/euler_poincare.hpp"
-#include "cartan/lagrangian_hessian.hpp"
-#include "cartan/lie_poisson.hpp"
+#include "cartan/mechanics/euler_poincare.hpp"
+#include "cartan/mechanics/lagrangian_hessian.hpp"
+#include "cartan/mechanics/lie_poisson.hpp"
 #include "python_models.hpp"
 
 namespace cartan::python {
 
-Side parse_side(const std::string& side, std::string_view where);
+groups::Side parse_side(const std::string& side, std::string_view where);
 
 template <class... T>
 struct Types {};
@@ -41,7 +41,7 @@ py::class_<M> model_class(py::module_& m, const py::object& group, const char* n
 
 /// Binds `name(t, g, <x>)` of a model class as f(model, t, g, x), with g an element and x an
 /// algebra vector or covector, converted (and shape-checked) by `a`.
-template <LieGroup G, class M, class F>
+template <groups::LieGroup G, class M, class F>
 void def_model_method(py::class_<M>& cls, const Args<G>& a, const char* name, const char* x, F f, const char* doc) {
   cls.def(name, [a, name, x, f](const M& model, double t, const py::object& g, const py::object& value) {
     return f(model, t, a.element(g, name, "g"), a.tangent(value, name, x));
@@ -49,7 +49,7 @@ void def_model_method(py::class_<M>& cls, const Args<G>& a, const char* name, co
 }
 
 /// value/momentum/group_gradient/velocity of a built-in Lagrangian.
-template <LieGroup G, ReducedLagrangian<G> L, class Init>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L, class Init>
 void bind_lagrangian(py::module_& m, const py::object& group, const char* name, const char* side, const char* doc,
                      Init init) {
   const Args<G> a{name};
@@ -69,7 +69,7 @@ void bind_lagrangian(py::module_& m, const py::object& group, const char* name, 
 }
 
 /// value/velocity/group_gradient of a built-in Hamiltonian.
-template <LieGroup G, ReducedHamiltonian<G> H, class Init>
+template <groups::LieGroup G, mechanics::ReducedHamiltonian<G> H, class Init>
 void bind_hamiltonian(py::module_& m, const py::object& group, const char* name, const char* side, const char* doc,
                       Init init) {
   const Args<G> a{name};
@@ -86,8 +86,8 @@ void bind_hamiltonian(py::module_& m, const py::object& group, const char* name,
 }
 
 /// A reduced trajectory (lie_group_integrator.hpp) as a dict of arrays t, g, v, mu.
-template <LieGroup G>
-py::dict trajectory_dict(const Trajectory<G>& tr) {
+template <groups::LieGroup G>
+py::dict trajectory_dict(const mechanics::Trajectory<G>& tr) {
   py::dict d;
   d["t"] = to_numpy(tr.t);
   d["g"] = to_numpy(tr.g);
@@ -98,31 +98,31 @@ py::dict trajectory_dict(const Trajectory<G>& tr) {
 
 /// Static methods of the group class that take a model, built-in (one of the listed types) or
 /// written in Python: _euler_poincare, _lie_poisson, _lagrangian_hessian.
-template <LieGroup G, class... Lagrangians, class... Hamiltonians>
+template <groups::LieGroup G, class... Lagrangians, class... Hamiltonians>
 void bind_mechanics(GroupClass<G>& group, const std::string& name, Types<Lagrangians...>, Types<Hamiltonians...>) {
   const Args<G> a{name};
   group.def_static("_euler_poincare", [a](const std::string& side, const py::object& model, const py::object& g0,
                                           const py::object& v0, double T, int steps) {
-    const Side s = parse_side(side, a.group + ".euler_poincare");
-    const ElementOf<G> g = a.element(g0, "euler_poincare", "g0");
-    const TangentOf<G> v = a.tangent(v0, "euler_poincare", "v0");
+    const groups::Side s = parse_side(side, a.group + ".euler_poincare");
+    const groups::ElementOf<G> g = a.element(g0, "euler_poincare", "g0");
+    const groups::TangentOf<G> v = a.tangent(v0, "euler_poincare", "v0");
     return trajectory_dict<G>(visit_model<PythonLagrangian<G>, Lagrangians...>(
-        model, [&](const auto& l) { return euler_poincare<G>(s, l, g, v, T, steps); }));
+        model, [&](const auto& l) { return mechanics::euler_poincare<G>(s, l, g, v, T, steps); }));
   }, py::arg("side"), py::arg("lagrangian"), py::arg("g0"), py::arg("v0"), py::arg("T"), py::arg("steps"));
   group.def_static("_lie_poisson", [a](const std::string& side, const py::object& model, const py::object& g0,
                                        const py::object& mu0, double T, int steps) {
-    const Side s = parse_side(side, a.group + ".lie_poisson");
-    const ElementOf<G> g = a.element(g0, "lie_poisson", "g0");
-    const CovectorOf<G> mu = a.tangent(mu0, "lie_poisson", "mu0");
+    const groups::Side s = parse_side(side, a.group + ".lie_poisson");
+    const groups::ElementOf<G> g = a.element(g0, "lie_poisson", "g0");
+    const groups::CovectorOf<G> mu = a.tangent(mu0, "lie_poisson", "mu0");
     return trajectory_dict<G>(visit_model<PythonHamiltonian<G>, Hamiltonians...>(
-        model, [&](const auto& h) { return lie_poisson<G>(s, h, g, mu, T, steps); }));
+        model, [&](const auto& h) { return mechanics::lie_poisson<G>(s, h, g, mu, T, steps); }));
   }, py::arg("side"), py::arg("hamiltonian"), py::arg("g0"), py::arg("mu0"), py::arg("T"), py::arg("steps"));
   group.def_static("_lagrangian_hessian", [a](const py::object& model, double t, const py::object& g0,
                                               const py::object& v0) {
-    const ElementOf<G> g = a.element(g0, "lagrangian_hessian", "g");
-    const TangentOf<G> v = a.tangent(v0, "lagrangian_hessian", "v");
-    const LagrangianHessian<G> h = visit_model<PythonLagrangian<G>, Lagrangians...>(
-        model, [&](const auto& l) { return lagrangian_hessian<G>(l, t, g, v); });
+    const groups::ElementOf<G> g = a.element(g0, "lagrangian_hessian", "g");
+    const groups::TangentOf<G> v = a.tangent(v0, "lagrangian_hessian", "v");
+    const mechanics::LagrangianHessian<G> h = visit_model<PythonLagrangian<G>, Lagrangians...>(
+        model, [&](const auto& l) { return mechanics::lagrangian_hessian<G>(l, t, g, v); });
     py::dict d;
     d["momentum_v"] = to_numpy(h.momentum_v);
     d["momentum_g"] = to_numpy(h.momentum_g);

@@ -34,12 +34,12 @@ struct SolveRequest {
   std::optional<int> samples;
   std::optional<int> max_nodes;
 
-  SolveOptions options() const {
-    SolveOptions o;
-    o.method = parse_enum<Method>(method, "cartan.solve");
-    o.continuation = parse_enum<Continuation>(continuation, "cartan.solve");
+  transported::SolveOptions options() const {
+    transported::SolveOptions o;
+    o.method = parse_enum<transported::Method>(method, "cartan.solve");
+    o.continuation = parse_enum<transported::Continuation>(continuation, "cartan.solve");
     if (order != 1 && order != 2) throw_invalid("cartan.solve", "order", std::to_string(order), "must be 1 or 2");
-    o.order = order == 2 ? SchemeOrder::Second : SchemeOrder::First;
+    o.order = order == 2 ? transported::SchemeOrder::Second : transported::SchemeOrder::First;
     o.tol = tol;
     o.max_iterations = max_iterations;
     o.segments = segments;
@@ -56,8 +56,8 @@ SolveMonitor python_monitor(const py::object& progress);
 
 /// A trajectory from any object with t, g, v, xi (and mu when `with_mu`) as attributes or keys,
 /// e.g. a SolveResult: a guess for `solve` (mu is then not needed) or the data of `verify`.
-template <LieGroup G>
-TransportedTrajectory<G> trajectory_of(const py::object& source, const Args<G>& a, const std::string& where,
+template <groups::LieGroup G>
+transported::TransportedTrajectory<G> trajectory_of(const py::object& source, const Args<G>& a, const std::string& where,
                                        const char* argument, bool with_mu) {
   const auto field = [&](const char* name) -> py::object {
     if (py::hasattr(source, name)) return source.attr(name);
@@ -75,12 +75,12 @@ TransportedTrajectory<G> trajectory_of(const py::object& source, const Args<G>& 
                   with_mu ? "needs g, v, mu and xi at every time" : "needs g, v and xi at every time");
   }
   const std::string name(argument);
-  TransportedTrajectory<G> tr;
+  transported::TransportedTrajectory<G> tr;
   for (std::size_t i = 0; i < t.size(); ++i) {
     tr.t.push_back(t[i]);
     tr.g.push_back(a.element(g[i], where, name + ".g"));
     tr.v.push_back(a.tangent(v[i], where, name + ".v"));
-    tr.mu.push_back(with_mu ? CovectorOf<G>(a.tangent(mu[i], where, name + ".mu")) : CovectorOf<G>::Zero());
+    tr.mu.push_back(with_mu ? groups::CovectorOf<G>(a.tangent(mu[i], where, name + ".mu")) : groups::CovectorOf<G>::Zero());
     tr.xi.push_back(a.tangent(xi[i], where, name + ".xi"));
   }
   return tr;
@@ -107,9 +107,9 @@ inline py::dict report_dict(const verify::Report& report) {
 }
 
 /// The solution as a dict of the fields of SolveResult (python/cartan/__init__.py).
-template <LieGroup G>
-py::dict solution_dict(const TransportedSolution<G>& s, const std::string& group, double lambda, double T, int N,
-                       const ElementOf<G>& g0, const ElementOf<G>& gT, double tol) {
+template <groups::LieGroup G>
+py::dict solution_dict(const transported::TransportedSolution<G>& s, const std::string& group, double lambda, double T, int N,
+                       const groups::ElementOf<G>& g0, const groups::ElementOf<G>& gT, double tol) {
   py::dict d;
   d["status"] = std::string(to_string(s.status));
   d["message"] = s.message;
@@ -148,24 +148,24 @@ py::dict solution_dict(const TransportedSolution<G>& s, const std::string& group
 
 /// `<Group>._solve(lagrangian, lam, T, N, g0, gT, request, v0, xi0, guess, progress)` for the
 /// listed built-in models and any Python-defined Lagrangian on G.
-template <LieGroup G, class... Models>
+template <groups::LieGroup G, class... Models>
 void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...>) {
   const Args<G> a{name};
-  group.attr("methods") = enum_words<Method>();
+  group.attr("methods") = enum_words<transported::Method>();
   group.def_static("_solve", [a](const py::object& model, double lambda, double T, int N, const py::object& g0,
                                  const py::object& gT, const SolveRequest& request, const py::object& v0,
                                  const py::object& xi0, const py::object& guess, const py::object& progress) {
-    SolveOptions options = request.options();
+    transported::SolveOptions options = request.options();
     options.monitor = python_monitor(progress);
-    SolveGuess<G> start;
+    transported::SolveGuess<G> start;
     if (!v0.is_none()) start.v0 = a.tangent(v0, "solve", "v0");
     if (!xi0.is_none()) start.xi0 = a.tangent(xi0, "solve", "xi0");
     if (!guess.is_none()) start.trajectory = trajectory_of<G>(guess, a, "solve", "guess", false);
-    const ElementOf<G> first = g0.is_none() ? G::identity() : a.element(g0, "solve", "g0");
-    const ElementOf<G> last = a.element(gT, "solve", "gT");
-    const TransportedSolution<G> s = visit_model<PythonLagrangian<G>, Models...>(model, [&](const auto& l) {
+    const groups::ElementOf<G> first = g0.is_none() ? G::identity() : a.element(g0, "solve", "g0");
+    const groups::ElementOf<G> last = a.element(gT, "solve", "gT");
+    const transported::TransportedSolution<G> s = visit_model<PythonLagrangian<G>, Models...>(model, [&](const auto& l) {
       using L = std::decay_t<decltype(l)>;
-      return solve(TransportedProblem<G, L>{l, lambda, T, N, first, last}, options, start);
+      return transported::solve(transported::TransportedProblem<G, L>{l, lambda, T, N, first, last}, options, start);
     });
     return solution_dict(s, a.group, lambda, T, N, first, last, options.tol);
   }, py::arg("lagrangian"), py::arg("lam"), py::arg("T"), py::arg("N"), py::arg("g0"), py::arg("gT"),
@@ -173,14 +173,14 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
   group.def_static("_verify", [a](const py::object& model, const py::object& result, double lambda, double T,
                                   const py::object& g0, const py::object& gT, int order, double tol,
                                   const std::string& status) {
-    const TransportedTrajectory<G> x = trajectory_of<G>(result, a, "verify", "result", true);
-    const ElementOf<G> first = a.element(g0, "verify", "g0"), last = a.element(gT, "verify", "gT");
+    const transported::TransportedTrajectory<G> x = trajectory_of<G>(result, a, "verify", "result", true);
+    const groups::ElementOf<G> first = a.element(g0, "verify", "g0"), last = a.element(gT, "verify", "gT");
     const Status outcome = parse_enum<Status>(status, "cartan.verify");
     if (x.t.empty() && outcome != Status::Converged) return report_dict(verify::unchecked_failure(outcome));
     const verify::Report report = visit_model<PythonLagrangian<G>, Models...>(model, [&](const auto& l) {
       using L = std::decay_t<decltype(l)>;
       const int steps = std::max<int>(1, static_cast<int>(x.t.size()) - 1);
-      return verify::verify_trajectory(TransportedProblem<G, L>{l, lambda, T, steps, first, last}, x, order, tol, outcome);
+      return verify::verify_trajectory(transported::TransportedProblem<G, L>{l, lambda, T, steps, first, last}, x, order, tol, outcome);
     });
     return report_dict(report);
   }, py::arg("lagrangian"), py::arg("result"), py::arg("lam"), py::arg("T"), py::arg("g0"), py::arg("gT"),

@@ -53,16 +53,16 @@ PythonModel::PythonModel(const py::object& object, std::string_view kind, std::i
   }
 }
 
-Side parse_side(const std::string& side, std::string_view where) {
-  if (side == "left") return Side::Left;
-  if (side == "right") return Side::Right;
+groups::Side parse_side(const std::string& side, std::string_view where) {
+  if (side == "left") return groups::Side::Left;
+  if (side == "right") return groups::Side::Right;
   throw_invalid(where, "side", "\"" + side + "\"", "is not one of: left, right");
 }
 
-TransportMethod parse_transport_method(const std::string& method, std::string_view where) {
-  if (method == "lie-euler") return TransportMethod::LieEuler;
-  if (method == "magnus2") return TransportMethod::Magnus2;
-  if (method == "magnus4") return TransportMethod::Magnus4;
+transport::TransportMethod parse_transport_method(const std::string& method, std::string_view where) {
+  if (method == "lie-euler") return transport::TransportMethod::LieEuler;
+  if (method == "magnus2") return transport::TransportMethod::Magnus2;
+  if (method == "magnus4") return transport::TransportMethod::Magnus4;
   throw_invalid(where, "method", "\"" + method + "\"", "is not one of: lie-euler, magnus2, magnus4");
 }
 

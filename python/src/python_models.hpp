@@ -23,9 +23,9 @@
 #include <string>
 #include <utility>
 
-#include "cartan/group.hpp"
-#include "cartan/lagrangian.hpp"
-#include "cartan/lagrangian_hessian.hpp"
+#include "cartan/groups/group.hpp"
+#include "cartan/mechanics/lagrangian.hpp"
+#include "cartan/mechanics/lagrangian_hessian.hpp"
 #include "convert.hpp"
 
 namespace cartan::python {
@@ -83,11 +83,11 @@ struct FromPython<double> {
 
 /// The optional `hessian(t, g, v)` callback returns a dict of (n, n) arrays with the keys of
 /// LagrangianHessian (what cartan.lagrangian_hessian returns).
-template <LieGroup G>
-struct FromPython<LagrangianHessian<G>> {
-  static LagrangianHessian<G> convert(const py::object& value, const std::string& where) {
+template <groups::LieGroup G>
+struct FromPython<mechanics::LagrangianHessian<G>> {
+  static mechanics::LagrangianHessian<G> convert(const py::object& value, const std::string& where) {
     const auto matrix = [&](const char* key) {
-      return to_eigen<AlgebraMatrixOf<G>>(value[py::str(key)], where, std::string("return value[\"") + key + "\"]");
+      return to_eigen<groups::AlgebraMatrixOf<G>>(value[py::str(key)], where, std::string("return value[\"") + key + "\"]");
     };
     return {matrix("momentum_v"), matrix("momentum_g"), matrix("gradient_v"), matrix("gradient_g")};
   }
@@ -98,8 +98,8 @@ template <class Derived>
 bool all_finite(const Eigen::MatrixBase<Derived>& x) {
   return x.allFinite();
 }
-template <LieGroup G>
-bool all_finite(const LagrangianHessian<G>& h) {
+template <groups::LieGroup G>
+bool all_finite(const mechanics::LagrangianHessian<G>& h) {
   return h.momentum_v.allFinite() && h.momentum_g.allFinite() && h.gradient_v.allFinite() && h.gradient_g.allFinite();
 }
 
@@ -138,42 +138,42 @@ class PythonModel {
   std::shared_ptr<CallbackState> state_ = std::make_shared<CallbackState>();
 };
 
-template <LieGroup G>
+template <groups::LieGroup G>
 class PythonLagrangian : public PythonModel {
  public:
   explicit PythonLagrangian(const py::object& object)
       : PythonModel(object, "Lagrangian", {"value", "momentum", "group_gradient", "velocity"}, {"hessian"}) {}
 
-  double value(double t, const ElementOf<G>& g, const TangentOf<G>& v) const { return call<double>(0, t, g, v); }
-  CovectorOf<G> momentum(double t, const ElementOf<G>& g, const TangentOf<G>& v) const {
-    return call<CovectorOf<G>>(1, t, g, v);
+  double value(double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) const { return call<double>(0, t, g, v); }
+  groups::CovectorOf<G> momentum(double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) const {
+    return call<groups::CovectorOf<G>>(1, t, g, v);
   }
-  CovectorOf<G> group_gradient(double t, const ElementOf<G>& g, const TangentOf<G>& v) const {
-    return call<CovectorOf<G>>(2, t, g, v);
+  groups::CovectorOf<G> group_gradient(double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) const {
+    return call<groups::CovectorOf<G>>(2, t, g, v);
   }
-  TangentOf<G> velocity(double t, const ElementOf<G>& g, const CovectorOf<G>& mu) const {
-    return call<TangentOf<G>>(3, t, g, mu);
+  groups::TangentOf<G> velocity(double t, const groups::ElementOf<G>& g, const groups::CovectorOf<G>& mu) const {
+    return call<groups::TangentOf<G>>(3, t, g, mu);
   }
   /// Second derivatives for the tangent-linear sweeps: the object's `hessian` if it has one,
   /// else central differences of momentum and group_gradient (lagrangian_hessian_fd).
-  LagrangianHessian<G> hessian(double t, const ElementOf<G>& g, const TangentOf<G>& v) const {
-    if (!has(4)) return lagrangian_hessian_fd<G>(*this, t, g, v);
-    return call<LagrangianHessian<G>>(4, t, g, v);
+  mechanics::LagrangianHessian<G> hessian(double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) const {
+    if (!has(4)) return mechanics::lagrangian_hessian_fd<G>(*this, t, g, v);
+    return call<mechanics::LagrangianHessian<G>>(4, t, g, v);
   }
 };
 
-template <LieGroup G>
+template <groups::LieGroup G>
 class PythonHamiltonian : public PythonModel {
  public:
   explicit PythonHamiltonian(const py::object& object)
       : PythonModel(object, "Hamiltonian", {"value", "velocity", "group_gradient"}) {}
 
-  double value(double t, const ElementOf<G>& g, const CovectorOf<G>& mu) const { return call<double>(0, t, g, mu); }
-  TangentOf<G> velocity(double t, const ElementOf<G>& g, const CovectorOf<G>& mu) const {
-    return call<TangentOf<G>>(1, t, g, mu);
+  double value(double t, const groups::ElementOf<G>& g, const groups::CovectorOf<G>& mu) const { return call<double>(0, t, g, mu); }
+  groups::TangentOf<G> velocity(double t, const groups::ElementOf<G>& g, const groups::CovectorOf<G>& mu) const {
+    return call<groups::TangentOf<G>>(1, t, g, mu);
   }
-  CovectorOf<G> group_gradient(double t, const ElementOf<G>& g, const CovectorOf<G>& mu) const {
-    return call<CovectorOf<G>>(2, t, g, mu);
+  groups::CovectorOf<G> group_gradient(double t, const groups::ElementOf<G>& g, const groups::CovectorOf<G>& mu) const {
+    return call<groups::CovectorOf<G>>(2, t, g, mu);
   }
 };
 

@@ -46,7 +46,7 @@ def test_lie_poisson_equals_euler_poincare_for_the_legendre_transform():
 
 
 def test_right_reduced_rigid_body_conserves_spatial_momentum():
-    # eq:EP-right with l_+ of the free body: mu_+' = 0 (models/right_reduced.hpp).
+    # eq:EP-right with l_+ of the free body: mu_+' = 0 (mechanics/right_reduced.hpp).
     v_spatial = G0 @ V0  # Ad_g v_body
     tr = cartan.euler_poincare(cartan.SpatialRigidBody(INERTIA), G0, v_spatial, T=5.0, steps=500, side="right")
     np.testing.assert_allclose(tr.mu, np.broadcast_to(tr.mu[0], tr.mu.shape), atol=1e-12)

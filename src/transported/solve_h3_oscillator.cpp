@@ -1,7 +1,7 @@
 // solve for the Heisenberg oscillator, compiled once (transported/solve.hpp).
 #include "cartan/transported/solve.hpp"
 
-namespace cartan {
-template TransportedSolution<Heisenberg> solve(const TransportedProblem<Heisenberg, H3Oscillator>&,
-                                               const SolveOptions&, const SolveGuess<Heisenberg>&);
-}  // namespace cartan
+namespace cartan::transported {
+template TransportedSolution<groups::Heisenberg> solve(const TransportedProblem<groups::Heisenberg, mechanics::H3Oscillator>&,
+                                               const SolveOptions&, const SolveGuess<groups::Heisenberg>&);
+}  // namespace cartan::transported

@@ -1,7 +1,7 @@
 // solve for the SO(3) oscillator, compiled once (transported/solve.hpp).
 #include "cartan/transported/solve.hpp"
 
-namespace cartan {
-template TransportedSolution<SO3> solve(const TransportedProblem<SO3, SO3Oscillator>&, const SolveOptions&,
-                                        const SolveGuess<SO3>&);
-}  // namespace cartan
+namespace cartan::transported {
+template TransportedSolution<groups::SO3> solve(const TransportedProblem<groups::SO3, mechanics::SO3Oscillator>&, const SolveOptions&,
+                                        const SolveGuess<groups::SO3>&);
+}  // namespace cartan::transported

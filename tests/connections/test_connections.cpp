@@ -17,14 +17,14 @@ TYPED_TEST(ConnectionTest, CartanSchoutenTorsionAndCurvature) {
   using G = TypeParam;
   std::mt19937 rng(kSeed);
   for (double lambda : kLambdas) {
-    for (Side side : {Side::Left, Side::Right}) {
-      const auto conn = cartan_schouten<G>(lambda, side);
+    for (groups::Side side : {groups::Side::Left, groups::Side::Right}) {
+      const auto conn = connections::cartan_schouten<G>(lambda, side);
       EXPECT_TRUE(conn.is_cartan());
       for (int trial = 0; trial < 5; ++trial) {
         const auto u = random_tangent<G>(rng), v = random_tangent<G>(rng), w = random_tangent<G>(rng);
-        EXPECT_NEAR_MATRIX(conn.torsion(v, w), cartan_schouten_torsion<G>(lambda, v, w), 1e-13)
+        EXPECT_NEAR_MATRIX(conn.torsion(v, w), connections::cartan_schouten_torsion<G>(lambda, v, w), 1e-13)
             << "lambda " << lambda << " side " << to_string(side);
-        EXPECT_NEAR_MATRIX(conn.curvature(u, v, w), cartan_schouten_curvature<G>(lambda, u, v, w), 1e-13)
+        EXPECT_NEAR_MATRIX(conn.curvature(u, v, w), connections::cartan_schouten_curvature<G>(lambda, u, v, w), 1e-13)
             << "lambda " << lambda << " side " << to_string(side);
       }
     }
@@ -36,16 +36,16 @@ TYPED_TEST(ConnectionTest, SpecialParameters) {
   std::mt19937 rng(kSeed + 1);
   for (int trial = 0; trial < 10; ++trial) {
     const auto u = random_tangent<G>(rng), v = random_tangent<G>(rng), w = random_tangent<G>(rng);
-    for (Side side : {Side::Left, Side::Right}) {
+    for (groups::Side side : {groups::Side::Left, groups::Side::Right}) {
       // lambda = 0 and 1 are flat, with torsion -[.,.] and +[.,.] (paper's remark, (i)).
-      EXPECT_LE(cartan_schouten<G>(0.0, side).curvature(u, v, w).norm(), 1e-14);
-      EXPECT_LE(cartan_schouten<G>(1.0, side).curvature(u, v, w).norm(), 1e-14);
-      EXPECT_NEAR_MATRIX(cartan_schouten<G>(0.0, side).torsion(v, w), -bracket<G>(v, w), 1e-14);
-      EXPECT_NEAR_MATRIX(cartan_schouten<G>(1.0, side).torsion(v, w), bracket<G>(v, w), 1e-14);
+      EXPECT_LE(connections::cartan_schouten<G>(0.0, side).curvature(u, v, w).norm(), 1e-14);
+      EXPECT_LE(connections::cartan_schouten<G>(1.0, side).curvature(u, v, w).norm(), 1e-14);
+      EXPECT_NEAR_MATRIX(connections::cartan_schouten<G>(0.0, side).torsion(v, w), -groups::bracket<G>(v, w), 1e-14);
+      EXPECT_NEAR_MATRIX(connections::cartan_schouten<G>(1.0, side).torsion(v, w), groups::bracket<G>(v, w), 1e-14);
       // lambda = 1/2 is torsion-free with R = -1/4 [[u,v],w] (remark, (ii)).
-      const auto half = cartan_schouten<G>(0.5, side);
+      const auto half = connections::cartan_schouten<G>(0.5, side);
       EXPECT_LE(half.torsion(v, w).norm(), 1e-14);
-      EXPECT_NEAR_MATRIX(half.curvature(u, v, w), -0.25 * bracket<G>(bracket<G>(u, v), w), 1e-14);
+      EXPECT_NEAR_MATRIX(half.curvature(u, v, w), -0.25 * groups::bracket<G>(groups::bracket<G>(u, v), w), 1e-14);
     }
   }
 }
@@ -57,7 +57,7 @@ TYPED_TEST(ConnectionTest, SpecialParameters) {
 TYPED_TEST(ConnectionTest, DualCovariantDerivativeSatisfiesLeibniz) {
   using G = TypeParam;
   std::mt19937 rng(kSeed + 7);
-  for (Side side : {Side::Left, Side::Right}) {
+  for (groups::Side side : {groups::Side::Left, groups::Side::Right}) {
     for (int trial = 0; trial < 5; ++trial) {
       const auto conn = random_connection<G>(side, rng);
       const auto u = random_tangent<G>(rng), w = random_tangent<G>(rng), dw = random_tangent<G>(rng);
@@ -75,7 +75,7 @@ TYPED_TEST(ConnectionTest, DualCovariantDerivativeSatisfiesLeibniz) {
 TYPED_TEST(ConnectionTest, BianchiIdentityForRandomConnections) {
   using G = TypeParam;
   std::mt19937 rng(kSeed + 2);
-  for (Side side : {Side::Left, Side::Right}) {
+  for (groups::Side side : {groups::Side::Left, groups::Side::Right}) {
     for (int trial = 0; trial < 5; ++trial) {
       const auto conn = random_connection<G>(side, rng);
       const auto u = random_tangent<G>(rng), v = random_tangent<G>(rng), w = random_tangent<G>(rng);
@@ -92,8 +92,8 @@ TYPED_TEST(ConnectionTest, CartanSchoutenIsBiInvariant) {
   std::mt19937 rng(kSeed + 3);
   const SmoothField<G> v_field(rng), w_field(rng);
   for (double lambda : kLambdas) {
-    const auto left = cartan_schouten<G>(lambda, Side::Left);
-    const auto right = cartan_schouten<G>(lambda, Side::Right);
+    const auto left = connections::cartan_schouten<G>(lambda, groups::Side::Left);
+    const auto right = connections::cartan_schouten<G>(lambda, groups::Side::Right);
     for (int trial = 0; trial < 4; ++trial) {
       const auto g = random_element<G>(rng);
       const auto from_left = covariant_derivative_of_fields<G>(left, v_field, w_field, g);
@@ -103,8 +103,8 @@ TYPED_TEST(ConnectionTest, CartanSchoutenIsBiInvariant) {
   }
   // A non-Cartan-Schouten map is not bi-invariant in this way on a non-abelian group: the same
   // check fails for the left map lambda ad paired with a wrong right map (lambda) ad.
-  const auto left = cartan_schouten<G>(0.3, Side::Left);
-  const auto wrong_right = cartan_schouten<G>(1.3, Side::Right);
+  const auto left = connections::cartan_schouten<G>(0.3, groups::Side::Left);
+  const auto wrong_right = connections::cartan_schouten<G>(1.3, groups::Side::Right);
   double worst = 0;
   for (int trial = 0; trial < 4; ++trial) {
     const auto g = random_element<G>(rng);
@@ -117,11 +117,11 @@ TYPED_TEST(ConnectionTest, CartanSchoutenIsBiInvariant) {
 TEST(HeisenbergConnection, CurvatureVanishesForEveryLambda) {
   std::mt19937 rng(kSeed);
   for (double lambda : kLambdas) {
-    for (Side side : {Side::Left, Side::Right}) {
-      const auto conn = cartan_schouten<Heisenberg>(lambda, side);
+    for (groups::Side side : {groups::Side::Left, groups::Side::Right}) {
+      const auto conn = connections::cartan_schouten<groups::Heisenberg>(lambda, side);
       for (int trial = 0; trial < 5; ++trial) {
-        const auto u = random_tangent<Heisenberg>(rng), v = random_tangent<Heisenberg>(rng),
-                   w = random_tangent<Heisenberg>(rng);
+        const auto u = random_tangent<groups::Heisenberg>(rng), v = random_tangent<groups::Heisenberg>(rng),
+                   w = random_tangent<groups::Heisenberg>(rng);
         EXPECT_EQ(conn.curvature(u, v, w).norm(), 0.0);
       }
     }
@@ -129,18 +129,18 @@ TEST(HeisenbergConnection, CurvatureVanishesForEveryLambda) {
 }
 
 TEST(InvariantConnection, ConstructionFromTableAndBilinearMap) {
-  using C = InvariantConnection<SO3>;
+  using C = connections::InvariantConnection<groups::SO3>;
   // nabla_u w = u x w + 2 (u . w) e1 as a user map: not skew, so not a Cartan connection.
   auto f = [](const Eigen::Vector3d& u, const Eigen::Vector3d& w) -> Eigen::Vector3d {
     return u.cross(w) + 2 * u.dot(w) * Eigen::Vector3d::UnitX();
   };
-  const C from_map = C::from_bilinear(Side::Left, f);
+  const C from_map = C::from_bilinear(groups::Side::Left, f);
   EXPECT_FALSE(from_map.is_cartan());
   Eigen::MatrixXd table(3, 9);
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) table.col(3 * i + j) = f(Eigen::Vector3d::Unit(i), Eigen::Vector3d::Unit(j));
   }
-  const C from_table = C::from_table(Side::Left, table);
+  const C from_table = C::from_table(groups::Side::Left, table);
   const Eigen::Vector3d u(0.3, -0.2, 0.9), w(1.1, 0.4, -0.6);
   EXPECT_NEAR_MATRIX(from_map.nabla(u, w), f(u, w), 1e-15);
   EXPECT_NEAR_MATRIX(from_table.nabla(u, w), f(u, w), 1e-15);
@@ -150,29 +150,29 @@ TEST(InvariantConnection, ConstructionFromTableAndBilinearMap) {
 }
 
 TEST(InvariantConnection, RejectsBadInput) {
-  using C = InvariantConnection<SO3>;
+  using C = connections::InvariantConnection<groups::SO3>;
   try {
-    C::from_table(Side::Left, Eigen::MatrixXd::Zero(3, 8));
+    C::from_table(groups::Side::Left, Eigen::MatrixXd::Zero(3, 8));
     ADD_FAILURE() << "wrong shape accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("has shape 3x8, expected 3x9"), std::string::npos) << e.what();
   }
   Eigen::MatrixXd nan_table = Eigen::MatrixXd::Zero(3, 9);
   nan_table(1, 4) = std::numeric_limits<double>::infinity();
-  EXPECT_THROW(C::from_table(Side::Right, nan_table), std::invalid_argument);
+  EXPECT_THROW(C::from_table(groups::Side::Right, nan_table), std::invalid_argument);
   auto not_bilinear = [](const Eigen::Vector3d& u, const Eigen::Vector3d& w) -> Eigen::Vector3d {
     return u.cross(w) + Eigen::Vector3d::Constant(u.squaredNorm() * w.norm());
   };
   try {
-    C::from_bilinear(Side::Left, not_bilinear);
+    C::from_bilinear(groups::Side::Left, not_bilinear);
     ADD_FAILURE() << "non-bilinear map accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("not bilinear"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(cartan_schouten<SO3>(std::nan("")), std::invalid_argument);
+  EXPECT_THROW(connections::cartan_schouten<groups::SO3>(std::nan("")), std::invalid_argument);
   const Eigen::Vector3d e1 = Eigen::Vector3d::UnitX(), e2 = Eigen::Vector3d::UnitY();
-  expect_invalid([&] { cartan_schouten_torsion<SO3>(INFINITY, e1, e2); }, "cartan_schouten_torsion: lambda = inf");
-  expect_invalid([&] { cartan_schouten_curvature<SO3>(std::nan(""), e1, e2, e1); }, "cartan_schouten_curvature: lambda");
+  expect_invalid([&] { connections::cartan_schouten_torsion<groups::SO3>(INFINITY, e1, e2); }, "cartan_schouten_torsion: lambda = inf");
+  expect_invalid([&] { connections::cartan_schouten_curvature<groups::SO3>(std::nan(""), e1, e2, e1); }, "cartan_schouten_curvature: lambda");
 }
 
 }  // namespace

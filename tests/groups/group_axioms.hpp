@@ -10,22 +10,22 @@
 namespace cartan::testing {
 
 /// Test points for a group: the identity, a point 1e-8 away, and seeded random points.
-template <LieGroup G>
-std::vector<TangentOf<G>> sample_tangents(double scale = 1.0, int count = 20) {
+template <groups::LieGroup G>
+std::vector<groups::TangentOf<G>> sample_tangents(double scale = 1.0, int count = 20) {
   std::mt19937 rng(kSeed);
-  std::vector<TangentOf<G>> out{TangentOf<G>::Zero(), TangentOf<G>::Constant(1e-8)};
+  std::vector<groups::TangentOf<G>> out{groups::TangentOf<G>::Zero(), groups::TangentOf<G>::Constant(1e-8)};
   for (int i = 0; i < count; ++i) out.push_back(random_tangent<G>(rng, scale));
   return out;
 }
 
-template <LieGroup G>
-typename G::MatrixRep matrix_of(const ElementOf<G>& g) {
+template <groups::LieGroup G>
+typename G::MatrixRep matrix_of(const groups::ElementOf<G>& g) {
   return G::matrix(g);
 }
 
 // Group axioms, checked through the faithful matrix representation (rounding: 1e-13 for
 // entries of size <= e^2 with a handful of flops).
-template <LieGroup G>
+template <groups::LieGroup G>
 void expect_group_axioms() {
   const auto points = sample_tangents<G>();
   for (std::size_t i = 0; i + 2 < points.size(); ++i) {
@@ -41,7 +41,7 @@ void expect_group_axioms() {
 
 // exp against Eigen's matrix exponential of hat(v); exp(log(g)) = g; log(exp(v)) = v inside
 // the injectivity radius (|v| <= sqrt(3) here).
-template <LieGroup G>
+template <groups::LieGroup G>
 void expect_exp_log() {
   for (const auto& v : sample_tangents<G>()) {
     const typename G::MatrixRep x = G::hat(v);
@@ -54,17 +54,17 @@ void expect_exp_log() {
 }
 
 // Ad_g v = vee(g hat(v) g^{-1}); Ad is a homomorphism; Ad_{exp u} = exp(ad_u).
-template <LieGroup G>
+template <groups::LieGroup G>
 void expect_adjoint() {
   const auto points = sample_tangents<G>();
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
     const auto g = G::exp(points[i]);
     const auto h = G::exp(points[i + 1]);
     const auto m = G::matrix(g);
-    const TangentOf<G> v = points[i + 1];
+    const groups::TangentOf<G> v = points[i + 1];
     EXPECT_NEAR_MATRIX(G::Ad(g) * v, G::vee(m * G::hat(v) * m.inverse()), 1e-12);
     EXPECT_NEAR_MATRIX(G::Ad(G::compose(g, h)), G::Ad(g) * G::Ad(h), 1e-12);
-    const AlgebraMatrixOf<G> ad = G::ad(points[i]);
+    const groups::AlgebraMatrixOf<G> ad = G::ad(points[i]);
     EXPECT_NEAR_MATRIX(G::Ad(g), ad.exp(), 1e-12);
   }
 }
@@ -72,44 +72,44 @@ void expect_adjoint() {
 // ad_u v = vee([hat u, hat v]); ad = d/dt Ad(exp(t u)) at t = 0 by central differences
 // (step 1e-5: truncation ~|u|^3 h^2 ~ 1e-10, rounding ~1e-16/h ~ 1e-11, so 1e-8 is safe);
 // Jacobi identity; ad* is the transpose of ad under the pairing mu . v.
-template <LieGroup G>
+template <groups::LieGroup G>
 void expect_ad_and_coad() {
   const auto points = sample_tangents<G>();
   std::mt19937 rng(kSeed + 1);
   for (std::size_t i = 0; i + 2 < points.size(); ++i) {
-    const TangentOf<G>& u = points[i];
-    const TangentOf<G>& v = points[i + 1];
-    const TangentOf<G>& w = points[i + 2];
+    const groups::TangentOf<G>& u = points[i];
+    const groups::TangentOf<G>& v = points[i + 1];
+    const groups::TangentOf<G>& w = points[i + 2];
     const auto hu = G::hat(u), hv = G::hat(v);
     EXPECT_NEAR_MATRIX(G::ad(u) * v, G::vee(hu * hv - hv * hu), 1e-14);
     const double h = 1e-5;
-    const AlgebraMatrixOf<G> fd = (G::Ad(G::exp(h * u)) - G::Ad(G::exp(-h * u))) / (2 * h);
+    const groups::AlgebraMatrixOf<G> fd = (G::Ad(G::exp(h * u)) - G::Ad(G::exp(-h * u))) / (2 * h);
     EXPECT_NEAR_MATRIX(fd, G::ad(u), 1e-8);
-    const TangentOf<G> jacobi = bracket<G>(u, bracket<G>(v, w)) + bracket<G>(v, bracket<G>(w, u)) +
-                                bracket<G>(w, bracket<G>(u, v));
+    const groups::TangentOf<G> jacobi = groups::bracket<G>(u, groups::bracket<G>(v, w)) + groups::bracket<G>(v, groups::bracket<G>(w, u)) +
+                                groups::bracket<G>(w, groups::bracket<G>(u, v));
     EXPECT_LE(jacobi.cwiseAbs().maxCoeff(), 1e-14);
     // ad* is the dual of ad under the pairing: <ad*_u mu, w> = <mu, [u, w]>, with the bracket
     // from the matrix commutator (independent of G::ad, of which coad is the transpose).
-    const CovectorOf<G> mu = random_tangent<G>(rng);
+    const groups::CovectorOf<G> mu = random_tangent<G>(rng);
     const auto hw = G::hat(w);
-    EXPECT_NEAR(coad<G>(u, mu).dot(w), mu.dot(G::vee(hu * hw - hw * hu)), 1e-13);
+    EXPECT_NEAR(groups::coad<G>(u, mu).dot(w), mu.dot(G::vee(hu * hw - hw * hu)), 1e-13);
   }
 }
 
 // d(L_g)_e v and d(R_g)_e v are the derivatives of e -> g exp(e v) and e -> exp(e v) g
 // (central differences, step 1e-6: error ~1e-11); trivialisation inverts translation;
 // trivialised covectors satisfy <d(L_g)^* alpha, v> = <alpha, d(L_g) v>.
-template <LieGroup G>
+template <groups::LieGroup G>
 void expect_translations() {
   const auto points = sample_tangents<G>();
   std::mt19937 rng(kSeed + 2);
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
     const auto g = G::exp(points[i]);
-    const TangentOf<G>& v = points[i + 1];
+    const groups::TangentOf<G>& v = points[i + 1];
     const double h = 1e-6;
-    const ElementOf<G> left_fd =
+    const groups::ElementOf<G> left_fd =
         (G::compose(g, G::exp(h * v)) - G::compose(g, G::exp(-h * v))) / (2 * h);
-    const ElementOf<G> right_fd =
+    const groups::ElementOf<G> right_fd =
         (G::compose(G::exp(h * v), g) - G::compose(G::exp(-h * v), g)) / (2 * h);
     EXPECT_NEAR_MATRIX(G::left_translate(g, v), left_fd, 1e-9);
     EXPECT_NEAR_MATRIX(G::right_translate(g, v), right_fd, 1e-9);
@@ -117,11 +117,11 @@ void expect_translations() {
     EXPECT_NEAR_MATRIX(G::right_trivialise(g, G::right_translate(g, v)), v, 1e-13);
     // g^{-1} (v g) = Ad_{g^{-1}} v
     EXPECT_NEAR_MATRIX(G::left_trivialise(g, G::right_translate(g, v)), G::Ad(G::inverse(g)) * v, 1e-12);
-    const ElementOf<G> alpha = G::left_translate(g, random_tangent<G>(rng)) + G::right_translate(g, v);
-    EXPECT_NEAR(left_trivialise_covector<G>(g, alpha).dot(v), ambient_pairing<G>(alpha, G::left_translate(g, v)),
+    const groups::ElementOf<G> alpha = G::left_translate(g, random_tangent<G>(rng)) + G::right_translate(g, v);
+    EXPECT_NEAR(groups::left_trivialise_covector<G>(g, alpha).dot(v), groups::ambient_pairing<G>(alpha, G::left_translate(g, v)),
                 1e-12);
-    EXPECT_NEAR(right_trivialise_covector<G>(g, alpha).dot(v),
-                ambient_pairing<G>(alpha, G::right_translate(g, v)), 1e-12);
+    EXPECT_NEAR(groups::right_trivialise_covector<G>(g, alpha).dot(v),
+                groups::ambient_pairing<G>(alpha, G::right_translate(g, v)), 1e-12);
   }
 }
 

@@ -8,11 +8,11 @@
 #include <string>
 #include <string_view>
 
-#include "cartan/heisenberg.hpp"
-#include "cartan/matrix_group.hpp"
-#include "cartan/se2.hpp"
-#include "cartan/se3.hpp"
-#include "cartan/so3.hpp"
+#include "cartan/groups/heisenberg.hpp"
+#include "cartan/groups/matrix_group.hpp"
+#include "cartan/groups/se2.hpp"
+#include "cartan/groups/se3.hpp"
+#include "cartan/groups/so3.hpp"
 #include "groups/group_axioms.hpp"  // sample_tangents
 #include "test_support.hpp"
 
@@ -28,7 +28,7 @@ double levi_civita(int i, int j, int k) { return (i - j) * (j - k) * (k - i) / 2
 // Structure constants and the projection vee.
 
 TEST(MatrixLieGroup, SO3GenericStructureConstantsAreThoseOfSo3) {
-  const auto& c = SO3Generic::structure_constants();  // c[i](k, j) = c_ij^k
+  const auto& c = groups::SO3Generic::structure_constants();  // c[i](k, j) = c_ij^k
   EXPECT_EQ(c[0](2, 1), 1.0);                          // [E1, E2] = E3
   EXPECT_EQ(c[1](0, 2), 1.0);                          // [E2, E3] = E1
   EXPECT_EQ(c[2](1, 0), 1.0);                          // [E3, E1] = E2
@@ -37,12 +37,12 @@ TEST(MatrixLieGroup, SO3GenericStructureConstantsAreThoseOfSo3) {
       for (int k = 0; k < 3; ++k) EXPECT_EQ(c[i](k, j), levi_civita(i, j, k)) << i << j << k;
     }
   }
-  EXPECT_NEAR_MATRIX(SO3Generic::gram(), 2 * Eigen::Matrix3d::Identity(), 0.0);
+  EXPECT_NEAR_MATRIX(groups::SO3Generic::gram(), 2 * Eigen::Matrix3d::Identity(), 0.0);
   std::mt19937 rng(kSeed);
   const V3 v = random_vector<V3>(rng, 2.0), w = random_vector<V3>(rng, 2.0);
-  EXPECT_NEAR_MATRIX(SO3Generic::hat(v), SO3::hat(v), 0.0);
-  EXPECT_NEAR_MATRIX(SO3Generic::hat(v) * w, v.cross(w), 1e-15);
-  EXPECT_NEAR_MATRIX(SO3Generic::ad(v), SO3::ad(v), 0.0);
+  EXPECT_NEAR_MATRIX(groups::SO3Generic::hat(v), groups::SO3::hat(v), 0.0);
+  EXPECT_NEAR_MATRIX(groups::SO3Generic::hat(v) * w, v.cross(w), 1e-15);
+  EXPECT_NEAR_MATRIX(groups::SO3Generic::ad(v), groups::SO3::ad(v), 0.0);
 }
 
 // Both vee's are the Frobenius projection onto the algebra, so they agree on any matrix, not
@@ -60,9 +60,9 @@ void expect_same_projection() {
 }
 
 TEST(MatrixLieGroup, VeeIsTheFrobeniusProjection) {
-  expect_same_projection<SO3, SO3Generic>();
-  expect_same_projection<SE3, SE3Generic>();
-  expect_same_projection<SE2, SE2Generic>();
+  expect_same_projection<groups::SO3, groups::SO3Generic>();
+  expect_same_projection<groups::SE3, groups::SE3Generic>();
+  expect_same_projection<groups::SE2, groups::SE2Generic>();
 }
 
 // A basis that is neither orthogonal nor normalised: {E1, E1 + E2, 2 E3} of so(3). vee must
@@ -72,13 +72,13 @@ struct SkewedSO3Basis {
   static constexpr int kMatrixSize = 3;
   static constexpr std::string_view name() { return "so3-skewed"; }
   static std::array<Eigen::Matrix3d, 3> basis() {
-    const auto e = SO3Basis::basis();
+    const auto e = groups::SO3Basis::basis();
     return {e[0], e[0] + e[1], 2 * e[2]};
   }
 };
 
 TEST(MatrixLieGroup, NonOrthonormalBasis) {
-  using G = MatrixLieGroup<SkewedSO3Basis>;
+  using G = groups::MatrixLieGroup<SkewedSO3Basis>;
   // [E1, E1 + E2] = E3 = (1/2)(2 E3), so c_12^3 = 1/2.
   EXPECT_NEAR(G::structure_constants()[0](2, 1), 0.5, 1e-15);
   std::mt19937 rng(kSeed);
@@ -88,7 +88,7 @@ TEST(MatrixLieGroup, NonOrthonormalBasis) {
     const Eigen::Matrix3d hu = G::hat(u), hv = G::hat(v);
     EXPECT_NEAR_MATRIX(G::ad(u) * v, G::vee(hu * hv - hv * hu), 1e-15);
     // Same group as SO(3): exp agrees with Rodrigues on the same algebra element.
-    EXPECT_NEAR_MATRIX(G::exp(v), SO3::exp(SO3::vee(hv)), 1e-15);
+    EXPECT_NEAR_MATRIX(G::exp(v), groups::SO3::exp(groups::SO3::vee(hv)), 1e-15);
   }
 }
 
@@ -101,19 +101,19 @@ struct HeisenbergBasis {
   static constexpr std::string_view name() { return "heisenberg-generic"; }
   static std::array<Eigen::Matrix3d, 3> basis() {
     std::array<Eigen::Matrix3d, 3> e;
-    for (int i = 0; i < 3; ++i) e[i] = Heisenberg::hat(V3::Unit(i));
+    for (int i = 0; i < 3; ++i) e[i] = groups::Heisenberg::hat(V3::Unit(i));
     return e;
   }
 };
 
 TEST(MatrixLieGroup, UserDefinedHeisenbergGroupMatchesHeisenberg) {
-  using G = MatrixLieGroup<HeisenbergBasis>;
-  for (const V3& v : sample_tangents<Heisenberg>()) {
-    const Eigen::Matrix3d g = Heisenberg::matrix(Heisenberg::exp(v));
+  using G = groups::MatrixLieGroup<HeisenbergBasis>;
+  for (const V3& v : sample_tangents<groups::Heisenberg>()) {
+    const Eigen::Matrix3d g = groups::Heisenberg::matrix(groups::Heisenberg::exp(v));
     EXPECT_NEAR_MATRIX(G::exp(v), g, 1e-15);
     EXPECT_NEAR_MATRIX(G::log(g), v, 1e-14);
-    EXPECT_NEAR_MATRIX(G::Ad(g), Heisenberg::Ad(Heisenberg::exp(v)), 1e-15);
-    EXPECT_NEAR_MATRIX(G::ad(v), Heisenberg::ad(v), 0.0);
+    EXPECT_NEAR_MATRIX(G::Ad(g), groups::Heisenberg::Ad(groups::Heisenberg::exp(v)), 1e-15);
+    EXPECT_NEAR_MATRIX(G::ad(v), groups::Heisenberg::ad(v), 0.0);
   }
 }
 
@@ -139,16 +139,16 @@ void expect_closed_form_matches_generic(double scale) {
 }
 
 TEST(MatrixLieGroup, SE3ClosedFormMatchesGeneric) {
-  expect_closed_form_matches_generic<SE3, SE3Generic>(1.0);
-  expect_closed_form_matches_generic<SE3, SE3Generic>(1.7);  // angles up to 2.94
+  expect_closed_form_matches_generic<groups::SE3, groups::SE3Generic>(1.0);
+  expect_closed_form_matches_generic<groups::SE3, groups::SE3Generic>(1.7);  // angles up to 2.94
 }
 
 TEST(MatrixLieGroup, SE2ClosedFormMatchesGeneric) {
-  expect_closed_form_matches_generic<SE2, SE2Generic>(1.0);
-  expect_closed_form_matches_generic<SE2, SE2Generic>(3.0);  // |theta| up to 3
+  expect_closed_form_matches_generic<groups::SE2, groups::SE2Generic>(1.0);
+  expect_closed_form_matches_generic<groups::SE2, groups::SE2Generic>(3.0);  // |theta| up to 3
 }
 
-TEST(MatrixLieGroup, SO3ClosedFormMatchesGeneric) { expect_closed_form_matches_generic<SO3, SO3Generic>(1.0); }
+TEST(MatrixLieGroup, SO3ClosedFormMatchesGeneric) { expect_closed_form_matches_generic<groups::SO3, groups::SO3Generic>(1.0); }
 
 // On both sides of SO3::kSmallAngle, where exp switches from Taylor series to sin/cos: the
 // closed forms must stay as accurate as the generic ones (a 1 - cos t evaluated directly there
@@ -156,15 +156,15 @@ TEST(MatrixLieGroup, SO3ClosedFormMatchesGeneric) { expect_closed_form_matches_g
 TEST(MatrixLieGroup, ClosedFormsAreAccurateAtTheSeriesThreshold) {
   std::mt19937 rng(kSeed);
   for (double factor : {0.5, 0.999999, 1.000001, 2.0, 10.0}) {
-    const double angle = SO3::kSmallAngle * factor;
+    const double angle = groups::SO3::kSmallAngle * factor;
     const V3 axis = random_vector<V3>(rng, 1.0).normalized();
-    SE3::Tangent v;
+    groups::SE3::Tangent v;
     v << random_vector<V3>(rng, 2.0), angle * axis;
-    EXPECT_NEAR_MATRIX(SE3::exp(v), SE3Generic::exp(v), 1e-15) << "angle " << angle;
-    EXPECT_NEAR_MATRIX(SE3::log(SE3::exp(v)), v, 2e-15) << "angle " << angle;
+    EXPECT_NEAR_MATRIX(groups::SE3::exp(v), groups::SE3Generic::exp(v), 1e-15) << "angle " << angle;
+    EXPECT_NEAR_MATRIX(groups::SE3::log(groups::SE3::exp(v)), v, 2e-15) << "angle " << angle;
     const V3 w(v[0], v[1], angle);
-    EXPECT_NEAR_MATRIX(SE2::exp(w), SE2Generic::exp(w), 1e-15) << "angle " << angle;
-    EXPECT_NEAR_MATRIX(SE2::log(SE2::exp(w)), w, 2e-15) << "angle " << angle;
+    EXPECT_NEAR_MATRIX(groups::SE2::exp(w), groups::SE2Generic::exp(w), 1e-15) << "angle " << angle;
+    EXPECT_NEAR_MATRIX(groups::SE2::log(groups::SE2::exp(w)), w, 2e-15) << "angle " << angle;
   }
 }
 
@@ -179,19 +179,19 @@ TEST(SO3, LeftJacobianIsDerivativeOfExp) {
     // d/ds exp(v + s w) at s = 0 = hat(J(v) w) exp(v); central differences, step 1e-6:
     // truncation ~1e-12, rounding ~1e-16 / 1e-6 = 1e-10.
     const double h = 1e-6;
-    const Eigen::Matrix3d derivative = (SO3::exp(v + h * w) - SO3::exp(v - h * w)) / (2 * h);
-    EXPECT_NEAR_MATRIX(SO3::vee(derivative * SO3::exp(v).transpose()), SO3::left_jacobian(v) * w, 1e-9)
+    const Eigen::Matrix3d derivative = (groups::SO3::exp(v + h * w) - groups::SO3::exp(v - h * w)) / (2 * h);
+    EXPECT_NEAR_MATRIX(groups::SO3::vee(derivative * groups::SO3::exp(v).transpose()), groups::SO3::left_jacobian(v) * w, 1e-9)
         << "angle " << angle;
   }
 }
 
 TEST(SO3, LeftJacobianInverse) {
   std::mt19937 rng(kSeed);
-  const double threshold = SO3::kSmallAngle;
+  const double threshold = groups::SO3::kSmallAngle;
   for (double angle : {0.0, 1e-12, 1e-6, threshold * 0.999999, threshold * 1.000001, 1e-2, 1.0, 3.0,
                        std::numbers::pi - 1e-9, std::numbers::pi}) {
     const V3 v = random_vector<V3>(rng, 1.0).normalized() * angle;
-    EXPECT_NEAR_MATRIX(SO3::left_jacobian_inverse(v) * SO3::left_jacobian(v), Eigen::Matrix3d::Identity(), 1e-15)
+    EXPECT_NEAR_MATRIX(groups::SO3::left_jacobian_inverse(v) * groups::SO3::left_jacobian(v), Eigen::Matrix3d::Identity(), 1e-15)
         << "angle " << angle;
   }
 }
@@ -218,13 +218,13 @@ TEST(SE3, LogNearPiIsAccurate) {
       const LongMatrix jacobian =
           LongMatrix::Identity() + (1 - std::cos(t)) / t * k + (t - std::sin(t)) / t * k * k;
       const Eigen::Matrix<long double, 3, 1> translation = jacobian * rho.cast<long double>();
-      const SE3::Element g = SE3::from_rotation_translation(r.cast<double>(), translation.cast<double>());
+      const groups::SE3::Element g = groups::SE3::from_rotation_translation(r.cast<double>(), translation.cast<double>());
 
-      const SE3::Tangent got = SE3::log(g);
+      const groups::SE3::Tangent got = groups::SE3::log(g);
       const V3 omega_expected = n * static_cast<double>(t);
-      EXPECT_LE((SE3::omega(got) - omega_expected).norm() / omega_expected.norm(), 1e-12) << "gap " << gap;
-      EXPECT_LE((SE3::rho(got) - rho).norm() / rho.norm(), 1e-12) << "gap " << gap;
-      EXPECT_NEAR_MATRIX(SE3::exp(got), g, 1e-14) << "gap " << gap;
+      EXPECT_LE((groups::SE3::omega(got) - omega_expected).norm() / omega_expected.norm(), 1e-12) << "gap " << gap;
+      EXPECT_LE((groups::SE3::rho(got) - rho).norm() / rho.norm(), 1e-12) << "gap " << gap;
+      EXPECT_NEAR_MATRIX(groups::SE3::exp(got), g, 1e-14) << "gap " << gap;
     }
   }
 }
@@ -233,23 +233,23 @@ TEST(SE3, LogNearPiIsAccurate) {
 TEST(SE3, LogAtPiReexponentiates) {
   std::mt19937 rng(kSeed);
   for (int trial = 0; trial < 5; ++trial) {
-    SE3::Tangent v;
+    groups::SE3::Tangent v;
     v << random_vector<V3>(rng, 2.0), random_vector<V3>(rng, 1.0).normalized() * std::numbers::pi;
-    const SE3::Element g = SE3::exp(v);
-    const SE3::Tangent got = SE3::log(g);
-    EXPECT_NEAR(SE3::omega(got).norm(), std::numbers::pi, 1e-12);
-    EXPECT_NEAR_MATRIX(SE3::exp(got), g, 1e-13);
+    const groups::SE3::Element g = groups::SE3::exp(v);
+    const groups::SE3::Tangent got = groups::SE3::log(g);
+    EXPECT_NEAR(groups::SE3::omega(got).norm(), std::numbers::pi, 1e-12);
+    EXPECT_NEAR_MATRIX(groups::SE3::exp(got), g, 1e-13);
   }
 }
 
 TEST(SE2, LogNearPi) {
   for (double theta : {std::numbers::pi - 1e-6, std::numbers::pi - 1e-12, -std::numbers::pi + 1e-9}) {
     const V3 v(0.7, -1.3, theta);
-    EXPECT_NEAR_MATRIX(SE2::log(SE2::exp(v)), v, 1e-14) << "theta " << theta;
+    EXPECT_NEAR_MATRIX(groups::SE2::log(groups::SE2::exp(v)), v, 1e-14) << "theta " << theta;
   }
   // Exactly pi: theta comes back as +pi and the round trip holds.
   const V3 v(0.7, -1.3, std::numbers::pi);
-  EXPECT_NEAR_MATRIX(SE2::exp(SE2::log(SE2::exp(v))), SE2::exp(v), 1e-14);
+  EXPECT_NEAR_MATRIX(groups::SE2::exp(groups::SE2::log(groups::SE2::exp(v))), groups::SE2::exp(v), 1e-14);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -261,7 +261,7 @@ struct NotClosedBasis {
   static constexpr int kMatrixSize = 3;
   static constexpr std::string_view name() { return "so3-without-E3"; }
   static std::array<Eigen::Matrix3d, 2> basis() {
-    const auto e = SO3Basis::basis();
+    const auto e = groups::SO3Basis::basis();
     return {e[0], e[1]};
   }
 };
@@ -289,7 +289,7 @@ struct NonFiniteBasis {
 };
 
 TEST(MatrixLieGroup, RejectsBasisNotClosedUnderTheBracket) {
-  using G = MatrixLieGroup<NotClosedBasis>;
+  using G = groups::MatrixLieGroup<NotClosedBasis>;
   expect_invalid([] { G::check_basis(); },
                  {"MatrixLieGroup<so3-without-E3>", "[E1, E2] = [", "not in the span"});
   // Every use of the basis reports it, not only the first.
@@ -299,13 +299,13 @@ TEST(MatrixLieGroup, RejectsBasisNotClosedUnderTheBracket) {
 }
 
 TEST(MatrixLieGroup, RejectsLinearlyDependentBasis) {
-  expect_invalid([] { MatrixLieGroup<DependentBasis>::check_basis(); },
+  expect_invalid([] { groups::MatrixLieGroup<DependentBasis>::check_basis(); },
                  {"MatrixLieGroup<dependent>", "Gram matrix", "[2, 4; 4, 8]",
                                       "not linearly independent"});
 }
 
 TEST(MatrixLieGroup, RejectsNonFiniteBasis) {
-  expect_invalid([] { MatrixLieGroup<NonFiniteBasis>::check_basis(); },
+  expect_invalid([] { groups::MatrixLieGroup<NonFiniteBasis>::check_basis(); },
                  {"MatrixLieGroup<non-finite>", "E1 = [0, nan", "non-finite"});
 }
 
@@ -315,58 +315,58 @@ TEST(MatrixLieGroup, RejectsNonFiniteBasis) {
 TEST(MatrixLieGroup, ValidateAcceptsGroupElements) {
   std::mt19937 rng(kSeed);
   for (int trial = 0; trial < 10; ++trial) {
-    const SE3::Element g3 = random_element<SE3>(rng);
-    EXPECT_NO_THROW(SE3::validate(g3, "g"));
-    EXPECT_NO_THROW(SE3Generic::validate(g3, "g"));
-    const SE2::Element g2 = random_element<SE2>(rng);
-    EXPECT_NO_THROW(SE2::validate(g2, "g"));
-    EXPECT_NO_THROW(SE2Generic::validate(g2, "g"));
-    EXPECT_NO_THROW(SO3Generic::validate(random_element<SO3>(rng), "g"));
+    const groups::SE3::Element g3 = random_element<groups::SE3>(rng);
+    EXPECT_NO_THROW(groups::SE3::validate(g3, "g"));
+    EXPECT_NO_THROW(groups::SE3Generic::validate(g3, "g"));
+    const groups::SE2::Element g2 = random_element<groups::SE2>(rng);
+    EXPECT_NO_THROW(groups::SE2::validate(g2, "g"));
+    EXPECT_NO_THROW(groups::SE2Generic::validate(g2, "g"));
+    EXPECT_NO_THROW(groups::SO3Generic::validate(random_element<groups::SO3>(rng), "g"));
   }
 }
 
 TEST(SE3, ValidateRejectsNonGroupMatrices) {
-  const SE3::Element g = SE3::exp((SE3::Tangent() << 1, 2, 3, 0.3, -0.2, 0.1).finished());
+  const groups::SE3::Element g = groups::SE3::exp((groups::SE3::Tangent() << 1, 2, 3, 0.3, -0.2, 0.1).finished());
 
-  SE3::Element bottom_row = g;
+  groups::SE3::Element bottom_row = g;
   bottom_row(3, 0) = 0.5;
-  expect_invalid([&] { SE3::validate(bottom_row, "g0"); },
+  expect_invalid([&] { groups::SE3::validate(bottom_row, "g0"); },
                  {"SE3: g0 = [", "0.5, 0, 0, 1]", "bottom row [0.5, 0, 0, 1], not [0, 0, 0, 1]"});
-  expect_invalid([&] { SE3Generic::validate(bottom_row, "g0"); },
+  expect_invalid([&] { groups::SE3Generic::validate(bottom_row, "g0"); },
                  {"MatrixLieGroup<se3-generic>: g0 = [", "0.5, 0, 0, 1]", "not in the group"});
 
-  SE3::Element scaled = g;
+  groups::SE3::Element scaled = g;
   scaled.topLeftCorner<3, 3>() *= 1.01;
-  expect_invalid([&] { SE3::validate(scaled, "gT"); },
+  expect_invalid([&] { groups::SE3::validate(scaled, "gT"); },
                  {"SE3: gT = [", "invalid rotation block", "gT rotation block = [", "not orthogonal"});
-  expect_invalid([&] { SE3Generic::validate(scaled, "gT"); },
+  expect_invalid([&] { groups::SE3Generic::validate(scaled, "gT"); },
                  {"MatrixLieGroup<se3-generic>: gT = [", "not in the group"});
 
-  SE3::Element reflected = g;
+  groups::SE3::Element reflected = g;
   reflected.row(0) *= -1;
-  expect_invalid([&] { SE3::validate(reflected, "g"); }, {"SE3: g = [", "has determinant -", "(a reflection?)"});
+  expect_invalid([&] { groups::SE3::validate(reflected, "g"); }, {"SE3: g = [", "has determinant -", "(a reflection?)"});
 
-  SE3::Element nan = g;
+  groups::SE3::Element nan = g;
   nan(1, 3) = std::nan("");
-  expect_invalid([&] { SE3::validate(nan, "g"); }, {"SE3: g = [", "non-finite"});
-  expect_invalid([&] { SE3Generic::validate(nan, "g"); }, {"non-finite"});
+  expect_invalid([&] { groups::SE3::validate(nan, "g"); }, {"SE3: g = [", "non-finite"});
+  expect_invalid([&] { groups::SE3Generic::validate(nan, "g"); }, {"non-finite"});
 }
 
 TEST(SE2, ValidateRejectsNonGroupMatrices) {
-  const SE2::Element g = SE2::exp(V3(1.0, -2.0, 0.7));
+  const groups::SE2::Element g = groups::SE2::exp(V3(1.0, -2.0, 0.7));
 
-  SE2::Element bottom_row = g;
+  groups::SE2::Element bottom_row = g;
   bottom_row(2, 1) = -0.25;
-  expect_invalid([&] { SE2::validate(bottom_row, "pose"); },
+  expect_invalid([&] { groups::SE2::validate(bottom_row, "pose"); },
                  {"SE2: pose = [", "bottom row [0, -0.25, 1], not [0, 0, 1]"});
-  expect_invalid([&] { SE2Generic::validate(bottom_row, "pose"); },
+  expect_invalid([&] { groups::SE2Generic::validate(bottom_row, "pose"); },
                  {"MatrixLieGroup<se2-generic>: pose = [", "not in the group"});
 
-  SE2::Element sheared = g;
+  groups::SE2::Element sheared = g;
   sheared(0, 1) += 0.1;
-  expect_invalid([&] { SE2::validate(sheared, "pose"); },
+  expect_invalid([&] { groups::SE2::validate(sheared, "pose"); },
                  {"SE2: pose = [", "invalid rotation block", "not orthogonal"});
-  expect_invalid([&] { SE2Generic::validate(sheared, "pose"); }, {"not in the group"});
+  expect_invalid([&] { groups::SE2Generic::validate(sheared, "pose"); }, {"not in the group"});
 }
 
 }  // namespace

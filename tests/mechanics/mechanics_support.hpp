@@ -8,17 +8,17 @@
 #include <string>
 #include <vector>
 
-#include "cartan/lie_group_integrator.hpp"
+#include "cartan/mechanics/lie_group_integrator.hpp"
 #include "test_support.hpp"
 
 namespace cartan::testing {
 
 /// zeta_i = d/de f(exp(e E_i) g), the right-trivialised derivative of f at g (central differences).
-template <LieGroup G, class F>
-CovectorOf<G> right_gradient_fd(const F& f, const ElementOf<G>& g, double step = 1e-6) {
-  CovectorOf<G> out;
+template <groups::LieGroup G, class F>
+groups::CovectorOf<G> right_gradient_fd(const F& f, const groups::ElementOf<G>& g, double step = 1e-6) {
+  groups::CovectorOf<G> out;
   for (int i = 0; i < G::kDim; ++i) {
-    const TangentOf<G> e = TangentOf<G>::Unit(i) * step;
+    const groups::TangentOf<G> e = groups::TangentOf<G>::Unit(i) * step;
     out[i] = (f(G::compose(G::exp(e), g)) - f(G::compose(G::exp(-e), g))) / (2 * step);
   }
   return out;
@@ -36,8 +36,8 @@ Vec vector_gradient_fd(const F& f, const Vec& x, double step = 1e-6) {
 }
 
 /// max_k |q(k) - q(0)| over the nodes of a trajectory, for a scalar quantity q of node k.
-template <LieGroup G>
-double max_drift(const Trajectory<G>& trajectory, const std::function<double(std::size_t)>& quantity) {
+template <groups::LieGroup G>
+double max_drift(const mechanics::Trajectory<G>& trajectory, const std::function<double(std::size_t)>& quantity) {
   const double q0 = quantity(0);
   double drift = 0;
   for (std::size_t k = 1; k < trajectory.t.size(); ++k) drift = std::max(drift, std::abs(quantity(k) - q0));
@@ -45,15 +45,15 @@ double max_drift(const Trajectory<G>& trajectory, const std::function<double(std
 }
 
 /// max_k |a.g[k] - b.g[k]| (entrywise) over two trajectories on the same grid.
-template <LieGroup G>
-double max_group_difference(const Trajectory<G>& a, const Trajectory<G>& b) {
+template <groups::LieGroup G>
+double max_group_difference(const mechanics::Trajectory<G>& a, const mechanics::Trajectory<G>& b) {
   double diff = 0;
   for (std::size_t k = 0; k < a.g.size(); ++k) diff = std::max(diff, max_abs_diff(a.g[k], b.g[k]));
   return diff;
 }
 
-template <LieGroup G>
-double max_momentum_difference(const Trajectory<G>& a, const Trajectory<G>& b) {
+template <groups::LieGroup G>
+double max_momentum_difference(const mechanics::Trajectory<G>& a, const mechanics::Trajectory<G>& b) {
   double diff = 0;
   for (std::size_t k = 0; k < a.mu.size(); ++k) diff = std::max(diff, max_abs_diff(a.mu[k], b.mu[k]));
   return diff;

@@ -3,11 +3,11 @@
 // terms cancel for any left- or right-invariant connection (thm-EP, remark in "Right formalism").
 #include <gtest/gtest.h>
 
-#include "cartan/cartan_schouten.hpp"
-#include "cartan/euler_lagrange.hpp"
-#include "cartan/euler_poincare.hpp"
-#include "cartan/models/heisenberg_oscillator.hpp"
-#include "cartan/models/rigid_body.hpp"
+#include "cartan/connections/cartan_schouten.hpp"
+#include "cartan/mechanics/euler_lagrange.hpp"
+#include "cartan/mechanics/euler_poincare.hpp"
+#include "cartan/mechanics/heisenberg_oscillator.hpp"
+#include "cartan/mechanics/rigid_body.hpp"
 #include "mechanics/mechanics_support.hpp"
 
 namespace cartan::testing {
@@ -17,20 +17,20 @@ const Eigen::Matrix3d kInertia = (Eigen::Matrix3d() << 2.0, 0.3, 0.1, 0.3, 3.0, 
 
 /// A non-Cartan bilinear map with a symmetric part: 0.3 [u, w] + (u . A w) c + (u . w) d with A
 /// symmetric, plus a non-symmetric, non-bracket part u1 w3 e.
-template <LieGroup G>
-InvariantConnection<G> non_cartan_connection(Side side) {
+template <groups::LieGroup G>
+connections::InvariantConnection<G> non_cartan_connection(groups::Side side) {
   const Eigen::Matrix3d a = (Eigen::Matrix3d() << 1.0, 0.4, -0.2, 0.4, -0.7, 0.5, -0.2, 0.5, 0.9).finished();
-  const TangentOf<G> c(0.5, -1.0, 0.8), d(-0.6, 0.3, 1.1), e(0.2, 0.9, -0.4);
-  return InvariantConnection<G>::from_bilinear(side, [&](const TangentOf<G>& u, const TangentOf<G>& w) {
-    return TangentOf<G>(0.3 * bracket<G>(u, w) + u.dot(a * w) * c + u.dot(w) * d + u[0] * w[2] * e);
+  const groups::TangentOf<G> c(0.5, -1.0, 0.8), d(-0.6, 0.3, 1.1), e(0.2, 0.9, -0.4);
+  return connections::InvariantConnection<G>::from_bilinear(side, [&](const groups::TangentOf<G>& u, const groups::TangentOf<G>& w) {
+    return groups::TangentOf<G>(0.3 * groups::bracket<G>(u, w) + u.dot(a * w) * c + u.dot(w) * d + u[0] * w[2] * e);
   });
 }
 
-template <LieGroup G>
-std::vector<std::pair<std::string, InvariantConnection<G>>> connections_on(Side side) {
-  std::vector<std::pair<std::string, InvariantConnection<G>>> out;
+template <groups::LieGroup G>
+std::vector<std::pair<std::string, connections::InvariantConnection<G>>> connections_on(groups::Side side) {
+  std::vector<std::pair<std::string, connections::InvariantConnection<G>>> out;
   for (double lambda : {0.0, 0.5, 1.0}) {
-    out.emplace_back("Cartan-Schouten lambda " + std::to_string(lambda), cartan_schouten<G>(lambda, side));
+    out.emplace_back("Cartan-Schouten lambda " + std::to_string(lambda), connections::cartan_schouten<G>(lambda, side));
   }
   out.emplace_back("non-Cartan", non_cartan_connection<G>(side));
   return out;
@@ -42,12 +42,12 @@ std::vector<std::pair<std::string, InvariantConnection<G>>> connections_on(Side 
 // Over 400 steps of T = 10 these errors add up (and are carried by the flow, which is at most
 // mildly expanding here) to at most 2e-14 (measured; exactly 0 for lambda = 0 and 1, whose
 // terms cancel bit for bit); 1e-11 leaves room for other compilers and flags.
-template <LieGroup G, ReducedLagrangian<G> L>
-void expect_connection_independence(const std::string& model, const L& l, Side side, const ElementOf<G>& g0,
-                                    const TangentOf<G>& v0) {
-  const auto reference = euler_poincare<G>(side, l, g0, v0, 10.0, 400);
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+void expect_connection_independence(const std::string& model, const L& l, groups::Side side, const groups::ElementOf<G>& g0,
+                                    const groups::TangentOf<G>& v0) {
+  const auto reference = mechanics::euler_poincare<G>(side, l, g0, v0, 10.0, 400);
   for (const auto& [name, connection] : connections_on<G>(side)) {
-    const auto tr = euler_lagrange<G>(connection, l, g0, v0, 10.0, 400);
+    const auto tr = mechanics::euler_lagrange<G>(connection, l, g0, v0, 10.0, 400);
     const double dg = max_group_difference(reference, tr), dmu = max_momentum_difference(reference, tr);
     std::cout << "[ measured ] " << model << ", " << to_string(side) << ", " << name << ": max|dg| = " << dg
               << ", max|dmu| = " << dmu << '\n';
@@ -57,40 +57,40 @@ void expect_connection_independence(const std::string& model, const L& l, Side s
 }
 
 TEST(EulerLagrange, ConnectionTermsCancelOnSO3) {
-  const SO3::Element g0 = SO3::exp(SO3::Tangent(0.3, -0.5, 0.4));
-  const SO3::Tangent v0(0.9, -0.6, 0.7);
-  const RigidBody body(kInertia);
-  const SO3Oscillator oscillator(kInertia);
-  expect_connection_independence<SO3>("free body", body, Side::Left, g0, v0);
-  expect_connection_independence<SO3>("free body", SpatialRigidBody(body), Side::Right, g0, SO3::Tangent(g0 * v0));
-  expect_connection_independence<SO3>("SO(3) oscillator", oscillator, Side::Left, g0, v0);
-  expect_connection_independence<SO3>("SO(3) oscillator", right_reduced_lagrangian<SO3>(oscillator), Side::Right,
-                                      g0, SO3::Tangent(g0 * v0));
+  const groups::SO3::Element g0 = groups::SO3::exp(groups::SO3::Tangent(0.3, -0.5, 0.4));
+  const groups::SO3::Tangent v0(0.9, -0.6, 0.7);
+  const mechanics::RigidBody body(kInertia);
+  const mechanics::SO3Oscillator oscillator(kInertia);
+  expect_connection_independence<groups::SO3>("free body", body, groups::Side::Left, g0, v0);
+  expect_connection_independence<groups::SO3>("free body", mechanics::SpatialRigidBody(body), groups::Side::Right, g0, groups::SO3::Tangent(g0 * v0));
+  expect_connection_independence<groups::SO3>("SO(3) oscillator", oscillator, groups::Side::Left, g0, v0);
+  expect_connection_independence<groups::SO3>("SO(3) oscillator", mechanics::right_reduced_lagrangian<groups::SO3>(oscillator), groups::Side::Right,
+                                      g0, groups::SO3::Tangent(g0 * v0));
 }
 
 TEST(EulerLagrange, ConnectionTermsCancelOnH3) {
-  const Heisenberg::Element g0(0.3, -0.5, 0.2);
-  const Heisenberg::Tangent v0(0.4, 0.7, -0.3);
-  const H3Oscillator oscillator = h3_oscillator();
-  expect_connection_independence<Heisenberg>("H3 oscillator", oscillator, Side::Left, g0, v0);
-  expect_connection_independence<Heisenberg>("H3 oscillator", right_reduced_lagrangian<Heisenberg>(oscillator),
-                                             Side::Right, g0, Heisenberg::Tangent(Heisenberg::Ad(g0) * v0));
+  const groups::Heisenberg::Element g0(0.3, -0.5, 0.2);
+  const groups::Heisenberg::Tangent v0(0.4, 0.7, -0.3);
+  const mechanics::H3Oscillator oscillator = mechanics::h3_oscillator();
+  expect_connection_independence<groups::Heisenberg>("H3 oscillator", oscillator, groups::Side::Left, g0, v0);
+  expect_connection_independence<groups::Heisenberg>("H3 oscillator", mechanics::right_reduced_lagrangian<groups::Heisenberg>(oscillator),
+                                             groups::Side::Right, g0, groups::Heisenberg::Tangent(groups::Heisenberg::Ad(g0) * v0));
 }
 
 // The cancellation is not trivial: for the non-Cartan map every term is O(1) on its own, and
 // they combine to the EP rate +-ad*_v mu + zeta only in the sum (to rounding, 1e-14).
 TEST(EulerLagrange, TermsAreLargeButSumToTheEulerPoincareRate) {
   std::mt19937 rng(kSeed + 40);
-  for (Side side : {Side::Left, Side::Right}) {
-    const auto connection = non_cartan_connection<SO3>(side);
+  for (groups::Side side : {groups::Side::Left, groups::Side::Right}) {
+    const auto connection = non_cartan_connection<groups::SO3>(side);
     for (int trial = 0; trial < 5; ++trial) {
-      const SO3::Tangent v = random_tangent<SO3>(rng, 2.0), mu = random_tangent<SO3>(rng, 2.0),
-                         zeta = random_tangent<SO3>(rng);
-      const auto terms = euler_lagrange_terms<SO3>(connection, v, mu, zeta);
+      const groups::SO3::Tangent v = random_tangent<groups::SO3>(rng, 2.0), mu = random_tangent<groups::SO3>(rng, 2.0),
+                         zeta = random_tangent<groups::SO3>(rng);
+      const auto terms = mechanics::euler_lagrange_terms<groups::SO3>(connection, v, mu, zeta);
       EXPECT_GT(terms.covariant.norm(), 0.05);
       EXPECT_GT(terms.torsion.norm(), 0.05);
       EXPECT_GT((terms.horizontal - zeta).norm(), 0.05);
-      EXPECT_NEAR_MATRIX(terms.momentum_rate(), coadjoint_momentum_rate<SO3>(side, v, mu, zeta), 1e-13);
+      EXPECT_NEAR_MATRIX(terms.momentum_rate(), mechanics::coadjoint_momentum_rate<groups::SO3>(side, v, mu, zeta), 1e-13);
     }
   }
 }

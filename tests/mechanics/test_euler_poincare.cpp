@@ -3,18 +3,18 @@
 // Lagrangian/Hamiltonian agreement, input validation.
 #include <gtest/gtest.h>
 
-#include "cartan/euler_poincare.hpp"
-#include "cartan/lie_poisson.hpp"
-#include "cartan/models/heisenberg_oscillator.hpp"
-#include "cartan/models/rigid_body.hpp"
+#include "cartan/mechanics/euler_poincare.hpp"
+#include "cartan/mechanics/lie_poisson.hpp"
+#include "cartan/mechanics/heisenberg_oscillator.hpp"
+#include "cartan/mechanics/rigid_body.hpp"
 #include "mechanics/mechanics_support.hpp"
 
 namespace cartan::testing {
 namespace {
 
 const Eigen::Matrix3d kInertia = (Eigen::Matrix3d() << 2.0, 0.3, 0.1, 0.3, 3.0, -0.2, 0.1, -0.2, 4.0).finished();
-const SO3::Element kG0 = SO3::exp(SO3::Tangent(0.3, -0.5, 0.4));
-const SO3::Tangent kV0(0.9, -0.6, 0.7);
+const groups::SO3::Element kG0 = groups::SO3::exp(groups::SO3::Tangent(0.3, -0.5, 0.4));
+const groups::SO3::Tangent kV0(0.9, -0.6, 0.7);
 constexpr double kT = 10.0;
 
 // RKMK4 is order 4: the drift of a conserved quantity falls by 2^4 per halving of h. The
@@ -27,10 +27,10 @@ void expect_order_four(const std::string& what, const std::vector<double>& error
 }
 
 TEST(EulerPoincare, FreeRigidBodyConservesEnergyAndCasimirAtOrderFour) {
-  const RigidBody body(kInertia);
+  const mechanics::RigidBody body(kInertia);
   std::vector<double> energy_drifts, casimir_drifts;
   for (int steps : {50, 100, 200, 400}) {
-    const auto tr = euler_poincare<SO3>(Side::Left, body, kG0, kV0, kT, steps);
+    const auto tr = mechanics::euler_poincare<groups::SO3>(groups::Side::Left, body, kG0, kV0, kT, steps);
     energy_drifts.push_back(max_drift(tr, [&](std::size_t k) { return 0.5 * tr.v[k].dot(kInertia * tr.v[k]); }));
     casimir_drifts.push_back(max_drift(tr, [&](std::size_t k) { return tr.mu[k].norm(); }));
     double orthogonality = 0;
@@ -53,17 +53,17 @@ TEST(EulerPoincare, FreeRigidBodyConservesEnergyAndCasimirAtOrderFour) {
 TEST(EulerPoincare, AxisymmetricBodyMatchesClosedForm) {
   const double i1 = 2.0, i3 = 3.5;
   const Eigen::Matrix3d inertia = Eigen::Vector3d(i1, i1, i3).asDiagonal();
-  const RigidBody body(inertia);
+  const mechanics::RigidBody body(inertia);
   const double omega = (i3 - i1) / i1 * kV0[2];
-  const SO3::Tangent pi = kG0 * inertia * kV0;
+  const groups::SO3::Tangent pi = kG0 * inertia * kV0;
   std::vector<double> errors;
   for (int steps : {50, 100, 200, 400}) {
-    const auto tr = euler_poincare<SO3>(Side::Left, body, kG0, kV0, kT, steps);
+    const auto tr = mechanics::euler_poincare<groups::SO3>(groups::Side::Left, body, kG0, kV0, kT, steps);
     double error = 0;
     for (std::size_t k = 0; k < tr.t.size(); ++k) {
       const double t = tr.t[k];
-      const SO3::Tangent v_exact = SO3::exp(SO3::Tangent(0, 0, omega * t)) * kV0;
-      const SO3::Element g_exact = SO3::exp(pi * t / i1) * kG0 * SO3::exp(SO3::Tangent(0, 0, -omega * t));
+      const groups::SO3::Tangent v_exact = groups::SO3::exp(groups::SO3::Tangent(0, 0, omega * t)) * kV0;
+      const groups::SO3::Element g_exact = groups::SO3::exp(pi * t / i1) * kG0 * groups::SO3::exp(groups::SO3::Tangent(0, 0, -omega * t));
       error = std::max({error, max_abs_diff(tr.v[k], v_exact), max_abs_diff(tr.g[k], g_exact)});
       EXPECT_NEAR(tr.v[k][2], kV0[2], 1e-13);  // omega3' = 0 exactly in the RK4 stages, up to rounding
     }
@@ -78,12 +78,12 @@ TEST(EulerPoincare, AxisymmetricBodyMatchesClosedForm) {
 // accuracy, with the difference itself falling at order 4. The spatial momentum is conserved:
 // mu_+' = -ad*_v mu + ad*_v mu vanishes in every RK stage up to rounding.
 TEST(EulerPoincare, BodyAndSpatialFormulationsAgree) {
-  const RigidBody body(kInertia);
-  const SpatialRigidBody spatial(body);
+  const mechanics::RigidBody body(kInertia);
+  const mechanics::SpatialRigidBody spatial(body);
   std::vector<double> differences, pushed_forward_errors;
   for (int steps : {100, 200, 400}) {
-    const auto left = euler_poincare<SO3>(Side::Left, body, kG0, kV0, kT, steps);
-    const auto right = euler_poincare<SO3>(Side::Right, spatial, kG0, SO3::Tangent(kG0 * kV0), kT, steps);
+    const auto left = mechanics::euler_poincare<groups::SO3>(groups::Side::Left, body, kG0, kV0, kT, steps);
+    const auto right = mechanics::euler_poincare<groups::SO3>(groups::Side::Right, spatial, kG0, groups::SO3::Tangent(kG0 * kV0), kT, steps);
     differences.push_back(max_group_difference(left, right));
     const double momentum_drift = max_drift(right, [&](std::size_t k) { return (right.mu[k] - right.mu[0]).norm(); });
     EXPECT_LT(momentum_drift, 1e-13) << steps;  // rounding only: measured 1.5e-14 .. 2.3e-14
@@ -103,7 +103,7 @@ TEST(EulerPoincare, BodyAndSpatialFormulationsAgree) {
 // the two right-hand sides agree to rounding (mu' = +-ad*_v mu + zeta and -zeta_h = zeta),
 // so only rounding separates them: 1e-12 over 400 steps.
 TEST(LiePoisson, MatchesEulerPoincare) {
-  const SO3::Tangent mu0 = kInertia * kV0;
+  const groups::SO3::Tangent mu0 = kInertia * kV0;
   const auto compare = [&](const auto& ep, const auto& lp, const char* what) {
     std::cout << "[ measured ] " << what << ": EP vs LP max|dg| = " << max_group_difference(ep, lp)
               << ", max|dmu| = " << max_momentum_difference(ep, lp) << '\n';
@@ -111,35 +111,35 @@ TEST(LiePoisson, MatchesEulerPoincare) {
     EXPECT_LE(max_momentum_difference(ep, lp), 1e-12) << what;
     for (std::size_t k = 0; k < ep.t.size(); ++k) EXPECT_NEAR_MATRIX(ep.v[k], lp.v[k], 1e-12) << what;
   };
-  const RigidBody body(kInertia);
-  const RigidBodyHamiltonian body_h(kInertia);
-  compare(euler_poincare<SO3>(Side::Left, body, kG0, kV0, kT, 400),
-          lie_poisson<SO3>(Side::Left, body_h, kG0, mu0, kT, 400), "free body, left");
-  compare(euler_poincare<SO3>(Side::Right, SpatialRigidBody(body), kG0, SO3::Tangent(kG0 * kV0), kT, 400),
-          lie_poisson<SO3>(Side::Right, SpatialRigidBodyHamiltonian(body_h), kG0, SO3::Tangent(kG0 * mu0), kT, 400),
+  const mechanics::RigidBody body(kInertia);
+  const mechanics::RigidBodyHamiltonian body_h(kInertia);
+  compare(mechanics::euler_poincare<groups::SO3>(groups::Side::Left, body, kG0, kV0, kT, 400),
+          mechanics::lie_poisson<groups::SO3>(groups::Side::Left, body_h, kG0, mu0, kT, 400), "free body, left");
+  compare(mechanics::euler_poincare<groups::SO3>(groups::Side::Right, mechanics::SpatialRigidBody(body), kG0, groups::SO3::Tangent(kG0 * kV0), kT, 400),
+          mechanics::lie_poisson<groups::SO3>(groups::Side::Right, mechanics::SpatialRigidBodyHamiltonian(body_h), kG0, groups::SO3::Tangent(kG0 * mu0), kT, 400),
           "free body, right");
-  const SO3Oscillator oscillator(kInertia);
-  const SO3OscillatorHamiltonian oscillator_h(kInertia);
-  compare(euler_poincare<SO3>(Side::Left, oscillator, kG0, kV0, kT, 400),
-          lie_poisson<SO3>(Side::Left, oscillator_h, kG0, mu0, kT, 400), "oscillator, left");
-  compare(euler_poincare<SO3>(Side::Right, right_reduced_lagrangian<SO3>(oscillator), kG0, SO3::Tangent(kG0 * kV0),
+  const mechanics::SO3Oscillator oscillator(kInertia);
+  const mechanics::SO3OscillatorHamiltonian oscillator_h(kInertia);
+  compare(mechanics::euler_poincare<groups::SO3>(groups::Side::Left, oscillator, kG0, kV0, kT, 400),
+          mechanics::lie_poisson<groups::SO3>(groups::Side::Left, oscillator_h, kG0, mu0, kT, 400), "oscillator, left");
+  compare(mechanics::euler_poincare<groups::SO3>(groups::Side::Right, mechanics::right_reduced_lagrangian<groups::SO3>(oscillator), kG0, groups::SO3::Tangent(kG0 * kV0),
                               kT, 400),
-          lie_poisson<SO3>(Side::Right, right_reduced_hamiltonian<SO3>(oscillator_h), kG0, SO3::Tangent(kG0 * mu0),
+          mechanics::lie_poisson<groups::SO3>(groups::Side::Right, mechanics::right_reduced_hamiltonian<groups::SO3>(oscillator_h), kG0, groups::SO3::Tangent(kG0 * mu0),
                            kT, 400),
           "oscillator, right");
 }
 
 TEST(EulerPoincare, SO3OscillatorConservesEnergyAtOrderFour) {
-  const SO3Oscillator oscillator(kInertia);
-  for (Side side : {Side::Left, Side::Right}) {
+  const mechanics::SO3Oscillator oscillator(kInertia);
+  for (groups::Side side : {groups::Side::Left, groups::Side::Right}) {
     std::vector<double> drifts;  // from 100 steps: at 50 the measured order is 4.6 (pre-asymptotic)
     for (int steps : {100, 200, 400, 800}) {
-      const auto tr = side == Side::Left
-                          ? euler_poincare<SO3>(side, oscillator, kG0, kV0, kT, steps)
-                          : euler_poincare<SO3>(side, right_reduced_lagrangian<SO3>(oscillator), kG0,
-                                                SO3::Tangent(kG0 * kV0), kT, steps);
+      const auto tr = side == groups::Side::Left
+                          ? mechanics::euler_poincare<groups::SO3>(side, oscillator, kG0, kV0, kT, steps)
+                          : mechanics::euler_poincare<groups::SO3>(side, mechanics::right_reduced_lagrangian<groups::SO3>(oscillator), kG0,
+                                                groups::SO3::Tangent(kG0 * kV0), kT, steps);
       drifts.push_back(max_drift(tr, [&](std::size_t k) {
-        const SO3::Tangent body_v = side == Side::Left ? tr.v[k] : SO3::Tangent(tr.g[k].transpose() * tr.v[k]);
+        const groups::SO3::Tangent body_v = side == groups::Side::Left ? tr.v[k] : groups::SO3::Tangent(tr.g[k].transpose() * tr.v[k]);
         return 0.5 * body_v.dot(kInertia * body_v) + oscillator.potential().value(tr.g[k]);
       }));
     }
@@ -148,30 +148,30 @@ TEST(EulerPoincare, SO3OscillatorConservesEnergyAtOrderFour) {
 }
 
 TEST(EulerPoincare, H3OscillatorConservesEnergyAtOrderFour) {
-  const H3Oscillator oscillator = h3_oscillator();
-  const Heisenberg::Element g0(0.3, -0.5, 0.2);
-  const Heisenberg::Tangent v0(0.4, 0.7, -0.3);
+  const mechanics::H3Oscillator oscillator = mechanics::h3_oscillator();
+  const groups::Heisenberg::Element g0(0.3, -0.5, 0.2);
+  const groups::Heisenberg::Tangent v0(0.4, 0.7, -0.3);
   // At coarse steps (h = 0.2 .. 0.05) the measured orders are 4.9, 4.9, 4.5 (the O(h^4) term
   // is not yet dominant); from h = 0.025 on they are 3.8, 3.9, 4.0.
   std::vector<double> drifts;
   for (int steps : {400, 800, 1600, 3200}) {
-    const auto tr = euler_poincare<Heisenberg>(Side::Left, oscillator, g0, v0, kT, steps);
+    const auto tr = mechanics::euler_poincare<groups::Heisenberg>(groups::Side::Left, oscillator, g0, v0, kT, steps);
     drifts.push_back(max_drift(tr, [&](std::size_t k) {
       return 0.5 * tr.v[k].squaredNorm() + oscillator.potential().value(tr.g[k]);
     }));
   }
   expect_order_four("H3 oscillator energy drift", drifts);
   // The velocity stored at each node is the left-trivialised g^{-1} g' (reduced-v-Heis).
-  const auto tr = euler_poincare<Heisenberg>(Side::Left, oscillator, g0, v0, kT, 400);
+  const auto tr = mechanics::euler_poincare<groups::Heisenberg>(groups::Side::Left, oscillator, g0, v0, kT, 400);
   EXPECT_NEAR_MATRIX(tr.v[0], v0, 0.0);
 }
 
 // ---- Input validation: std::invalid_argument naming the value. ---------------------------
 
 TEST(EulerPoincare, RejectsInvalidInput) {
-  const RigidBody body(kInertia);
-  const auto ep = [&](const SO3::Element& g0, const SO3::Tangent& v0, double T, int steps) {
-    return [=, &body] { euler_poincare<SO3>(Side::Left, body, g0, v0, T, steps); };
+  const mechanics::RigidBody body(kInertia);
+  const auto ep = [&](const groups::SO3::Element& g0, const groups::SO3::Tangent& v0, double T, int steps) {
+    return [=, &body] { mechanics::euler_poincare<groups::SO3>(groups::Side::Left, body, g0, v0, T, steps); };
   };
   expect_invalid(ep(kG0, kV0, 0.0, 10), {"euler_poincare", "T = 0", "must be positive"});
   expect_invalid(ep(kG0, kV0, -1.5, 10), {"T = -1.5", "must be positive"});
@@ -179,18 +179,18 @@ TEST(EulerPoincare, RejectsInvalidInput) {
   expect_invalid(ep(kG0, kV0, INFINITY, 10), {"T = inf"});
   expect_invalid(ep(kG0, kV0, 1.0, 0), {"steps = 0", "at least 1"});
   expect_invalid(ep(kG0, kV0, 1.0, -3), {"steps = -3"});
-  expect_invalid(ep(kG0, SO3::Tangent(1, NAN, 0), 1.0, 10), {"v0 = [1; nan; 0]"});
-  SO3::Element nan_g0 = kG0;
+  expect_invalid(ep(kG0, groups::SO3::Tangent(1, NAN, 0), 1.0, 10), {"v0 = [1; nan; 0]"});
+  groups::SO3::Element nan_g0 = kG0;
   nan_g0(1, 1) = NAN;
   expect_invalid(ep(nan_g0, kV0, 1.0, 10), {"g0 = [", "nan"});
-  expect_invalid(ep(SO3::Element(1.01 * kG0), kV0, 1.0, 10), {"g0 = [", "not orthogonal"});
-  expect_invalid(ep(SO3::Element(-kG0), kV0, 1.0, 10), {"g0 = [", "determinant"});
+  expect_invalid(ep(groups::SO3::Element(1.01 * kG0), kV0, 1.0, 10), {"g0 = [", "not orthogonal"});
+  expect_invalid(ep(groups::SO3::Element(-kG0), kV0, 1.0, 10), {"g0 = [", "determinant"});
   // Lie–Poisson names mu0; the Heisenberg group validates its own g0.
-  expect_invalid([&] { lie_poisson<SO3>(Side::Left, RigidBodyHamiltonian(kInertia), kG0,
-                                        SO3::Tangent(INFINITY, 0, 0), 1.0, 10); },
+  expect_invalid([&] { mechanics::lie_poisson<groups::SO3>(groups::Side::Left, mechanics::RigidBodyHamiltonian(kInertia), kG0,
+                                        groups::SO3::Tangent(INFINITY, 0, 0), 1.0, 10); },
                  {"lie_poisson", "mu0 = [inf; 0; 0]"});
-  expect_invalid([&] { euler_poincare<Heisenberg>(Side::Left, h3_oscillator(), Heisenberg::Element(0, NAN, 0),
-                                                  Heisenberg::Tangent::Zero(), 1.0, 10); },
+  expect_invalid([&] { mechanics::euler_poincare<groups::Heisenberg>(groups::Side::Left, mechanics::h3_oscillator(), groups::Heisenberg::Element(0, NAN, 0),
+                                                  groups::Heisenberg::Tangent::Zero(), 1.0, 10); },
                  {"g0 = [0; nan; 0]"});
 }
 

@@ -1,4 +1,4 @@
-// Ordered exponentials and parallel transport (include/cartan/ordered_exp.hpp): cor-parr,
+// Ordered exponentials and parallel transport (include/cartan/transport/ordered_exp.hpp): cor-parr,
 // parr-tran-Cartan-lambda, rem-simple / para-trans-heis, para-trans-Heis, para-trans-dual-Heis.
 #include <cmath>
 #include <functional>
@@ -6,8 +6,8 @@
 #include <limits>
 #include <string>
 
-#include "cartan/cartan_schouten.hpp"
-#include "cartan/ordered_exp.hpp"
+#include "cartan/connections/cartan_schouten.hpp"
+#include "cartan/transport/ordered_exp.hpp"
 #include "connections/connection_identities.hpp"
 #include "groups/all_groups.hpp"
 #include "test_support.hpp"
@@ -15,27 +15,27 @@
 namespace cartan::testing {
 namespace {
 
-constexpr TransportMethod kMethods[] = {TransportMethod::LieEuler, TransportMethod::Magnus2, TransportMethod::Magnus4};
+constexpr transport::TransportMethod kMethods[] = {transport::TransportMethod::LieEuler, transport::TransportMethod::Magnus2, transport::TransportMethod::Magnus4};
 
 /// A curve with closed-form group values and velocities on any group:
 ///   g(t) = exp(t a) exp(phi(t) b) exp(psi(t) c),  phi = sin t,  psi = t^2/2,
 /// body velocity  u_L = g^{-1} g' = Ad_{exp(-psi c)} (Ad_{exp(-phi b)} a + phi' b) + psi' c,
 /// right velocity u_R = g' g^{-1} = Ad_g u_L. It is not a one-parameter subgroup.
-template <LieGroup G>
+template <groups::LieGroup G>
 struct KnownCurve {
-  TangentOf<G> a, b, c;
+  groups::TangentOf<G> a, b, c;
   explicit KnownCurve(std::mt19937& rng)
       : a(random_tangent<G>(rng, 0.8)), b(random_tangent<G>(rng, 0.8)), c(random_tangent<G>(rng, 0.8)) {}
-  ElementOf<G> operator()(double t) const {
-    return G::compose(G::compose(G::exp(TangentOf<G>(t * a)), G::exp(TangentOf<G>(std::sin(t) * b))),
-                      G::exp(TangentOf<G>(0.5 * t * t * c)));
+  groups::ElementOf<G> operator()(double t) const {
+    return G::compose(G::compose(G::exp(groups::TangentOf<G>(t * a)), G::exp(groups::TangentOf<G>(std::sin(t) * b))),
+                      G::exp(groups::TangentOf<G>(0.5 * t * t * c)));
   }
-  TangentOf<G> body(double t) const {
-    const TangentOf<G> inner = G::Ad(G::exp(TangentOf<G>(-std::sin(t) * b))) * a + std::cos(t) * b;
-    return G::Ad(G::exp(TangentOf<G>(-0.5 * t * t * c))) * inner + t * c;
+  groups::TangentOf<G> body(double t) const {
+    const groups::TangentOf<G> inner = G::Ad(G::exp(groups::TangentOf<G>(-std::sin(t) * b))) * a + std::cos(t) * b;
+    return G::Ad(G::exp(groups::TangentOf<G>(-0.5 * t * t * c))) * inner + t * c;
   }
-  TangentOf<G> spatial(double t) const { return G::Ad((*this)(t)) * body(t); }
-  TangentOf<G> velocity(Side side, double t) const { return side == Side::Left ? body(t) : spatial(t); }
+  groups::TangentOf<G> spatial(double t) const { return G::Ad((*this)(t)) * body(t); }
+  groups::TangentOf<G> velocity(groups::Side side, double t) const { return side == groups::Side::Left ? body(t) : spatial(t); }
 };
 
 template <class Vec>
@@ -47,10 +47,10 @@ std::vector<Vec> sample(const std::function<Vec(double)>& f, double s, double t,
 }
 
 /// A random ambient covector (an Element-shaped array, not necessarily tangent to G).
-template <LieGroup G>
-ElementOf<G> random_ambient(std::mt19937& rng) {
-  using Flat = Eigen::Matrix<double, ElementOf<G>::SizeAtCompileTime, 1>;
-  return random_vector<Flat>(rng, 1.0).reshaped(ElementOf<G>::RowsAtCompileTime, ElementOf<G>::ColsAtCompileTime);
+template <groups::LieGroup G>
+groups::ElementOf<G> random_ambient(std::mt19937& rng) {
+  using Flat = Eigen::Matrix<double, groups::ElementOf<G>::SizeAtCompileTime, 1>;
+  return random_vector<Flat>(rng, 1.0).reshaped(groups::ElementOf<G>::RowsAtCompileTime, groups::ElementOf<G>::ColsAtCompileTime);
 }
 
 template <class G>
@@ -65,7 +65,7 @@ TYPED_TEST(TransportTest, KnownCurveVelocities) {
   const KnownCurve<G> curve(rng);
   for (double t : {0.0, 0.4, 1.3}) {
     const double e = 1e-5;
-    const ElementOf<G> gdot = (curve(t + e) - curve(t - e)) / (2 * e);
+    const groups::ElementOf<G> gdot = (curve(t + e) - curve(t - e)) / (2 * e);
     EXPECT_NEAR_MATRIX(G::left_trivialise(curve(t), gdot), curve.body(t), 1e-8);
     EXPECT_NEAR_MATRIX(G::right_trivialise(curve(t), gdot), curve.spatial(t), 1e-8);
   }
@@ -82,32 +82,32 @@ TYPED_TEST(TransportTest, FlatConnectionsAreLeftAndRightTranslation) {
   std::mt19937 rng(kSeed + 1);
   const KnownCurve<G> curve(rng);
   const double s = 0.2, t = 1.3;
-  const ElementOf<G> gs = curve(s), gt = curve(t);
-  const AlgebraMatrixOf<G> identity = AlgebraMatrixOf<G>::Identity();
-  for (Side side : {Side::Left, Side::Right}) {
+  const groups::ElementOf<G> gs = curve(s), gt = curve(t);
+  const groups::AlgebraMatrixOf<G> identity = groups::AlgebraMatrixOf<G>::Identity();
+  for (groups::Side side : {groups::Side::Left, groups::Side::Right}) {
     auto u = [&curve, side](double r) { return curve.velocity(side, r); };
-    const double trivial_lambda = side == Side::Left ? 0.0 : 1.0;
-    for (TransportMethod m : kMethods) {
-      EXPECT_NEAR_MATRIX(transport_operator(cartan_schouten<G>(trivial_lambda, side), u, s, t, 16, m), identity, 1e-15);
-      EXPECT_NEAR_MATRIX(cartan_schouten_transport<G>(trivial_lambda, side, u, s, t, 16, m), identity, 1e-15);
+    const double trivial_lambda = side == groups::Side::Left ? 0.0 : 1.0;
+    for (transport::TransportMethod m : kMethods) {
+      EXPECT_NEAR_MATRIX(transport::transport_operator(connections::cartan_schouten<G>(trivial_lambda, side), u, s, t, 16, m), identity, 1e-15);
+      EXPECT_NEAR_MATRIX(transport::cartan_schouten_transport<G>(trivial_lambda, side, u, s, t, 16, m), identity, 1e-15);
     }
     const double other_lambda = 1.0 - trivial_lambda;
-    const AlgebraMatrixOf<G> expected =
-        side == Side::Left ? G::Ad(G::compose(G::inverse(gt), gs)) : G::Ad(G::compose(gt, G::inverse(gs)));
-    const auto p = transport_operator(cartan_schouten<G>(other_lambda, side), u, s, t, 64, TransportMethod::Magnus4);
+    const groups::AlgebraMatrixOf<G> expected =
+        side == groups::Side::Left ? G::Ad(G::compose(G::inverse(gt), gs)) : G::Ad(G::compose(gt, G::inverse(gs)));
+    const auto p = transport::transport_operator(connections::cartan_schouten<G>(other_lambda, side), u, s, t, 64, transport::TransportMethod::Magnus4);
     EXPECT_NEAR_MATRIX(p, expected, 1e-8) << to_string(side);
     // In ambient coordinates: Gamma X = X g(s)^{-1} g(t) (right translation) for lambda = 1.
     const auto p_right_translation =
-        side == Side::Left ? p
-                           : transport_operator(cartan_schouten<G>(1.0, side), u, s, t, 64, TransportMethod::Magnus4);
+        side == groups::Side::Left ? p
+                           : transport::transport_operator(connections::cartan_schouten<G>(1.0, side), u, s, t, 64, transport::TransportMethod::Magnus4);
     const auto p_left_translation =
-        side == Side::Left ? transport_operator(cartan_schouten<G>(0.0, side), u, s, t, 64, TransportMethod::Magnus4)
+        side == groups::Side::Left ? transport::transport_operator(connections::cartan_schouten<G>(0.0, side), u, s, t, 64, transport::TransportMethod::Magnus4)
                            : p;
     for (int trial = 0; trial < 3; ++trial) {
-      const ElementOf<G> x = G::left_translate(gs, random_tangent<G>(rng));
-      EXPECT_NEAR_MATRIX(transport_tangent<G>(side, p_right_translation, gs, gt, x),
+      const groups::ElementOf<G> x = G::left_translate(gs, random_tangent<G>(rng));
+      EXPECT_NEAR_MATRIX(transport::transport_tangent<G>(side, p_right_translation, gs, gt, x),
                          G::right_translate(gt, G::right_trivialise(gs, x)), 1e-8);
-      EXPECT_NEAR_MATRIX(transport_tangent<G>(side, p_left_translation, gs, gt, x),
+      EXPECT_NEAR_MATRIX(transport::transport_tangent<G>(side, p_left_translation, gs, gt, x),
                          G::left_translate(gt, G::left_trivialise(gs, x)), 1e-8);
     }
   }
@@ -123,14 +123,14 @@ TYPED_TEST(TransportTest, CartanSchoutenLeftAndRightDescriptionsAgree) {
   const KnownCurve<G> curve(rng);
   const double s = 1.1, t = 0.1;  // backwards, as well
   for (double lambda : {0.5, 0.3, 1.7}) {
-    const auto pl = cartan_schouten_transport<G>(
-        lambda, Side::Left, [&](double r) { return curve.body(r); }, s, t, 128, TransportMethod::Magnus4);
-    const auto pr = cartan_schouten_transport<G>(
-        lambda, Side::Right, [&](double r) { return curve.spatial(r); }, s, t, 128, TransportMethod::Magnus4);
+    const auto pl = transport::cartan_schouten_transport<G>(
+        lambda, groups::Side::Left, [&](double r) { return curve.body(r); }, s, t, 128, transport::TransportMethod::Magnus4);
+    const auto pr = transport::cartan_schouten_transport<G>(
+        lambda, groups::Side::Right, [&](double r) { return curve.spatial(r); }, s, t, 128, transport::TransportMethod::Magnus4);
     for (int trial = 0; trial < 3; ++trial) {
-      const ElementOf<G> x = G::left_translate(curve(s), random_tangent<G>(rng));
-      EXPECT_NEAR_MATRIX(transport_tangent<G>(Side::Left, pl, curve(s), curve(t), x),
-                         transport_tangent<G>(Side::Right, pr, curve(s), curve(t), x), 1e-8)
+      const groups::ElementOf<G> x = G::left_translate(curve(s), random_tangent<G>(rng));
+      EXPECT_NEAR_MATRIX(transport::transport_tangent<G>(groups::Side::Left, pl, curve(s), curve(t), x),
+                         transport::transport_tangent<G>(groups::Side::Right, pr, curve(s), curve(t), x), 1e-8)
           << "lambda " << lambda;
     }
   }
@@ -146,30 +146,30 @@ TYPED_TEST(TransportTest, CartanSchoutenFastPathMatchesGenericPath) {
   const KnownCurve<G> curve(rng);
   const double s = 0.0, t = 1.2;
   const int n = 32;
-  for (Side side : {Side::Left, Side::Right}) {
-    std::function<TangentOf<G>(double)> u = [&curve, side](double r) { return curve.velocity(side, r); };
+  for (groups::Side side : {groups::Side::Left, groups::Side::Right}) {
+    std::function<groups::TangentOf<G>(double)> u = [&curve, side](double r) { return curve.velocity(side, r); };
     const auto nodes = sample(u, s, t, n, false), mids = sample(u, s, t, n, true);
     for (double lambda : {0.5, 1.7, -0.3}) {
-      const auto conn = cartan_schouten<G>(lambda, side);
-      for (TransportMethod m : kMethods) {
-        const auto generic = transport_operator(conn, u, s, t, n, m);
+      const auto conn = connections::cartan_schouten<G>(lambda, side);
+      for (transport::TransportMethod m : kMethods) {
+        const auto generic = transport::transport_operator(conn, u, s, t, n, m);
         const double tol = 1e-12 * std::max(1.0, generic.cwiseAbs().maxCoeff());
-        EXPECT_NEAR_MATRIX(cartan_schouten_transport<G>(lambda, side, u, s, t, n, m), generic, tol)
+        EXPECT_NEAR_MATRIX(transport::cartan_schouten_transport<G>(lambda, side, u, s, t, n, m), generic, tol)
             << to_string(m) << " lambda " << lambda << " " << to_string(side);
-        EXPECT_NEAR_MATRIX(cartan_schouten_transport_sampled<G>(lambda, side, nodes, mids, s, t, m),
-                           transport_operator_sampled(conn, nodes, mids, s, t, m), tol)
+        EXPECT_NEAR_MATRIX(transport::cartan_schouten_transport_sampled<G>(lambda, side, nodes, mids, s, t, m),
+                           transport::transport_operator_sampled(conn, nodes, mids, s, t, m), tol)
             << to_string(m) << " lambda " << lambda;
-        const auto fast_nodes = cartan_schouten_transport_nodes<G>(lambda, side, u, s, t, n, m);
-        const auto generic_nodes = transport_operator_nodes(conn, u, s, t, n, m);
+        const auto fast_nodes = transport::cartan_schouten_transport_nodes<G>(lambda, side, u, s, t, n, m);
+        const auto generic_nodes = transport::transport_operator_nodes(conn, u, s, t, n, m);
         ASSERT_EQ(fast_nodes.size(), static_cast<std::size_t>(n + 1));
         ASSERT_EQ(generic_nodes.size(), static_cast<std::size_t>(n + 1));
         for (std::size_t k = 0; k < fast_nodes.size(); ++k) EXPECT_NEAR_MATRIX(fast_nodes[k], generic_nodes[k], tol);
       }
       // The Lie–Euler fast path is (disc-exp) step by step.
-      AlgebraMatrixOf<G> p = AlgebraMatrixOf<G>::Identity();
-      const double c = side == Side::Left ? lambda : lambda - 1;
-      for (int k = 0; k < n; ++k) p = cartan_schouten_transport_step<G>(c, (t - s) / n, nodes[k]) * p;
-      EXPECT_NEAR_MATRIX(cartan_schouten_transport_sampled<G>(lambda, side, nodes, s, t, TransportMethod::LieEuler), p,
+      groups::AlgebraMatrixOf<G> p = groups::AlgebraMatrixOf<G>::Identity();
+      const double c = side == groups::Side::Left ? lambda : lambda - 1;
+      for (int k = 0; k < n; ++k) p = transport::cartan_schouten_transport_step<G>(c, (t - s) / n, nodes[k]) * p;
+      EXPECT_NEAR_MATRIX(transport::cartan_schouten_transport_sampled<G>(lambda, side, nodes, s, t, transport::TransportMethod::LieEuler), p,
                          1e-12 * std::max(1.0, p.cwiseAbs().maxCoeff()));
     }
   }
@@ -185,29 +185,29 @@ TYPED_TEST(TransportTest, DualTransportPreservesPairing) {
   std::mt19937 rng(kSeed + 4);
   const KnownCurve<G> curve(rng);
   const double s = 0.3, t = 1.0;
-  const ElementOf<G> gs = curve(s), gt = curve(t);
-  for (Side side : {Side::Left, Side::Right}) {
+  const groups::ElementOf<G> gs = curve(s), gt = curve(t);
+  for (groups::Side side : {groups::Side::Left, groups::Side::Right}) {
     const auto conn = random_connection<G>(side, rng);
-    const auto p = transport_operator(
-        conn, [&](double r) { return curve.velocity(side, r); }, s, t, 16, TransportMethod::Magnus4);
+    const auto p = transport::transport_operator(
+        conn, [&](double r) { return curve.velocity(side, r); }, s, t, 16, transport::TransportMethod::Magnus4);
     const double scale = std::max(1.0, p.cwiseAbs().maxCoeff() * p.inverse().cwiseAbs().maxCoeff());
     for (int trial = 0; trial < 3; ++trial) {
-      const TangentOf<G> x = random_tangent<G>(rng);
-      const CovectorOf<G> alpha = random_tangent<G>(rng), beta = random_tangent<G>(rng);
-      EXPECT_NEAR(transport_covector(p, alpha).dot(transport_vector(p, x)), alpha.dot(x), 1e-11 * scale);
-      EXPECT_NEAR(pull_back_covector(p, beta).dot(x), beta.dot(transport_vector(p, x)), 1e-11 * scale);
+      const groups::TangentOf<G> x = random_tangent<G>(rng);
+      const groups::CovectorOf<G> alpha = random_tangent<G>(rng), beta = random_tangent<G>(rng);
+      EXPECT_NEAR(transport::transport_covector(p, alpha).dot(transport::transport_vector(p, x)), alpha.dot(x), 1e-11 * scale);
+      EXPECT_NEAR(transport::pull_back_covector(p, beta).dot(x), beta.dot(transport::transport_vector(p, x)), 1e-11 * scale);
 
       // Ambient: a tangent vector X at g(s), arbitrary ambient covectors (not tangent to G on
       // matrix groups: only their tangential part matters).
-      const ElementOf<G> xa = translate<G>(side, gs, x);
-      const ElementOf<G> alpha_a = random_ambient<G>(rng), beta_a = random_ambient<G>(rng);
-      const ElementOf<G> transported = transport_tangent<G>(side, p, gs, gt, xa);
-      EXPECT_NEAR(ambient_pairing<G>(transport_ambient_covector<G>(side, p, gs, gt, alpha_a), transported),
-                  ambient_pairing<G>(alpha_a, xa), 1e-11 * scale);
-      EXPECT_NEAR(ambient_pairing<G>(pull_back_ambient_covector<G>(side, p, gs, gt, beta_a), xa),
-                  ambient_pairing<G>(beta_a, transported), 1e-11 * scale);
+      const groups::ElementOf<G> xa = groups::translate<G>(side, gs, x);
+      const groups::ElementOf<G> alpha_a = random_ambient<G>(rng), beta_a = random_ambient<G>(rng);
+      const groups::ElementOf<G> transported = transport::transport_tangent<G>(side, p, gs, gt, xa);
+      EXPECT_NEAR(groups::ambient_pairing<G>(transport::transport_ambient_covector<G>(side, p, gs, gt, alpha_a), transported),
+                  groups::ambient_pairing<G>(alpha_a, xa), 1e-11 * scale);
+      EXPECT_NEAR(groups::ambient_pairing<G>(transport::pull_back_ambient_covector<G>(side, p, gs, gt, beta_a), xa),
+                  groups::ambient_pairing<G>(beta_a, transported), 1e-11 * scale);
       // untrivialise_covector inverts trivialise_covector on trivialised covectors.
-      EXPECT_NEAR_MATRIX(trivialise_covector<G>(side, gt, untrivialise_covector<G>(side, gt, alpha)), alpha, 1e-12);
+      EXPECT_NEAR_MATRIX(groups::trivialise_covector<G>(side, gt, groups::untrivialise_covector<G>(side, gt, alpha)), alpha, 1e-12);
     }
   }
 }
@@ -221,41 +221,41 @@ TYPED_TEST(TransportTest, BackwardTransportIsTheInverse) {
   using G = TypeParam;
   std::mt19937 rng(kSeed + 5);
   const KnownCurve<G> curve(rng);
-  const auto conn = random_connection<G>(Side::Left, rng);
-  std::function<TangentOf<G>(double)> u = [&curve](double r) { return curve.body(r); };
+  const auto conn = random_connection<G>(groups::Side::Left, rng);
+  std::function<groups::TangentOf<G>(double)> u = [&curve](double r) { return curve.body(r); };
   const double s = 0.1, t = 0.9;
-  const AlgebraMatrixOf<G> identity = AlgebraMatrixOf<G>::Identity();
-  for (TransportMethod m : {TransportMethod::Magnus2, TransportMethod::Magnus4}) {
-    const auto forward = transport_operator(conn, u, s, t, 24, m);
-    const auto backward = transport_operator(conn, u, t, s, 24, m);
+  const groups::AlgebraMatrixOf<G> identity = groups::AlgebraMatrixOf<G>::Identity();
+  for (transport::TransportMethod m : {transport::TransportMethod::Magnus2, transport::TransportMethod::Magnus4}) {
+    const auto forward = transport::transport_operator(conn, u, s, t, 24, m);
+    const auto backward = transport::transport_operator(conn, u, t, s, 24, m);
     const double scale = forward.cwiseAbs().maxCoeff() * backward.cwiseAbs().maxCoeff();
     EXPECT_NEAR_MATRIX(backward * forward, identity, 1e-12 * scale) << to_string(m);
     // Sampled: the backward samples are the forward ones in reverse order.
     auto nodes = sample(u, s, t, 24, false), mids = sample(u, s, t, 24, true);
-    const auto forward_sampled = transport_operator_sampled(conn, nodes, mids, s, t, m);
+    const auto forward_sampled = transport::transport_operator_sampled(conn, nodes, mids, s, t, m);
     std::reverse(nodes.begin(), nodes.end());
     std::reverse(mids.begin(), mids.end());
-    EXPECT_NEAR_MATRIX(transport_operator_sampled(conn, nodes, mids, t, s, m) * forward_sampled, identity,
+    EXPECT_NEAR_MATRIX(transport::transport_operator_sampled(conn, nodes, mids, t, s, m) * forward_sampled, identity,
                        1e-12 * scale)
         << to_string(m);
     // The fast path too.
-    const auto fast_forward = cartan_schouten_transport<G>(0.7, Side::Left, u, s, t, 24, m);
-    const auto fast_backward = cartan_schouten_transport<G>(0.7, Side::Left, u, t, s, 24, m);
+    const auto fast_forward = transport::cartan_schouten_transport<G>(0.7, groups::Side::Left, u, s, t, 24, m);
+    const auto fast_backward = transport::cartan_schouten_transport<G>(0.7, groups::Side::Left, u, t, s, 24, m);
     EXPECT_NEAR_MATRIX(fast_backward * fast_forward, identity,
                        1e-12 * fast_forward.cwiseAbs().maxCoeff() * fast_backward.cwiseAbs().maxCoeff());
   }
   auto euler_defect = [&](int n) {
-    return max_abs_diff(transport_operator(conn, u, t, s, n, TransportMethod::LieEuler) *
-                            transport_operator(conn, u, s, t, n, TransportMethod::LieEuler),
+    return max_abs_diff(transport::transport_operator(conn, u, t, s, n, transport::TransportMethod::LieEuler) *
+                            transport::transport_operator(conn, u, s, t, n, transport::TransportMethod::LieEuler),
                         identity);
   };
   const double ratio = euler_defect(64) / euler_defect(128);
   EXPECT_GT(ratio, 1.8);
   EXPECT_LT(ratio, 2.2);
-  for (TransportMethod m : kMethods) {
-    EXPECT_NEAR_MATRIX(transport_operator(conn, u, s, s, 5, m), identity, 0.0);
-    EXPECT_NEAR_MATRIX(cartan_schouten_transport<G>(0.5, Side::Left, u, s, s, 5, m), identity, 0.0);
-    const auto at_nodes = transport_operator_nodes(conn, u, s, s, 5, m);
+  for (transport::TransportMethod m : kMethods) {
+    EXPECT_NEAR_MATRIX(transport::transport_operator(conn, u, s, s, 5, m), identity, 0.0);
+    EXPECT_NEAR_MATRIX(transport::cartan_schouten_transport<G>(0.5, groups::Side::Left, u, s, s, 5, m), identity, 0.0);
+    const auto at_nodes = transport::transport_operator_nodes(conn, u, s, s, 5, m);
     ASSERT_EQ(at_nodes.size(), 6u);
     for (const auto& pk : at_nodes) EXPECT_NEAR_MATRIX(pk, identity, 0.0);
   }
@@ -301,16 +301,16 @@ struct PolynomialH3Curve {
 // point (LieEuler) for degree <= 1 — with any number of steps (3 here). Tolerance: entries of
 // size <= ~10, a few dozen flops: 1e-13.
 TEST(HeisenbergTransport, ClosedFormsOfTheAppendix) {
-  const std::pair<TransportMethod, int> exact_for[] = {
-      {TransportMethod::LieEuler, 1}, {TransportMethod::Magnus2, 2}, {TransportMethod::Magnus4, 4}};
+  const std::pair<transport::TransportMethod, int> exact_for[] = {
+      {transport::TransportMethod::LieEuler, 1}, {transport::TransportMethod::Magnus2, 2}, {transport::TransportMethod::Magnus4, 4}};
   const double s = -0.4, t = 1.3;
   for (const auto& [method, degree] : exact_for) {
     const PolynomialH3Curve curve{degree};
     const double da = curve.a(t) - curve.a(s), db = curve.b(t) - curve.b(s);
     for (double lambda : {0.0, 0.5, 1.0, 1.7, -0.3}) {
       auto u = [&curve](double r) { return curve.body(r); };
-      const auto p = transport_operator(cartan_schouten<Heisenberg>(lambda), u, s, t, 3, method);
-      const auto p_fast = cartan_schouten_transport<Heisenberg>(lambda, Side::Left, u, s, t, 3, method);
+      const auto p = transport::transport_operator(connections::cartan_schouten<groups::Heisenberg>(lambda), u, s, t, 3, method);
+      const auto p_fast = transport::cartan_schouten_transport<groups::Heisenberg>(lambda, groups::Side::Left, u, s, t, 3, method);
       // Trivialised: P = I - lambda int ad_u = I + lambda [row 3: (Delta b, -Delta a, 0)].
       Eigen::Matrix3d expected = Eigen::Matrix3d::Identity();
       expected(2, 0) = lambda * db;
@@ -321,23 +321,23 @@ TEST(HeisenbergTransport, ClosedFormsOfTheAppendix) {
       const V3 v(0.7, -1.3, 0.4), eta(1.2, 0.5, -0.9);
       // (para-trans-Heis), in the ambient coordinates (d/da, d/db, d/dc):
       const V3 gamma_v(v[0], v[1], v[2] + (1 - lambda) * da * v[1] + lambda * db * v[0]);
-      EXPECT_NEAR_MATRIX(transport_tangent<Heisenberg>(Side::Left, p, curve.g(s), curve.g(t), v), gamma_v, 1e-13)
+      EXPECT_NEAR_MATRIX(transport::transport_tangent<groups::Heisenberg>(groups::Side::Left, p, curve.g(s), curve.g(t), v), gamma_v, 1e-13)
           << to_string(method) << " lambda " << lambda;
       // (para-trans-dual-Heis), in the ambient dual coordinates (da, db, dc): the pull-back
       // Gamma*(g)_t^s = (Gamma(g)_s^t)^* of a covector at g(t).
       const V3 gamma_star_eta(eta[0] + lambda * eta[2] * db, eta[1] + (1 - lambda) * eta[2] * da, eta[2]);
-      EXPECT_NEAR_MATRIX(pull_back_ambient_covector<Heisenberg>(Side::Left, p, curve.g(s), curve.g(t), eta),
+      EXPECT_NEAR_MATRIX(transport::pull_back_ambient_covector<groups::Heisenberg>(groups::Side::Left, p, curve.g(s), curve.g(t), eta),
                          gamma_star_eta, 1e-13)
           << to_string(method) << " lambda " << lambda;
       // Its inverse is the forward dual transport Gamma*(g)_s^t.
-      EXPECT_NEAR_MATRIX(transport_ambient_covector<Heisenberg>(Side::Left, p, curve.g(s), curve.g(t), gamma_star_eta),
+      EXPECT_NEAR_MATRIX(transport::transport_ambient_covector<groups::Heisenberg>(groups::Side::Left, p, curve.g(s), curve.g(t), gamma_star_eta),
                          eta, 1e-13);
     }
   }
   // A degree too high for the quadrature: the method is no longer exact (the check has teeth).
   const PolynomialH3Curve quartic{4};
-  const auto p = transport_operator(
-      cartan_schouten<Heisenberg>(0.5), [&](double r) { return quartic.body(r); }, s, t, 3, TransportMethod::Magnus2);
+  const auto p = transport::transport_operator(
+      connections::cartan_schouten<groups::Heisenberg>(0.5), [&](double r) { return quartic.body(r); }, s, t, 3, transport::TransportMethod::Magnus2);
   EXPECT_GT(std::abs(p(2, 1) + 0.5 * (quartic.a(t) - quartic.a(s))), 1e-4);
 }
 
@@ -354,19 +354,19 @@ std::array<double, 2> observed_orders(const Approx& approx, const Reference& ref
 
 /// Coarsest step counts N per method, chosen in the asymptotic range with e_4N well above the
 /// reference's error and rounding (on SO(3), CS 0.5: Magnus4 e_8 = 1.6e-5 ... e_32 = 6.4e-8).
-int coarse_steps(TransportMethod m) {
+int coarse_steps(transport::TransportMethod m) {
   switch (m) {
-    case TransportMethod::LieEuler:
+    case transport::TransportMethod::LieEuler:
       return 32;
-    case TransportMethod::Magnus2:
+    case transport::TransportMethod::Magnus2:
       return 16;
-    case TransportMethod::Magnus4:
+    case transport::TransportMethod::Magnus4:
       return 8;
   }
   return 0;
 }
 
-void expect_orders(const std::string& what, TransportMethod m, const std::array<double, 2>& orders) {
+void expect_orders(const std::string& what, transport::TransportMethod m, const std::array<double, 2>& orders) {
   std::cout << "[ orders   ] " << what << " " << to_string(m) << ": " << orders[0] << ", " << orders[1] << "\n";
   EXPECT_NEAR(orders[0], order(m), 0.15) << what << " " << to_string(m);
   EXPECT_NEAR(orders[1], order(m), 0.15) << what << " " << to_string(m);
@@ -379,28 +379,28 @@ void expect_orders(const std::string& what, TransportMethod m, const std::array<
 // (it differs from an 8192-step one by 3e-14, far below the smallest e_4N = 6e-8 compared).
 // Tolerance +-0.15 on each observed order (measured: within 0.03 of 1, 2, 4).
 TEST(TransportConvergence, OrdersOnSO3) {
-  using G = SO3;
+  using G = groups::SO3;
   std::function<V3(double)> u = [](double t) { return V3(std::sin(t), std::cos(2 * t), 0.5 * t * t); };
   const double s = 0.0, t = 2.0;
   std::mt19937 rng(kSeed + 6);
-  const std::pair<std::string, InvariantConnection<G>> connections[] = {
-      {"cartan-schouten(0.5)", cartan_schouten<G>(0.5)}, {"general", random_connection<G>(Side::Left, rng)}};
+  const std::pair<std::string, connections::InvariantConnection<G>> connections[] = {
+      {"cartan-schouten(0.5)", connections::cartan_schouten<G>(0.5)}, {"general", random_connection<G>(groups::Side::Left, rng)}};
   for (const auto& [name, conn] : connections) {
-    const auto reference = transport_operator(conn, u, s, t, 4096, TransportMethod::Magnus4);
-    for (TransportMethod m : kMethods) {
+    const auto reference = transport::transport_operator(conn, u, s, t, 4096, transport::TransportMethod::Magnus4);
+    for (transport::TransportMethod m : kMethods) {
       const int n = coarse_steps(m);
       expect_orders(name + " function", m,
-                    observed_orders([&](int k) { return transport_operator(conn, u, s, t, k, m); }, reference, n));
+                    observed_orders([&](int k) { return transport::transport_operator(conn, u, s, t, k, m); }, reference, n));
       expect_orders(name + " samples", m,
                     observed_orders(
                         [&](int k) {
-                          return transport_operator_sampled(conn, sample(u, s, t, k, false), sample(u, s, t, k, true),
+                          return transport::transport_operator_sampled(conn, sample(u, s, t, k, false), sample(u, s, t, k, true),
                                                             s, t, m);
                         },
                         reference, n));
       if (name == "general") continue;
       expect_orders(name + " fast path", m,
-                    observed_orders([&](int k) { return cartan_schouten_transport<G>(0.5, Side::Left, u, s, t, k, m); },
+                    observed_orders([&](int k) { return transport::cartan_schouten_transport<G>(0.5, groups::Side::Left, u, s, t, k, m); },
                                     reference, n));
     }
   }
@@ -416,31 +416,31 @@ TEST(TransportConvergence, OrdersForADynamicMatrixGenerator) {
   const Mat a2 = random_vector<Eigen::Matrix<double, 25, 1>>(rng, 0.6).reshaped(5, 5);
   std::function<Mat(double)> a = [&](double t) -> Mat { return a0 + std::sin(3 * t) * a1 + t * t * a2; };
   const double s = 0.5, t = 1.5;
-  const Mat reference = ordered_exp(a, s, t, 4096, TransportMethod::Magnus4);
-  for (TransportMethod m : kMethods) {
+  const Mat reference = transport::ordered_exp(a, s, t, 4096, transport::TransportMethod::Magnus4);
+  for (transport::TransportMethod m : kMethods) {
     const int n = coarse_steps(m);
-    expect_orders("5x5 function", m, observed_orders([&](int k) { return ordered_exp(a, s, t, k, m); }, reference, n));
+    expect_orders("5x5 function", m, observed_orders([&](int k) { return transport::ordered_exp(a, s, t, k, m); }, reference, n));
     expect_orders(
         "5x5 samples", m,
         observed_orders(
-            [&](int k) { return ordered_exp_sampled(sample(a, s, t, k, false), sample(a, s, t, k, true), s, t, m); },
+            [&](int k) { return transport::ordered_exp_sampled(sample(a, s, t, k, false), sample(a, s, t, k, true), s, t, m); },
             reference, n));
   }
   // Without midpoints the sampled path offers LieEuler and Magnus2 with the same results.
   const auto nodes = sample(a, s, t, 16, false), mids = sample(a, s, t, 16, true);
-  for (TransportMethod m : {TransportMethod::LieEuler, TransportMethod::Magnus2}) {
-    EXPECT_NEAR_MATRIX(ordered_exp_sampled(nodes, s, t, m), ordered_exp_sampled(nodes, mids, s, t, m), 0.0);
+  for (transport::TransportMethod m : {transport::TransportMethod::LieEuler, transport::TransportMethod::Magnus2}) {
+    EXPECT_NEAR_MATRIX(transport::ordered_exp_sampled(nodes, s, t, m), transport::ordered_exp_sampled(nodes, mids, s, t, m), 0.0);
   }
   // The node version ends at the final value and starts at I.
-  const auto path = ordered_exp_sampled_nodes(nodes, mids, s, t, TransportMethod::Magnus4);
+  const auto path = transport::ordered_exp_sampled_nodes(nodes, mids, s, t, transport::TransportMethod::Magnus4);
   ASSERT_EQ(path.size(), nodes.size());
   EXPECT_NEAR_MATRIX(path.front(), Mat::Identity(5, 5), 0.0);
-  EXPECT_NEAR_MATRIX(path.back(), ordered_exp_sampled(nodes, mids, s, t, TransportMethod::Magnus4), 0.0);
-  const auto fpath = ordered_exp_nodes(a, s, t, 16, TransportMethod::Magnus4);
+  EXPECT_NEAR_MATRIX(path.back(), transport::ordered_exp_sampled(nodes, mids, s, t, transport::TransportMethod::Magnus4), 0.0);
+  const auto fpath = transport::ordered_exp_nodes(a, s, t, 16, transport::TransportMethod::Magnus4);
   ASSERT_EQ(fpath.size(), 17u);
-  EXPECT_NEAR_MATRIX(fpath.back(), ordered_exp(a, s, t, 16, TransportMethod::Magnus4), 0.0);
+  EXPECT_NEAR_MATRIX(fpath.back(), transport::ordered_exp(a, s, t, 16, transport::TransportMethod::Magnus4), 0.0);
   // The path's k-th value is the ordered exponential over [s, t_k] with k steps (same grid).
-  EXPECT_NEAR_MATRIX(fpath[8], ordered_exp(a, s, s + 0.5 * (t - s), 8, TransportMethod::Magnus4), 1e-14);
+  EXPECT_NEAR_MATRIX(fpath[8], transport::ordered_exp(a, s, s + 0.5 * (t - s), 8, transport::TransportMethod::Magnus4), 1e-14);
 }
 
 // Every method is exact for a constant generator: exp((t - s) A), whatever the step count.
@@ -449,9 +449,9 @@ TEST(OrderedExp, ConstantGeneratorIsTheMatrixExponential) {
   std::mt19937 rng(kSeed + 8);
   const Eigen::Matrix4d a = random_vector<Eigen::Matrix<double, 16, 1>>(rng, 1.0).reshaped(4, 4);
   const Eigen::Matrix4d expected = (1.5 * a).exp();
-  for (TransportMethod m : kMethods) {
-    EXPECT_NEAR_MATRIX(ordered_exp([&](double) { return a; }, 0.25, 1.75, 7, m), expected, 1e-13);
-    EXPECT_EQ(order(m), m == TransportMethod::LieEuler ? 1 : m == TransportMethod::Magnus2 ? 2 : 4);
+  for (transport::TransportMethod m : kMethods) {
+    EXPECT_NEAR_MATRIX(transport::ordered_exp([&](double) { return a; }, 0.25, 1.75, 7, m), expected, 1e-13);
+    EXPECT_EQ(order(m), m == transport::TransportMethod::LieEuler ? 1 : m == transport::TransportMethod::Magnus2 ? 2 : 4);
   }
 }
 
@@ -459,92 +459,92 @@ TEST(OrderedExp, ConstantGeneratorIsTheMatrixExponential) {
 // Bad input: std::invalid_argument whose message names the value.
 
 TEST(TransportValidation, RejectsBadInput) {
-  const auto conn = cartan_schouten<SO3>(0.5);
+  const auto conn = connections::cartan_schouten<groups::SO3>(0.5);
   auto u = [](double t) { return V3(t, 1, 0); };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   auto a = [](double t) { return Eigen::Matrix3d(t * Eigen::Matrix3d::Identity()); };
 
-  expect_invalid([&] { ordered_exp(a, 0, 1, 0, TransportMethod::Magnus2); }, "steps = 0 must be at least 1");
-  expect_invalid([&] { ordered_exp_nodes(a, 0, 1, -3, TransportMethod::Magnus2); }, "steps = -3");
-  expect_invalid([&] { transport_operator(conn, u, 0, 1, 0, TransportMethod::LieEuler); },
+  expect_invalid([&] { transport::ordered_exp(a, 0, 1, 0, transport::TransportMethod::Magnus2); }, "steps = 0 must be at least 1");
+  expect_invalid([&] { transport::ordered_exp_nodes(a, 0, 1, -3, transport::TransportMethod::Magnus2); }, "steps = -3");
+  expect_invalid([&] { transport::transport_operator(conn, u, 0, 1, 0, transport::TransportMethod::LieEuler); },
                  "transport_operator: steps = 0");
-  expect_invalid([&] { cartan_schouten_transport<SO3>(0.5, Side::Left, u, 0, 1, 0, TransportMethod::Magnus4); },
+  expect_invalid([&] { transport::cartan_schouten_transport<groups::SO3>(0.5, groups::Side::Left, u, 0, 1, 0, transport::TransportMethod::Magnus4); },
                  "cartan_schouten_transport: steps = 0");
-  expect_invalid([&] { ordered_exp(a, nan, 1, 4, TransportMethod::Magnus2); }, "t0 = nan");
-  expect_invalid([&] { transport_operator(conn, u, 0, inf, 4, TransportMethod::Magnus2); }, "t1 = inf");
-  expect_invalid([&] { cartan_schouten_transport<SO3>(nan, Side::Left, u, 0, 1, 4, TransportMethod::Magnus2); },
+  expect_invalid([&] { transport::ordered_exp(a, nan, 1, 4, transport::TransportMethod::Magnus2); }, "t0 = nan");
+  expect_invalid([&] { transport::transport_operator(conn, u, 0, inf, 4, transport::TransportMethod::Magnus2); }, "t1 = inf");
+  expect_invalid([&] { transport::cartan_schouten_transport<groups::SO3>(nan, groups::Side::Left, u, 0, 1, 4, transport::TransportMethod::Magnus2); },
                  "lambda = nan");
   // A generator or velocity that becomes non-finite: the message names the time.
   auto blows_up = [](double t) { return V3(1 / (t - 0.5), 0, 0); };
-  expect_invalid([&] { transport_operator(conn, blows_up, 0, 1, 2, TransportMethod::LieEuler); },
+  expect_invalid([&] { transport::transport_operator(conn, blows_up, 0, 1, 2, transport::TransportMethod::LieEuler); },
                  "transport_operator: u(0.5) = [inf; 0; 0] contains a non-finite number");
-  expect_invalid([&] { cartan_schouten_transport<SO3>(0.5, Side::Left, blows_up, 0, 1, 2, TransportMethod::LieEuler); },
+  expect_invalid([&] { transport::cartan_schouten_transport<groups::SO3>(0.5, groups::Side::Left, blows_up, 0, 1, 2, transport::TransportMethod::LieEuler); },
                  "cartan_schouten_transport: u(0.5) = [inf; 0; 0] contains a non-finite number");
   expect_invalid(
       [&] {
-        ordered_exp([](double t) { return Eigen::Matrix2d(Eigen::Matrix2d::Constant(std::log(t))); }, 0, 0.5, 2,
-                    TransportMethod::LieEuler);
+        transport::ordered_exp([](double t) { return Eigen::Matrix2d(Eigen::Matrix2d::Constant(std::log(t))); }, 0, 0.5, 2,
+                    transport::TransportMethod::LieEuler);
       },
       "ordered_exp: A(0) = [-inf, -inf; -inf, -inf] contains a non-finite number");
   expect_invalid(
       [&] {
-        ordered_exp([](double) { return Eigen::MatrixXd(Eigen::MatrixXd::Zero(2, 3)); }, 0, 1, 2,
-                    TransportMethod::LieEuler);
+        transport::ordered_exp([](double) { return Eigen::MatrixXd(Eigen::MatrixXd::Zero(2, 3)); }, 0, 1, 2,
+                    transport::TransportMethod::LieEuler);
       },
       "is not square (2x3)");
   expect_invalid(
       [&] {
-        ordered_exp([](double t) { return Eigen::MatrixXd(Eigen::MatrixXd::Zero(t > 0.3 ? 3 : 2, t > 0.3 ? 3 : 2)); },
-                    0, 1, 2, TransportMethod::LieEuler);
+        transport::ordered_exp([](double t) { return Eigen::MatrixXd(Eigen::MatrixXd::Zero(t > 0.3 ? 3 : 2, t > 0.3 ? 3 : 2)); },
+                    0, 1, 2, transport::TransportMethod::LieEuler);
       },
       "has shape 3x3, expected 2x2");
 
   // Samples: counts, missing midpoints, non-finite entries, shapes.
   const std::vector<V3> u_nodes = {V3(0, 1, 0), V3(1, 1, 0), V3(2, 1, 0)};
   const std::vector<V3> u_mids = {V3(0.5, 1, 0), V3(1.5, 1, 0)};
-  expect_invalid([&] { transport_operator_sampled(conn, std::vector<V3>{V3::Zero()}, 0, 1, TransportMethod::Magnus2); },
+  expect_invalid([&] { transport::transport_operator_sampled(conn, std::vector<V3>{V3::Zero()}, 0, 1, transport::TransportMethod::Magnus2); },
                  "u_nodes.size() = 1 must be at least 2");
-  expect_invalid([&] { transport_operator_sampled(conn, u_nodes, 0, 1, TransportMethod::Magnus4); },
+  expect_invalid([&] { transport::transport_operator_sampled(conn, u_nodes, 0, 1, transport::TransportMethod::Magnus4); },
                  "method = Magnus4 needs midpoint samples");
   expect_invalid(
       [&] {
-        ordered_exp_sampled(std::vector<Eigen::Matrix3d>(3, Eigen::Matrix3d::Zero()), 0, 1, TransportMethod::Magnus4);
+        transport::ordered_exp_sampled(std::vector<Eigen::Matrix3d>(3, Eigen::Matrix3d::Zero()), 0, 1, transport::TransportMethod::Magnus4);
       },
       "method = Magnus4 needs midpoint samples");
   expect_invalid(
-      [&] { cartan_schouten_transport_sampled<SO3>(0.5, Side::Left, u_nodes, 0, 1, TransportMethod::Magnus4); },
+      [&] { transport::cartan_schouten_transport_sampled<groups::SO3>(0.5, groups::Side::Left, u_nodes, 0, 1, transport::TransportMethod::Magnus4); },
       "method = Magnus4");
   expect_invalid(
-      [&] { transport_operator_sampled(conn, u_nodes, std::vector<V3>{V3::Zero()}, 0, 1, TransportMethod::Magnus4); },
+      [&] { transport::transport_operator_sampled(conn, u_nodes, std::vector<V3>{V3::Zero()}, 0, 1, transport::TransportMethod::Magnus4); },
       "u_midpoints.size() = 1 must be u_nodes.size() - 1 = 2");
   std::vector<V3> bad_nodes = u_nodes;
   bad_nodes[2][1] = nan;
-  expect_invalid([&] { transport_operator_sampled(conn, bad_nodes, 0, 1, TransportMethod::Magnus2); },
+  expect_invalid([&] { transport::transport_operator_sampled(conn, bad_nodes, 0, 1, transport::TransportMethod::Magnus2); },
                  "u_nodes[2] = [");
   expect_invalid(
-      [&] { cartan_schouten_transport_sampled<SO3>(0.5, Side::Right, bad_nodes, 0, 1, TransportMethod::LieEuler); },
+      [&] { transport::cartan_schouten_transport_sampled<groups::SO3>(0.5, groups::Side::Right, bad_nodes, 0, 1, transport::TransportMethod::LieEuler); },
       "u_nodes[2]");
   std::vector<V3> bad_mids = u_mids;
   bad_mids[0][0] = inf;
-  expect_invalid([&] { transport_operator_sampled(conn, u_nodes, bad_mids, 0, 1, TransportMethod::Magnus4); },
+  expect_invalid([&] { transport::transport_operator_sampled(conn, u_nodes, bad_mids, 0, 1, transport::TransportMethod::Magnus4); },
                  "u_midpoints[0] = [inf");
-  expect_invalid([&] { transport_operator_sampled(conn, u_nodes, u_mids, 0, nan, TransportMethod::Magnus4); },
+  expect_invalid([&] { transport::transport_operator_sampled(conn, u_nodes, u_mids, 0, nan, transport::TransportMethod::Magnus4); },
                  "t1 = nan");
   std::vector<Eigen::MatrixXd> ragged = {Eigen::MatrixXd::Zero(2, 2), Eigen::MatrixXd::Zero(3, 3)};
-  expect_invalid([&] { ordered_exp_sampled(ragged, 0, 1, TransportMethod::LieEuler); },
+  expect_invalid([&] { transport::ordered_exp_sampled(ragged, 0, 1, transport::TransportMethod::LieEuler); },
                  "nodes[1] = [0, 0, 0; 0, 0, 0; 0, 0, 0] has shape 3x3, expected 2x2");
   expect_invalid(
       [&] {
-        ordered_exp_sampled(std::vector<Eigen::MatrixXd>(2, Eigen::MatrixXd::Zero(2, 3)), 0, 1,
-                            TransportMethod::LieEuler);
+        transport::ordered_exp_sampled(std::vector<Eigen::MatrixXd>(2, Eigen::MatrixXd::Zero(2, 3)), 0, 1,
+                            transport::TransportMethod::LieEuler);
       },
       "nodes[0] = [0, 0, 0; 0, 0, 0] is not square (2x3)");
   // Ambient helpers validate the points.
   Eigen::Matrix3d not_rotation = 2 * Eigen::Matrix3d::Identity();
   expect_invalid(
       [&] {
-        transport_tangent<SO3>(Side::Left, Eigen::Matrix3d::Identity(), not_rotation, Eigen::Matrix3d::Identity(),
+        transport::transport_tangent<groups::SO3>(groups::Side::Left, Eigen::Matrix3d::Identity(), not_rotation, Eigen::Matrix3d::Identity(),
                                Eigen::Matrix3d::Zero());
       },
       "g_s = [2, 0, 0");

@@ -3,7 +3,7 @@
 // long-horizon oscillator (docs/paper-notes.md#erratum-4), and option validation.
 #include <iostream>
 
-#include "cartan/models/heisenberg_oscillator.hpp"
+#include "cartan/mechanics/heisenberg_oscillator.hpp"
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/multiple_shooting.hpp"
 #include "test_support.hpp"
@@ -13,8 +13,8 @@ namespace cartan::testing {
 namespace {
 
 // Max over the nodes of the differences in g, v and xi between two trajectories.
-template <LieGroup G>
-double trajectory_difference(const TransportedTrajectory<G>& a, const TransportedTrajectory<G>& b) {
+template <groups::LieGroup G>
+double trajectory_difference(const transported::TransportedTrajectory<G>& a, const transported::TransportedTrajectory<G>& b) {
   EXPECT_EQ(a.g.size(), b.g.size());
   double worst = 0;
   for (std::size_t k = 0; k < std::min(a.g.size(), b.g.size()); ++k) {
@@ -30,16 +30,16 @@ double trajectory_difference(const TransportedTrajectory<G>& a, const Transporte
 TEST(MultipleShooting, SameSolutionAsSingleShooting) {
   for (double lambda : {0.0, 0.5, 1.0}) {
     const auto problem = paper_free_body(lambda);
-    const auto single = solve_shooting(problem, {.tolerance = 1e-12});
+    const auto single = transported::solve_shooting(problem, {.tolerance = 1e-12});
     ASSERT_TRUE(single.converged()) << single.message;
     for (int segments : {1, 4, 10}) {
       {
-        const auto multiple = solve_multiple_shooting(problem, {.segments = segments, .tolerance = 1e-12});
+        const auto multiple = transported::solve_multiple_shooting(problem, {.segments = segments, .tolerance = 1e-12});
         const std::string where =
             "lambda " + std::to_string(lambda) + " M " + std::to_string(segments) + ": " + multiple.message;
         ASSERT_TRUE(multiple.converged()) << where;
         EXPECT_EQ(multiple.status, Status::Converged) << where;
-        EXPECT_EQ(multiple.method, Method::MultipleShooting);
+        EXPECT_EQ(multiple.method, transported::Method::MultipleShooting);
         EXPECT_LE(std::hypot(multiple.terminal_error, multiple.xi_terminal), 1e-12) << where;
         EXPECT_LE((multiple.v0 - single.v0).norm(), 1e-10) << where;
         EXPECT_LE(trajectory_difference(multiple.trajectory, single.trajectory), 1e-10) << where;
@@ -54,11 +54,11 @@ TEST(MultipleShooting, SameSolutionAsSingleShooting) {
 // Step 1e-6: truncation ~1e-12 |r'''|, rounding ~1e-16 |r| / 1e-6 per entry, amplified by at
 // most ~10^2 over 10 steps, so 1e-6 (relative to the column) has a wide margin; the entries
 // are O(1). H3 exercises a non-orthogonal P and the central (pure gauge) part of h.
-template <LieGroup G, ReducedLagrangian<G> L>
-void expect_jacobian_matches_differences(const TransportedProblem<G, L>& problem, SchemeOrder order,
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+void expect_jacobian_matches_differences(const transported::TransportedProblem<G, L>& problem, transported::SchemeOrder order,
                                          std::mt19937& rng) {
-  const TransportedScheme<G, L> scheme(problem, order);
-  MultipleShootingSystem<G, L> system(scheme, 4);
+  const transported::TransportedScheme<G, L> scheme(problem, order);
+  transported::MultipleShootingSystem<G, L> system(scheme, 4);
   const auto start = system.initialise(random_tangent<G>(rng, 0.5), random_tangent<G>(rng, 0.3));
   ASSERT_TRUE(start) << system.failure();
   Eigen::VectorXd x = *start;
@@ -85,11 +85,11 @@ void expect_jacobian_matches_differences(const TransportedProblem<G, L>& problem
 TEST(MultipleShooting, JacobianMatchesCentralDifferences) {
   std::mt19937 rng(kSeed);
   for (double lambda : {0.0, 0.5, 1.0, 1.4}) {
-    for (SchemeOrder order : {SchemeOrder::First, SchemeOrder::Second}) {
+    for (transported::SchemeOrder order : {transported::SchemeOrder::First, transported::SchemeOrder::Second}) {
       expect_jacobian_matches_differences(paper_oscillator(lambda, 40, 3.0), order, rng);
-      const TransportedProblem<Heisenberg, H3Oscillator> h3{h3_oscillator(), lambda, 1.0, 40,
-                                                            Heisenberg::Element(0.2, -0.1, 0.3),
-                                                            Heisenberg::Element(1.0, 0.5, 0.8)};
+      const transported::TransportedProblem<groups::Heisenberg, mechanics::H3Oscillator> h3{mechanics::h3_oscillator(), lambda, 1.0, 40,
+                                                            groups::Heisenberg::Element(0.2, -0.1, 0.3),
+                                                            groups::Heisenberg::Element(1.0, 0.5, 0.8)};
       expect_jacobian_matches_differences(h3, order, rng);
     }
   }
@@ -99,15 +99,15 @@ TEST(MultipleShooting, JacobianMatchesCentralDifferences) {
 // residual at the guess; re-centring the charts moves no state.
 TEST(MultipleShooting, SweepStartJoinsAndRecentringKeepsTheState) {
   const auto problem = paper_oscillator(0.5, 60, 3.0);
-  const TransportedScheme<SO3, SO3Oscillator> scheme(problem, SchemeOrder::Second);
-  MultipleShootingSystem<SO3, SO3Oscillator> system(scheme, 5);
+  const transported::TransportedScheme<groups::SO3, mechanics::SO3Oscillator> scheme(problem, transported::SchemeOrder::Second);
+  transported::MultipleShootingSystem<groups::SO3, mechanics::SO3Oscillator> system(scheme, 5);
   const Eigen::Vector3d v0(0.3, -0.2, 0.4), xi0(0.1, 0.0, -0.2);
   auto x = system.initialise(v0, xi0);
   ASSERT_TRUE(x) << system.failure();
   Eigen::VectorXd r;
   ASSERT_TRUE(system.evaluate(*x, r, nullptr));
-  SweepOutput<SO3, SO3Oscillator> out;
-  ASSERT_TRUE(forward_sweep(scheme, v0, xi0, nullptr, 0, out));
+  transported::SweepOutput<groups::SO3, mechanics::SO3Oscillator> out;
+  ASSERT_TRUE(transported::forward_sweep(scheme, v0, xi0, nullptr, 0, out));
   EXPECT_LE(r.head(r.size() - 6).cwiseAbs().maxCoeff(), 1e-15);
   EXPECT_LE(max_abs_diff(r.tail<3>(), out.last.xi), 1e-15);
   EXPECT_LE(max_abs_diff(r.tail<6>().head<3>(), scheme.terminal_residual(out.last)), 1e-15);
@@ -134,10 +134,10 @@ TEST(MultipleShooting, SweepStartJoinsAndRecentringKeepsTheState) {
 TEST(MultipleShooting, LongHorizonOscillatorFromTheGeodesicGuess) {
   for (double lambda : {0.0, 0.5, 1.0}) {
     const auto problem = paper_oscillator(lambda);
-    const auto continued = solve_continuation_in_T(problem, {.shooting = {.tolerance = 1e-10}});
+    const auto continued = transported::solve_continuation_in_T(problem, {.shooting = {.tolerance = 1e-10}});
     ASSERT_TRUE(continued.converged()) << continued.message;
     for (int segments : {8, 16}) {
-      const auto s = solve_multiple_shooting(problem, {.segments = segments});
+      const auto s = transported::solve_multiple_shooting(problem, {.segments = segments});
       std::cout << "[ oscillator T=12 ] lambda " << lambda << " M " << segments << ": " << to_string(s.status) << ", "
                 << s.inner_iterations << " iterations, " << s.sweeps << " sweeps, " << s.solve_time_s
                 << " s, |v0 - v0(continuation)| = " << (s.v0 - continued.v0).norm() << "\n";
@@ -170,10 +170,10 @@ TEST(MultipleShooting, LongHorizonOscillatorFromTheGeodesicGuess) {
 TEST(MultipleShooting, LongHorizonOscillatorNearTheContinuationSolution) {
   for (double lambda : {0.0, 0.5, 1.0}) {
     const auto problem = paper_oscillator(lambda);
-    const auto continued = solve_continuation_in_T(problem, {.shooting = {.tolerance = 1e-11}});
+    const auto continued = transported::solve_continuation_in_T(problem, {.shooting = {.tolerance = 1e-11}});
     ASSERT_TRUE(continued.converged()) << continued.message;
     const Eigen::Vector3d guess = continued.v0 + 1e-3 * Eigen::Vector3d(1, -1, 1);
-    const auto s = solve_multiple_shooting(problem, {.tolerance = 1e-11}, guess, continued.xi0);
+    const auto s = transported::solve_multiple_shooting(problem, {.tolerance = 1e-11}, guess, continued.xi0);
     ASSERT_TRUE(s.converged()) << s.message;
     EXPECT_LE((s.v0 - continued.v0).norm(), 1e-11) << s.message;
     EXPECT_LE(trajectory_difference(s.trajectory, continued.trajectory), 1e-9) << s.message;
@@ -181,7 +181,7 @@ TEST(MultipleShooting, LongHorizonOscillatorNearTheContinuationSolution) {
 }
 
 TEST(MultipleShooting, FailuresAreReportedNotHidden) {
-  const auto s = solve_multiple_shooting(paper_oscillator(0.5, 100, 12), {.segments = 4, .max_iterations = 2});
+  const auto s = transported::solve_multiple_shooting(paper_oscillator(0.5, 100, 12), {.segments = 4, .max_iterations = 2});
   EXPECT_FALSE(s.converged());
   EXPECT_EQ(s.status, Status::MaxIterations);
   EXPECT_EQ(s.inner_iterations, 2);
@@ -191,7 +191,7 @@ TEST(MultipleShooting, FailuresAreReportedNotHidden) {
 
 TEST(MultipleShooting, RejectsBadOptions) {
   const auto problem = paper_free_body(0.5, 10);
-  auto solve = [&](MultipleShootingOptions options) { return [=] { solve_multiple_shooting(problem, options); }; };
+  auto solve = [&](transported::MultipleShootingOptions options) { return [=] { transported::solve_multiple_shooting(problem, options); }; };
   expect_invalid(solve({.segments = 0}), "segments = 0");
   expect_invalid(solve({.segments = -3}), "segments = -3");
   expect_invalid(solve({.segments = 11}), "segments = 11 must be at most N = 10");
@@ -199,16 +199,16 @@ TEST(MultipleShooting, RejectsBadOptions) {
   expect_invalid(solve({.tolerance = std::nan("")}), "tolerance = nan");
   expect_invalid(solve({.max_iterations = 0}), "max_iterations = 0");
   expect_invalid(solve({.recentre_every = -1}), "recentre_every = -1");
-  expect_invalid(solve({.order = static_cast<SchemeOrder>(3)}), "order = 3");
-  const TransportedScheme<SO3, RigidBody> scheme(problem, SchemeOrder::First);
-  expect_invalid([&] { MultipleShootingSystem<SO3, RigidBody>(scheme, 12); }, "segments = 12");
+  expect_invalid(solve({.order = static_cast<transported::SchemeOrder>(3)}), "order = 3");
+  const transported::TransportedScheme<groups::SO3, mechanics::RigidBody> scheme(problem, transported::SchemeOrder::First);
+  expect_invalid([&] { transported::MultipleShootingSystem<groups::SO3, mechanics::RigidBody>(scheme, 12); }, "segments = 12");
   const Eigen::Vector3d bad(std::nan(""), 0, 0);
-  expect_invalid([&] { solve_multiple_shooting(problem, {}, bad, Eigen::Vector3d::Zero()); }, "v0_guess");
+  expect_invalid([&] { transported::solve_multiple_shooting(problem, {}, bad, Eigen::Vector3d::Zero()); }, "v0_guess");
   // The default number of segments fits any N.
-  EXPECT_EQ(default_segments(1), 1);
-  EXPECT_EQ(default_segments(800), 8);
-  EXPECT_EQ(default_segments(100000), 16);
-  EXPECT_TRUE(solve_multiple_shooting(paper_free_body(0.5, 3, 0.5)).converged());
+  EXPECT_EQ(transported::default_segments(1), 1);
+  EXPECT_EQ(transported::default_segments(800), 8);
+  EXPECT_EQ(transported::default_segments(100000), 16);
+  EXPECT_TRUE(transported::solve_multiple_shooting(paper_free_body(0.5, 3, 0.5)).converged());
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // The discrete transported-velocity scheme: its tangent-linear map, and the agreement of the
 // augmented shooting with the paper's two-level fixed point.
-#include "cartan/models/heisenberg_oscillator.hpp"
+#include "cartan/mechanics/heisenberg_oscillator.hpp"
 #include "cartan/transported/two_level.hpp"
 #include "test_support.hpp"
 #include "transported/paper_cases.hpp"
@@ -11,20 +11,20 @@ namespace {
 // The shooting map x = (v0, xi0) -> (log(gT^{-1} g_N), xi_N) and its Jacobian from one
 // tangent-linear sweep, compared with central differences (step 1e-6: truncation ~1e-12
 // |r'''|, rounding ~1e-16 N / 1e-6 ~ 1e-8 for N = 40): relative agreement 1e-6.
-template <LieGroup G, ReducedLagrangian<G> L>
-void expect_tangent_matches_differences(const TransportedProblem<G, L>& problem, SchemeOrder order,
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+void expect_tangent_matches_differences(const transported::TransportedProblem<G, L>& problem, transported::SchemeOrder order,
                                         std::mt19937& rng) {
   constexpr int n = G::kDim;
-  const TransportedScheme<G, L> scheme(problem, order);
-  auto shoot = [&](const Eigen::VectorXd& x, int columns, SweepOutput<G, L>& out) {
-    EXPECT_TRUE(forward_sweep(scheme, TangentOf<G>(x.head<n>()), CovectorOf<G>(x.tail<n>()), nullptr, columns, out))
+  const transported::TransportedScheme<G, L> scheme(problem, order);
+  auto shoot = [&](const Eigen::VectorXd& x, int columns, transported::SweepOutput<G, L>& out) {
+    EXPECT_TRUE(transported::forward_sweep(scheme, groups::TangentOf<G>(x.head<n>()), groups::CovectorOf<G>(x.tail<n>()), nullptr, columns, out))
         << out.failure;
     Eigen::VectorXd r(2 * n);
     r << scheme.terminal_residual(out.last), out.last.xi;
     return r;
   };
   const Eigen::VectorXd x = random_vector<Eigen::Matrix<double, 2 * n, 1>>(rng, 0.5);
-  SweepOutput<G, L> out;
+  transported::SweepOutput<G, L> out;
   const Eigen::VectorXd r = shoot(x, 2 * n, out);
   Eigen::MatrixXd jac(2 * n, 2 * n);
   jac.topRows(n) = scheme.terminal_residual_tangent(r.head<n>(), *out.tangent);
@@ -34,7 +34,7 @@ void expect_tangent_matches_differences(const TransportedProblem<G, L>& problem,
     Eigen::VectorXd xp = x, xm = x;
     xp[i] += step;
     xm[i] -= step;
-    SweepOutput<G, L> op, om;
+    transported::SweepOutput<G, L> op, om;
     const Eigen::VectorXd column = (shoot(xp, 0, op) - shoot(xm, 0, om)) / (2 * step);
     EXPECT_LE((jac.col(i) - column).norm(), 1e-6 * (1 + column.norm()))
         << G::name() << " lambda " << problem.lambda << " order " << static_cast<int>(order) << " column " << i
@@ -45,14 +45,14 @@ void expect_tangent_matches_differences(const TransportedProblem<G, L>& problem,
 TEST(TransportedScheme, TangentLinearMatchesFiniteDifferences) {
   std::mt19937 rng(kSeed);
   for (double lambda : {0.0, 0.5, 1.0, 1.4, -0.2}) {
-    for (SchemeOrder order : {SchemeOrder::First, SchemeOrder::Second}) {
+    for (transported::SchemeOrder order : {transported::SchemeOrder::First, transported::SchemeOrder::Second}) {
       auto oscillator = paper_oscillator(lambda, 40, 2.0);
       expect_tangent_matches_differences(oscillator, order, rng);
       auto free_body = paper_free_body(lambda, 40, 3.0);
       expect_tangent_matches_differences(free_body, order, rng);
-      const TransportedProblem<Heisenberg, H3Oscillator> h3{h3_oscillator(), lambda, 1.0, 40,
-                                                                    Heisenberg::Element(0.2, -0.1, 0.3),
-                                                                    Heisenberg::Element(1.0, 0.5, 0.8)};
+      const transported::TransportedProblem<groups::Heisenberg, mechanics::H3Oscillator> h3{mechanics::h3_oscillator(), lambda, 1.0, 40,
+                                                                    groups::Heisenberg::Element(0.2, -0.1, 0.3),
+                                                                    groups::Heisenberg::Element(1.0, 0.5, 0.8)};
       expect_tangent_matches_differences(h3, order, rng);
     }
   }
@@ -61,16 +61,16 @@ TEST(TransportedScheme, TangentLinearMatchesFiniteDifferences) {
 // The models' analytic second derivatives against central differences of their first
 // derivatives (step 1e-5: error ~1e-10 on O(1) entries). The static_assert makes sure the
 // analytic path is the one under test (lagrangian_hessian falls back to differences otherwise).
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 void expect_hessian_matches_differences(const L& l, std::mt19937& rng) {
-  static_assert(requires(double t, const ElementOf<G>& g, const TangentOf<G>& v) {
-    { l.hessian(t, g, v) } -> std::convertible_to<LagrangianHessian<G>>;
+  static_assert(requires(double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) {
+    { l.hessian(t, g, v) } -> std::convertible_to<mechanics::LagrangianHessian<G>>;
   }, "the model must provide an analytic hessian(t, g, v)");
   for (int trial = 0; trial < 5; ++trial) {
     const auto g = random_element<G>(rng, 1.5);
     const auto v = random_tangent<G>(rng, 2.0);
-    const auto analytic = lagrangian_hessian<G>(l, 0.3, g, v);
-    const auto fd = lagrangian_hessian_fd<G>(l, 0.3, g, v);
+    const auto analytic = mechanics::lagrangian_hessian<G>(l, 0.3, g, v);
+    const auto fd = mechanics::lagrangian_hessian_fd<G>(l, 0.3, g, v);
     EXPECT_NEAR_MATRIX(analytic.momentum_v, fd.momentum_v, 1e-8);
     EXPECT_NEAR_MATRIX(analytic.momentum_g, fd.momentum_g, 1e-8);
     EXPECT_NEAR_MATRIX(analytic.gradient_v, fd.gradient_v, 1e-8);
@@ -80,9 +80,9 @@ void expect_hessian_matches_differences(const L& l, std::mt19937& rng) {
 
 TEST(TransportedScheme, ModelHessiansMatchFiniteDifferences) {
   std::mt19937 rng(kSeed);
-  expect_hessian_matches_differences<SO3>(RigidBody(paper_inertia()), rng);
-  expect_hessian_matches_differences<SO3>(SO3Oscillator(paper_inertia()), rng);
-  expect_hessian_matches_differences<Heisenberg>(h3_oscillator(), rng);
+  expect_hessian_matches_differences<groups::SO3>(mechanics::RigidBody(paper_inertia()), rng);
+  expect_hessian_matches_differences<groups::SO3>(mechanics::SO3Oscillator(paper_inertia()), rng);
+  expect_hessian_matches_differences<groups::Heisenberg>(mechanics::h3_oscillator(), rng);
 }
 
 // docs/paper-notes.md#erratum-4: the augmented shooting reaches the same discrete solution as the
@@ -90,9 +90,9 @@ TEST(TransportedScheme, ModelHessiansMatchFiniteDifferences) {
 // With the outer tolerance at 1e-13 the two differ by the remaining fixed-point error only;
 // 1e-10 on v0 and on every g_k and xi_k is the figure docs/paper-notes.md#erratum-4 records.
 template <class Problem>
-void expect_augmented_equals_two_level(const Problem& problem, SchemeOrder order, const std::string& what) {
-  const auto shooting = solve_shooting(problem, {.order = order, .tolerance = 1e-12});
-  const auto two_level = solve_two_level(problem, {.order = order, .tolerance = 1e-13});
+void expect_augmented_equals_two_level(const Problem& problem, transported::SchemeOrder order, const std::string& what) {
+  const auto shooting = transported::solve_shooting(problem, {.order = order, .tolerance = 1e-12});
+  const auto two_level = transported::solve_two_level(problem, {.order = order, .tolerance = 1e-13});
   ASSERT_TRUE(shooting.converged()) << what << shooting.message;
   ASSERT_TRUE(two_level.converged()) << what << two_level.message;
   EXPECT_LE((shooting.v0 - two_level.v0).norm(), 1e-10) << what;
@@ -105,7 +105,7 @@ void expect_augmented_equals_two_level(const Problem& problem, SchemeOrder order
 }
 
 TEST(TransportedScheme, AugmentedShootingEqualsTwoLevelFixedPoint) {
-  for (SchemeOrder order : {SchemeOrder::First, SchemeOrder::Second}) {
+  for (transported::SchemeOrder order : {transported::SchemeOrder::First, transported::SchemeOrder::Second}) {
     for (double lambda : {0.0, 0.5, 1.0}) {
       const std::string what = "order " + std::to_string(static_cast<int>(order)) + " lambda " + std::to_string(lambda);
       expect_augmented_equals_two_level(paper_free_body(lambda), order, "free body " + what + ": ");
@@ -118,8 +118,8 @@ TEST(TransportedScheme, AugmentedShootingEqualsTwoLevelFixedPoint) {
 // far fewer sweeps (each tangent sweep counts once; a finite-difference Jacobian costs 2n + 1).
 TEST(TransportedScheme, AnalyticJacobianSavesSweeps) {
   const auto problem = paper_free_body(0.5);
-  const auto analytic = solve_shooting(problem, {.tolerance = 1e-11});
-  const auto differences = solve_shooting(problem, {.tolerance = 1e-11, .analytic_jacobian = false});
+  const auto analytic = transported::solve_shooting(problem, {.tolerance = 1e-11});
+  const auto differences = transported::solve_shooting(problem, {.tolerance = 1e-11, .analytic_jacobian = false});
   ASSERT_TRUE(analytic.converged()) << analytic.message;
   ASSERT_TRUE(differences.converged()) << differences.message;
   EXPECT_LE((analytic.v0 - differences.v0).norm(), 1e-10);
@@ -128,12 +128,12 @@ TEST(TransportedScheme, AnalyticJacobianSavesSweeps) {
 
 TEST(TransportedScheme, FailuresAreReportedNotHidden) {
   auto problem = paper_oscillator(0.5, 100, 12);
-  const auto limited = solve_shooting(problem, {.tolerance = 1e-12, .max_iterations = 2});
+  const auto limited = transported::solve_shooting(problem, {.tolerance = 1e-12, .max_iterations = 2});
   EXPECT_FALSE(limited.converged());
   EXPECT_EQ(limited.status, Status::MaxIterations);
   EXPECT_NE(limited.message.find("|r| = "), std::string::npos) << limited.message;
   EXPECT_EQ(limited.inner_iterations, 2);
-  const auto two_level = solve_two_level(problem, {.max_outer = 1});
+  const auto two_level = transported::solve_two_level(problem, {.max_outer = 1});
   EXPECT_FALSE(two_level.converged());
   EXPECT_NE(two_level.message.find("outer"), std::string::npos) << two_level.message;
 }
@@ -141,26 +141,26 @@ TEST(TransportedScheme, FailuresAreReportedNotHidden) {
 TEST(TransportedScheme, RejectsBadProblems) {
   auto bad_step = paper_free_body(0.5, 10);
   bad_step.T = -2;
-  expect_invalid([&] { TransportedScheme<SO3, RigidBody>(bad_step, SchemeOrder::First); }, "T = -2");
-  expect_invalid([&] { TransportedScheme<SO3, RigidBody>(paper_free_body(0.5, 10), SchemeOrder{3}); }, "order = 3");
+  expect_invalid([&] { transported::TransportedScheme<groups::SO3, mechanics::RigidBody>(bad_step, transported::SchemeOrder::First); }, "T = -2");
+  expect_invalid([&] { transported::TransportedScheme<groups::SO3, mechanics::RigidBody>(paper_free_body(0.5, 10), transported::SchemeOrder{3}); }, "order = 3");
   auto problem = paper_free_body(0.5, 10);
   problem.T = 0;
-  EXPECT_THROW(solve_shooting(problem), std::invalid_argument);
+  EXPECT_THROW(transported::solve_shooting(problem), std::invalid_argument);
   problem = paper_free_body(0.5, 10);
   problem.N = 0;
-  EXPECT_THROW(solve_two_level(problem), std::invalid_argument);
+  EXPECT_THROW(transported::solve_two_level(problem), std::invalid_argument);
   problem = paper_free_body(std::nan(""), 10);
-  EXPECT_THROW(solve_shooting(problem), std::invalid_argument);
+  EXPECT_THROW(transported::solve_shooting(problem), std::invalid_argument);
   problem = paper_free_body(0.5, 10);
   problem.gT(0, 0) = 2;
   try {
-    solve_shooting(problem);
+    transported::solve_shooting(problem);
     ADD_FAILURE() << "non-rotation gT accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("gT = "), std::string::npos) << e.what();
   }
-  EXPECT_THROW(solve_shooting(paper_free_body(0.5, 10), {.tolerance = 0}), std::invalid_argument);
-  EXPECT_THROW(solve_two_level(paper_free_body(0.5, 10), {.tolerance = -1}), std::invalid_argument);
+  EXPECT_THROW(transported::solve_shooting(paper_free_body(0.5, 10), {.tolerance = 0}), std::invalid_argument);
+  EXPECT_THROW(transported::solve_two_level(paper_free_body(0.5, 10), {.tolerance = -1}), std::invalid_argument);
 }
 
 }  // namespace

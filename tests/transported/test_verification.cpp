@@ -8,7 +8,7 @@
 
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/two_level.hpp"
-#include "cartan/verify/action.hpp"
+#include "cartan/transported/action.hpp"
 #include "test_support.hpp"
 #include "transported/paper_cases.hpp"
 
@@ -18,9 +18,9 @@ namespace {
 /// Observed order log2(e(N) / e(2N)).
 double observed_order(double coarse, double fine) { return std::log2(coarse / fine); }
 
-template <ReducedLagrangian<SO3> L>
-TransportedSolution<SO3> solve_or_fail(const TransportedProblem<SO3, L>& p, SchemeOrder order) {
-  auto s = solve_continuation_in_T(p, {.shooting = {.order = order, .tolerance = 1e-12}});
+template <mechanics::ReducedLagrangian<groups::SO3> L>
+transported::TransportedSolution<groups::SO3> solve_or_fail(const transported::TransportedProblem<groups::SO3, L>& p, transported::SchemeOrder order) {
+  auto s = transported::solve_continuation_in_T(p, {.shooting = {.order = order, .tolerance = 1e-12}});
   EXPECT_TRUE(s.converged()) << s.message;
   return s;
 }
@@ -41,18 +41,18 @@ std::vector<Eigen::Vector3d> variation(int N) {
 // (docs/paper-notes.md#erratum-1: with the paper's force sign it would not fall at all). Observed
 // orders must be within 0.25 of the scheme's order on N = 200 -> 400 -> 800.
 TEST(TransportedVerification, ActionIsStationaryAtTheSchemesOrder) {
-  for (SchemeOrder order : {SchemeOrder::First, SchemeOrder::Second}) {
+  for (transported::SchemeOrder order : {transported::SchemeOrder::First, transported::SchemeOrder::Second}) {
     for (double lambda : {0.0, 0.5, 1.0}) {
       std::vector<double> free_body, oscillator;
       for (int N : {200, 400, 800}) {
         const auto fb = paper_free_body(lambda, N, 5.0);
         const auto fs = solve_or_fail(fb, order);
         free_body.push_back(std::abs(
-            transported_action_derivative<SO3>(fb.lagrangian, lambda, fb.T, fs.trajectory.g, variation(N))));
+            transported::transported_action_derivative<groups::SO3>(fb.lagrangian, lambda, fb.T, fs.trajectory.g, variation(N))));
         const auto os = paper_oscillator(lambda, N, 3.0);
         const auto oss = solve_or_fail(os, order);
         oscillator.push_back(std::abs(
-            transported_action_derivative<SO3>(os.lagrangian, lambda, os.T, oss.trajectory.g, variation(N))));
+            transported::transported_action_derivative<groups::SO3>(os.lagrangian, lambda, os.T, oss.trajectory.g, variation(N))));
       }
       const double expected = static_cast<double>(order);
       for (const auto* d : {&free_body, &oscillator}) {
@@ -71,7 +71,7 @@ TEST(TransportedVerification, ActionIsStationaryAtTheSchemesOrder) {
 template <class MakeProblem, class Energy>
 void expect_energy_drift_at_order(const MakeProblem& make, const Energy& energy, const std::string& what,
                                   const std::array<double, 2>& expected) {
-  for (SchemeOrder order : {SchemeOrder::First, SchemeOrder::Second}) {
+  for (transported::SchemeOrder order : {transported::SchemeOrder::First, transported::SchemeOrder::Second}) {
     const double expected_order = expected[static_cast<std::size_t>(order) - 1];
     for (double lambda : {0.0, 0.5, 1.0}) {
       std::vector<double> drift;
@@ -96,14 +96,14 @@ void expect_energy_drift_at_order(const MakeProblem& make, const Energy& energy,
 TEST(TransportedVerification, EnergyDriftShrinksAtTheSchemesOrder) {
   const Eigen::Matrix3d inertia = paper_inertia();
   expect_energy_drift_at_order([](double lambda, int N) { return paper_oscillator(lambda, N, 3.0); },
-                               [&](const SO3::Element& g, const Eigen::Vector3d& v) {
-                                 return 0.5 * v.dot(inertia * v) + SO3TracePotential().value(g);
+                               [&](const groups::SO3::Element& g, const Eigen::Vector3d& v) {
+                                 return 0.5 * v.dot(inertia * v) + mechanics::SO3TracePotential().value(g);
                                },
                                "oscillator T = 3", {1, 2});
   // Measured: the order-2 scheme conserves the free body's kinetic energy to O(h^3) (3.00 for
   // every lambda on N = 200 -> 400 -> 800), one order better than its global error.
   expect_energy_drift_at_order([](double lambda, int N) { return paper_free_body(lambda, N, 10.0); },
-                               [&](const SO3::Element&, const Eigen::Vector3d& v) { return 0.5 * v.dot(inertia * v); },
+                               [&](const groups::SO3::Element&, const Eigen::Vector3d& v) { return 0.5 * v.dot(inertia * v); },
                                "free body T = 10", {1, 3});
 }
 
@@ -118,7 +118,7 @@ TEST(TransportedVerification, ClassicalLimitsLambdaZeroAndOne) {
     auto rhs = [&](const Eigen::Vector3d& v) -> Eigen::Vector3d {
       return inertia.inverse() * (sign * v.cross(inertia * v));
     };
-    for (SchemeOrder order : {SchemeOrder::First, SchemeOrder::Second}) {
+    for (transported::SchemeOrder order : {transported::SchemeOrder::First, transported::SchemeOrder::Second}) {
       std::vector<double> error;
       for (int N : {250, 500, 1000}) {
         const auto s = solve_or_fail(paper_free_body(lambda, N, 50.0), order);
@@ -146,9 +146,9 @@ TEST(TransportedVerification, ClassicalLimitsLambdaZeroAndOne) {
 // paper's free-body gT to gT^{-1} while fixing I: v0(1) = S v0(0) and v0(1/2)_1 = 0. The
 // discrete scheme inherits the symmetry, so it holds to rounding of the solves (1e-11).
 TEST(TransportedVerification, InversionReflectionSymmetryOfTheFreeBody) {
-  const auto s0 = solve_shooting(paper_free_body(0.0), {.tolerance = 1e-13});
-  const auto s1 = solve_shooting(paper_free_body(1.0), {.tolerance = 1e-13});
-  const auto sh = solve_shooting(paper_free_body(0.5), {.tolerance = 1e-13});
+  const auto s0 = transported::solve_shooting(paper_free_body(0.0), {.tolerance = 1e-13});
+  const auto s1 = transported::solve_shooting(paper_free_body(1.0), {.tolerance = 1e-13});
+  const auto sh = transported::solve_shooting(paper_free_body(0.5), {.tolerance = 1e-13});
   ASSERT_TRUE(s0.converged() && s1.converged() && sh.converged());
   EXPECT_LE((s1.v0 - Eigen::Vector3d(-1, 1, 1).asDiagonal() * s0.v0).norm(), 1e-11);
   EXPECT_LE(std::abs(sh.v0[0]), 1e-11);
@@ -167,13 +167,13 @@ TEST(TransportedVerification, InversionReflectionSymmetryOfTheFreeBody) {
 // ~(h/16)^2 is far below the coarse errors): the discrete v0 and g(T/2) converge at order 1 for
 // the paper's scheme and order 2 for ours (within 0.25 on N = 200 -> 400 -> 800), lambda = 1/2.
 TEST(TransportedVerification, ConvergenceOrderAgainstFineReference) {
-  const auto reference = solve_or_fail(paper_oscillator(0.5, 6400, 3.0), SchemeOrder::Second);
+  const auto reference = solve_or_fail(paper_oscillator(0.5, 6400, 3.0), transported::SchemeOrder::Second);
   const Eigen::Matrix3d g_mid = reference.trajectory.g[3200];
-  for (SchemeOrder order : {SchemeOrder::First, SchemeOrder::Second}) {
+  for (transported::SchemeOrder order : {transported::SchemeOrder::First, transported::SchemeOrder::Second}) {
     std::vector<double> error;
     for (int N : {200, 400, 800}) {
       const auto s = solve_or_fail(paper_oscillator(0.5, N, 3.0), order);
-      const Eigen::Vector3d dg = SO3::log(g_mid.transpose() * s.trajectory.g[static_cast<std::size_t>(N / 2)]);
+      const Eigen::Vector3d dg = groups::SO3::log(g_mid.transpose() * s.trajectory.g[static_cast<std::size_t>(N / 2)]);
       error.push_back(std::max((s.v0 - reference.v0).norm(), dg.norm()));
     }
     const double expected = static_cast<double>(order);
@@ -186,11 +186,11 @@ TEST(TransportedVerification, ConvergenceOrderAgainstFineReference) {
 // continuation in T otherwise): all converge with terminal error below the paper's tolerance.
 TEST(TransportedVerification, SixPaperCasesConverge) {
   for (double lambda : {0.0, 0.5, 1.0}) {
-    const auto fb = solve_continuation_in_T(paper_free_body(lambda), {.shooting = {.tolerance = 1e-10}});
+    const auto fb = transported::solve_continuation_in_T(paper_free_body(lambda), {.shooting = {.tolerance = 1e-10}});
     EXPECT_TRUE(fb.converged()) << fb.message;
     EXPECT_LT(fb.terminal_error, 1e-8);
     EXPECT_EQ(fb.branch, "direct from the geodesic guess");
-    const auto os = solve_continuation_in_T(paper_oscillator(lambda), {.shooting = {.tolerance = 1e-10}});
+    const auto os = transported::solve_continuation_in_T(paper_oscillator(lambda), {.shooting = {.tolerance = 1e-10}});
     EXPECT_TRUE(os.converged()) << os.message;
     EXPECT_LT(os.terminal_error, 1e-6);
     EXPECT_EQ(os.branch.rfind("continued in T from T = 3", 0), 0u) << os.branch;
@@ -203,17 +203,17 @@ TEST(TransportedVerification, SixPaperCasesConverge) {
 // solves stop at |r| <= 1e-8 and distinct branches differ by O(0.1) in v0, so 1e-6 separates
 // "same branch" from "another branch" with room for the Jacobian's conditioning at T = 12.
 TEST(TransportedVerification, ContinuationInLambdaReachesTheContinuationInTBranch) {
-  const ContinuationOptions options{.shooting = {.tolerance = 1e-8}};
+  const transported::ContinuationOptions options{.shooting = {.tolerance = 1e-8}};
   for (double lambda : {0.5, 1.0}) {
-    const auto fb = solve_continuation_in_lambda(paper_free_body(lambda), 0.0, options);
+    const auto fb = transported::solve_continuation_in_lambda(paper_free_body(lambda), 0.0, options);
     ASSERT_TRUE(fb.converged()) << fb.message;
     EXPECT_EQ(fb.branch.rfind("continued in lambda from lambda = 0 [direct from the geodesic guess]", 0), 0u) << fb.branch;
-    EXPECT_LE((fb.v0 - solve_shooting(paper_free_body(lambda), options.shooting).v0).norm(), 1e-7);
-    const auto os = solve_continuation_in_lambda(paper_oscillator(lambda), 0.0, options);
+    EXPECT_LE((fb.v0 - transported::solve_shooting(paper_free_body(lambda), options.shooting).v0).norm(), 1e-7);
+    const auto os = transported::solve_continuation_in_lambda(paper_oscillator(lambda), 0.0, options);
     ASSERT_TRUE(os.converged()) << os.message;
     EXPECT_LT(os.terminal_error, 1e-8);
     EXPECT_EQ(os.branch.rfind("continued in lambda from lambda = 0 [continued in T from T = 3", 0), 0u) << os.branch;
-    EXPECT_LE((os.v0 - solve_continuation_in_T(paper_oscillator(lambda), options).v0).norm(), 1e-6) << lambda;
+    EXPECT_LE((os.v0 - transported::solve_continuation_in_T(paper_oscillator(lambda), options).v0).norm(), 1e-6) << lambda;
   }
 }
 
@@ -225,17 +225,17 @@ TEST(TransportedVerification, ContinuationInLambdaReachesTheContinuationInTBranc
 // Both solves stop at |r| <= 1e-8 and the branches differ by O(0.1) in v0, so 1e-6 in v0 says
 // "same branch" with room for the Jacobian's conditioning near T = 12.
 TEST(TransportedVerification, ContinuationInTDoesNotJumpBranches) {
-  ContinuationOptions coarse{.shooting = {.tolerance = 1e-8}};
-  ContinuationOptions fine = coarse;
+  transported::ContinuationOptions coarse{.shooting = {.tolerance = 1e-8}};
+  transported::ContinuationOptions fine = coarse;
   fine.initial_stages = 128;
   for (double lambda : {0.0, 0.5, 1.0}) {
-    const auto a = solve_continuation_in_T(paper_oscillator(lambda), coarse);
-    const auto b = solve_continuation_in_T(paper_oscillator(lambda), fine);
+    const auto a = transported::solve_continuation_in_T(paper_oscillator(lambda), coarse);
+    const auto b = transported::solve_continuation_in_T(paper_oscillator(lambda), fine);
     ASSERT_TRUE(a.converged() && b.converged()) << a.message << b.message;
     EXPECT_LE((a.v0 - b.v0).norm(), 1e-6) << lambda;
     double turned = 0;  // total rotation angle along the path, in revolutions
     for (std::size_t k = 0; k + 1 < a.trajectory.g.size(); ++k) {
-      turned += SO3::log(a.trajectory.g[k].transpose() * a.trajectory.g[k + 1]).norm() / (2 * std::numbers::pi);
+      turned += groups::SO3::log(a.trajectory.g[k].transpose() * a.trajectory.g[k + 1]).norm() / (2 * std::numbers::pi);
     }
     EXPECT_LT(turned, 1.0) << lambda;
   }
@@ -243,13 +243,13 @@ TEST(TransportedVerification, ContinuationInTDoesNotJumpBranches) {
 
 // The discrete action's inputs are checked (it used to read out of bounds on short inputs).
 TEST(TransportedVerification, ActionRejectsBadInput) {
-  const RigidBody body(paper_inertia());
-  const std::vector<SO3::Element> one{SO3::identity()}, two{SO3::identity(), SO3::identity()};
-  expect_invalid([&] { transported_action<SO3>(body, 0.5, 1.0, one); }, "g.size() = 1");
-  expect_invalid([&] { transported_action<SO3>(body, 0.5, -1.0, two); }, "T = -1");
-  expect_invalid([&] { transported_action<SO3>(body, std::nan(""), 1.0, two); }, "lambda");
+  const mechanics::RigidBody body(paper_inertia());
+  const std::vector<groups::SO3::Element> one{groups::SO3::identity()}, two{groups::SO3::identity(), groups::SO3::identity()};
+  expect_invalid([&] { transported::transported_action<groups::SO3>(body, 0.5, 1.0, one); }, "g.size() = 1");
+  expect_invalid([&] { transported::transported_action<groups::SO3>(body, 0.5, -1.0, two); }, "T = -1");
+  expect_invalid([&] { transported::transported_action<groups::SO3>(body, std::nan(""), 1.0, two); }, "lambda");
   const std::vector<Eigen::Vector3d> w_short{Eigen::Vector3d::Zero()};
-  expect_invalid([&] { transported_action_derivative<SO3>(body, 0.5, 1.0, two, w_short); }, "w.size() = 1");
+  expect_invalid([&] { transported::transported_action_derivative<groups::SO3>(body, 0.5, 1.0, two, w_short); }, "w.size() = 1");
 }
 
 }  // namespace

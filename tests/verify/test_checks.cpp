@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "cartan/models/rigid_body.hpp"
+#include "cartan/mechanics/rigid_body.hpp"
 #include "cartan/verify/checks.hpp"
 #include "cartan/verify/report.hpp"
 #include "test_support.hpp"
@@ -16,21 +16,21 @@ namespace {
 /// Samples g(t) = exp(angle(t) axis) at N + 1 uniform times on [0, T] with v = angle'(t) axis,
 /// mu = I v, xi = 0.
 template <class Angle, class Rate>
-TransportedTrajectory<SO3> rotation_about(const SO3::Tangent& axis, double T, int N, Angle angle, Rate rate,
+transported::TransportedTrajectory<groups::SO3> rotation_about(const groups::SO3::Tangent& axis, double T, int N, Angle angle, Rate rate,
                                           const Eigen::Matrix3d& inertia) {
-  TransportedTrajectory<SO3> x;
+  transported::TransportedTrajectory<groups::SO3> x;
   for (int k = 0; k <= N; ++k) {
     const double t = T * k / N;
     x.t.push_back(t);
-    x.g.push_back(SO3::exp(SO3::Tangent(angle(t) * axis)));
+    x.g.push_back(groups::SO3::exp(groups::SO3::Tangent(angle(t) * axis)));
     x.v.push_back(rate(t) * axis);
     x.mu.push_back(inertia * x.v.back());
-    x.xi.push_back(SO3::Tangent::Zero());
+    x.xi.push_back(groups::SO3::Tangent::Zero());
   }
   return x;
 }
 
-const SO3::Tangent kAxis = SO3::Tangent(1, 2, 2) / 3;
+const groups::SO3::Tangent kAxis = groups::SO3::Tangent(1, 2, 2) / 3;
 
 // Steady rotation about a principal axis of an isotropic body solves eq:reduced-system for every
 // lambda (ad*_v I v = 0, P v = v since Ad(exp(-lambda t v)) v = v), and the piecewise geodesic
@@ -41,8 +41,8 @@ TEST(VerifyChecks, ExactSolutionGivesRoundingLevelFigures) {
   for (double lambda : {0.0, 0.5, 1.0, 2.0}) {
     SCOPED_TRACE(lambda);
     const auto x = rotation_about(kAxis, 2.0, 50, [](double t) { return 0.7 * t; }, [](double) { return 0.7; }, inertia);
-    const TrajectoryChecks<SO3, RigidBody> checks(RigidBody(inertia), lambda, 2.0, x);
-    EXPECT_LT(checks.boundary_error(SO3::identity(), SO3::exp(SO3::Tangent(1.4 * kAxis))), 1e-14);
+    const verify::TrajectoryChecks<groups::SO3, mechanics::RigidBody> checks(mechanics::RigidBody(inertia), lambda, 2.0, x);
+    EXPECT_LT(checks.boundary_error(groups::SO3::identity(), groups::SO3::exp(groups::SO3::Tangent(1.4 * kAxis))), 1e-14);
     EXPECT_LT(checks.legendre_residual(), 1e-15);
     EXPECT_LT(checks.energy_drift(), 1e-14);
     EXPECT_LT(checks.equation_residual().relative, 1e-12);
@@ -59,10 +59,10 @@ TEST(VerifyChecks, ExactSolutionGivesRoundingLevelFigures) {
 TEST(VerifyChecks, AcceleratingPathFailsResidualEnergyAndAction) {
   const Eigen::Matrix3d inertia = 2 * Eigen::Matrix3d::Identity();
   const auto x = rotation_about(kAxis, 2.0, 100, [](double t) { return t * t; }, [](double t) { return 2 * t; }, inertia);
-  const TrajectoryChecks<SO3, RigidBody> checks(RigidBody(inertia), 0.0, 2.0, x);
+  const verify::TrajectoryChecks<groups::SO3, mechanics::RigidBody> checks(mechanics::RigidBody(inertia), 0.0, 2.0, x);
   EXPECT_LT(checks.legendre_residual(), 1e-15);
   EXPECT_GT(checks.energy_drift(), 0.99);  // E = 4 t^2 from 0: drift / max E = 1
-  const Residual r = checks.equation_residual();
+  const verify::Residual r = checks.equation_residual();
   EXPECT_GT(r.relative, 0.1);  // mu' = 4 axis against 0, relative to |mu'| + |v| |mu| <= 4 + 32
   EXPECT_EQ(r.equation, "mu equation");
   EXPECT_GT(checks.action_stationarity(4, 1u), 1e-3);  // measured 0.018, against 1e-9 for the exact solution
@@ -72,13 +72,13 @@ TEST(VerifyChecks, AcceleratingPathFailsResidualEnergyAndAction) {
 // momentum that is not I v fails the Legendre check.
 TEST(VerifyChecks, InconsistentVelocityAndMomentumAreSeen) {
   const Eigen::Matrix3d inertia = Eigen::Vector3d(2, 3, 4).asDiagonal();
-  const SO3::Tangent e3 = SO3::Tangent::UnitZ();  // a principal axis: steady rotation is a solution
+  const groups::SO3::Tangent e3 = groups::SO3::Tangent::UnitZ();  // a principal axis: steady rotation is a solution
   auto x = rotation_about(e3, 1.0, 40, [](double t) { return t; }, [](double) { return 1.5; }, inertia);
-  TrajectoryChecks<SO3, RigidBody> wrong_speed(RigidBody(inertia), 0.5, 1.0, x);
+  verify::TrajectoryChecks<groups::SO3, mechanics::RigidBody> wrong_speed(mechanics::RigidBody(inertia), 0.5, 1.0, x);
   EXPECT_NEAR(wrong_speed.equation_residual().relative, 0.5 / 2.5, 1e-9);  // |u - v| / (|u| + |v|)
   EXPECT_EQ(wrong_speed.equation_residual().equation, "g' = g P v");
   x.mu[20] *= 1.1;
-  const TrajectoryChecks<SO3, RigidBody> wrong_momentum(RigidBody(inertia), 0.5, 1.0, x);
+  const verify::TrajectoryChecks<groups::SO3, mechanics::RigidBody> wrong_momentum(mechanics::RigidBody(inertia), 0.5, 1.0, x);
   EXPECT_NEAR(wrong_momentum.legendre_residual(), 0.1 * 6 / (6.6 + 6), 1e-12);  // |mu| = 4 * 1.5
 }
 
@@ -86,35 +86,35 @@ TEST(VerifyChecks, InconsistentVelocityAndMomentumAreSeen) {
 TEST(VerifyChecks, ThreePointDerivativeIsExactForQuadratics) {
   auto f = [](double t) { return 3 * t * t - 2 * t + 1; };
   for (auto [t0, h1, h2] : {std::tuple{0.3, 0.1, 0.25}, std::tuple{-1.0, 0.5, 0.01}, std::tuple{2.0, 0.2, 0.2}}) {
-    const ThreePoint d(h1, h2);
+    const verify::ThreePoint d(h1, h2);
     EXPECT_NEAR(d.a * f(t0 - h1) + d.b * f(t0) + d.c * f(t0 + h2), 6 * t0 - 2, 1e-11);
   }
 }
 
 TEST(VerifyChecks, UniformMeshes) {
-  EXPECT_TRUE(is_uniform({0.0, 0.5, 1.0, 1.5}));
-  EXPECT_FALSE(is_uniform({0.0, 0.4, 1.0, 1.5}));
-  EXPECT_FALSE(is_uniform({0.0}));
-  EXPECT_EQ(relative_to(0.0, 0.0), 0.0);
-  EXPECT_NEAR(discretisation_threshold(2.0, 0.1, 2), 0.02, 1e-15);
+  EXPECT_TRUE(verify::is_uniform({0.0, 0.5, 1.0, 1.5}));
+  EXPECT_FALSE(verify::is_uniform({0.0, 0.4, 1.0, 1.5}));
+  EXPECT_FALSE(verify::is_uniform({0.0}));
+  EXPECT_EQ(verify::relative_to(0.0, 0.0), 0.0);
+  EXPECT_NEAR(verify::discretisation_threshold(2.0, 0.1, 2), 0.02, 1e-15);
 }
 
 // The lambda factor a = max(1, |2 lambda - 1| + |lambda (1 - lambda)| kappa) with kappa =
 // max |ad*_v xi| / max |ad*_v mu|: with v = e1, mu = e2, xi = e3 on SO(3) both coadjoint terms
 // have size 1 (ad*_v mu = mu x v), so kappa = 1.
 TEST(VerifyChecks, AmplificationFollowsTheTorsionAndCurvatureCoefficients) {
-  TransportedTrajectory<SO3> x;
+  transported::TransportedTrajectory<groups::SO3> x;
   for (int k = 0; k <= 4; ++k) {
     x.t.push_back(0.25 * k);
-    x.g.push_back(SO3::exp(SO3::Tangent(0.25 * k, 0, 0)));
-    x.v.push_back(SO3::Tangent::UnitX());
-    x.mu.push_back(SO3::Tangent::UnitY());
-    x.xi.push_back(SO3::Tangent::UnitZ());
+    x.g.push_back(groups::SO3::exp(groups::SO3::Tangent(0.25 * k, 0, 0)));
+    x.v.push_back(groups::SO3::Tangent::UnitX());
+    x.mu.push_back(groups::SO3::Tangent::UnitY());
+    x.xi.push_back(groups::SO3::Tangent::UnitZ());
   }
-  const RigidBody body(Eigen::Matrix3d::Identity());
+  const mechanics::RigidBody body(Eigen::Matrix3d::Identity());
   for (auto [lambda, a] : {std::pair{2.0, 5.0}, std::pair{-1.0, 5.0}, std::pair{-0.5, 2.75}, std::pair{1.5, 2.75},
                            std::pair{0.5, 1.0}, std::pair{0.0, 1.0}, std::pair{1.0, 1.0}}) {
-    const TrajectoryChecks<SO3, RigidBody> checks(body, lambda, 1.0, x);
+    const verify::TrajectoryChecks<groups::SO3, mechanics::RigidBody> checks(body, lambda, 1.0, x);
     EXPECT_NEAR(checks.amplification(), a, 1e-14) << lambda;
   }
 }
@@ -126,21 +126,21 @@ TEST(VerifyChecks, AmplificationFollowsTheTorsionAndCurvatureCoefficients) {
 TEST(VerifyReport, ExactSolutionPassesForEveryLambda) {
   const Eigen::Matrix3d inertia = 2 * Eigen::Matrix3d::Identity();
   const auto x = rotation_about(kAxis, 2.0, 50, [](double t) { return 0.7 * t; }, [](double) { return 0.7; }, inertia);
-  const TransportedProblem<SO3, RigidBody> base{RigidBody(inertia), 0.0, 2.0, 50, SO3::identity(),
-                                                SO3::exp(SO3::Tangent(1.4 * kAxis))};
-  const Report at_zero = verify_trajectory(base, x, 1, 1e-10);
+  const transported::TransportedProblem<groups::SO3, mechanics::RigidBody> base{mechanics::RigidBody(inertia), 0.0, 2.0, 50, groups::SO3::identity(),
+                                                groups::SO3::exp(groups::SO3::Tangent(1.4 * kAxis))};
+  const verify::Report at_zero = verify::verify_trajectory(base, x, 1, 1e-10);
   for (double lambda : {-1.0, -0.5, 1.5, 2.0}) {
     SCOPED_TRACE(lambda);
     auto problem = base;
     problem.lambda = lambda;
-    const Report report = verify_trajectory(problem, x, 1, 1e-10);
+    const verify::Report report = verify::verify_trajectory(problem, x, 1, 1e-10);
     EXPECT_TRUE(report.passed()) << report.text();
     const double a = std::abs(2 * lambda - 1);
     EXPECT_NEAR(report.amplification, a, 1e-14);
     ASSERT_EQ(report.checks.size(), at_zero.checks.size());
     for (std::size_t i = 0; i < report.checks.size(); ++i) {
-      const Check& c = report.checks[i];
-      const double floor = threshold_floor(1e-10), power = c.name == "energy" ? 2 : 1;
+      const verify::Check& c = report.checks[i];
+      const double floor = verify::threshold_floor(1e-10), power = c.name == "energy" ? 2 : 1;
       if (c.name == "energy" || c.name == "residual" || c.name == "stationarity") {
         EXPECT_NEAR(c.threshold - floor, std::pow(a, power) * (at_zero.checks[i].threshold - floor), 1e-14) << c.name;
       }
@@ -153,16 +153,16 @@ TEST(VerifyReport, ExactSolutionPassesForEveryLambda) {
 TEST(VerifyReport, FailedResultsNeverPass) {
   const Eigen::Matrix3d inertia = 2 * Eigen::Matrix3d::Identity();
   const auto x = rotation_about(kAxis, 2.0, 50, [](double t) { return 0.7 * t; }, [](double) { return 0.7; }, inertia);
-  const TransportedProblem<SO3, RigidBody> problem{RigidBody(inertia), 0.5, 2.0, 50, SO3::identity(),
-                                                   SO3::exp(SO3::Tangent(1.4 * kAxis))};
-  const Report failed = verify_trajectory(problem, x, 1, 1e-10, Status::MaxIterations);
+  const transported::TransportedProblem<groups::SO3, mechanics::RigidBody> problem{mechanics::RigidBody(inertia), 0.5, 2.0, 50, groups::SO3::identity(),
+                                                   groups::SO3::exp(groups::SO3::Tangent(1.4 * kAxis))};
+  const verify::Report failed = verify::verify_trajectory(problem, x, 1, 1e-10, Status::MaxIterations);
   EXPECT_FALSE(failed.passed());
   EXPECT_EQ(failed.checks.front().name, "converged");
   EXPECT_EQ(failed.checks.front().verdict(), "FAIL");
-  EXPECT_TRUE(std::all_of(failed.checks.begin() + 1, failed.checks.end(), [](const Check& c) { return c.passed(); }));
-  TransportedSolution<SO3> empty;
+  EXPECT_TRUE(std::all_of(failed.checks.begin() + 1, failed.checks.end(), [](const verify::Check& c) { return c.passed(); }));
+  transported::TransportedSolution<groups::SO3> empty;
   empty.status = Status::StrategyFailed;
-  const Report unchecked = verify_solution(problem, empty, 1e-10);
+  const verify::Report unchecked = verify::verify_solution(problem, empty, 1e-10);
   EXPECT_FALSE(unchecked.passed());
   EXPECT_NE(unchecked.text().find("not checked"), std::string::npos);
   EXPECT_NE(unchecked.text().find("strategy-failed"), std::string::npos);
@@ -171,22 +171,22 @@ TEST(VerifyReport, FailedResultsNeverPass) {
 // Invalid data are rejected with a message naming the value.
 TEST(VerifyReport, InvalidTrajectoriesAreRejected) {
   const Eigen::Matrix3d inertia = 2 * Eigen::Matrix3d::Identity();
-  const TransportedProblem<SO3, RigidBody> problem{RigidBody(inertia), 0.5, 2.0, 50, SO3::identity(), SO3::identity()};
+  const transported::TransportedProblem<groups::SO3, mechanics::RigidBody> problem{mechanics::RigidBody(inertia), 0.5, 2.0, 50, groups::SO3::identity(), groups::SO3::identity()};
   const auto x = rotation_about(kAxis, 2.0, 50, [](double t) { return 0.7 * t; }, [](double) { return 0.7; }, inertia);
   auto short_x = x;
   short_x.t.resize(1), short_x.g.resize(1), short_x.v.resize(1), short_x.mu.resize(1), short_x.xi.resize(1);
-  testing::expect_invalid([&] { (void)verify_trajectory(problem, short_x, 1, 1e-10); }, "trajectory.t.size() = 1");
+  testing::expect_invalid([&] { (void)verify::verify_trajectory(problem, short_x, 1, 1e-10); }, "trajectory.t.size() = 1");
   auto backwards = x;
   std::swap(backwards.t[3], backwards.t[4]);
-  testing::expect_invalid([&] { (void)verify_trajectory(problem, backwards, 1, 1e-10); }, "must be strictly increasing");
+  testing::expect_invalid([&] { (void)verify::verify_trajectory(problem, backwards, 1, 1e-10); }, "must be strictly increasing");
   auto nan = x;
   nan.mu[7][1] = std::nan("");
-  testing::expect_invalid([&] { (void)verify_trajectory(problem, nan, 1, 1e-10); }, "trajectory.mu (row 7)");
+  testing::expect_invalid([&] { (void)verify::verify_trajectory(problem, nan, 1, 1e-10); }, "trajectory.mu (row 7)");
   auto longer = problem;
   longer.T = 3.0;
-  testing::expect_invalid([&] { (void)verify_trajectory(longer, x, 1, 1e-10); }, "must run from 0 to T");
-  testing::expect_invalid([&] { (void)verify_trajectory(problem, x, 0, 1e-10); }, "order");
-  testing::expect_invalid([&] { (void)verify_trajectory(problem, x, 1, -1.0); }, "tol");
+  testing::expect_invalid([&] { (void)verify::verify_trajectory(longer, x, 1, 1e-10); }, "must run from 0 to T");
+  testing::expect_invalid([&] { (void)verify::verify_trajectory(problem, x, 0, 1e-10); }, "order");
+  testing::expect_invalid([&] { (void)verify::verify_trajectory(problem, x, 1, -1.0); }, "tol");
 }
 
 }  // namespace

@@ -21,7 +21,7 @@
 
 #include "cartan/transported/shooting.hpp"
 
-namespace cartan {
+namespace cartan::transported {
 
 struct ContinuationOptions {
   ShootingOptions shooting;
@@ -60,7 +60,7 @@ inline ShootingOptions path_shooting(const ContinuationOptions& options) {
 }
 
 /// The size of a result's terminal residual in the units of the convergence test.
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 double scaled_residual(const TransportedProblem<G, L>& problem, const TransportedSolution<G>& s) {
   if (s.trajectory.t.empty()) return std::numeric_limits<double>::infinity();
   return std::hypot(s.terminal_error, s.xi_terminal / xi_scale(problem));
@@ -83,7 +83,7 @@ struct PathEnd {
 /// enough stage is always accepted; a corrector that converges far from the prediction has
 /// jumped to another branch (bench/README.md, "continuation acceptance"). Accumulates work into
 /// `current`.
-template <LieGroup G, class MakeProblem>
+template <groups::LieGroup G, class MakeProblem>
 PathEnd continue_parameter(const MakeProblem& make, double from, double to, TransportedSolution<G>& current,
                            const ContinuationOptions& options) {
   PathEnd end{from, 0, false, {}};
@@ -95,10 +95,10 @@ PathEnd continue_parameter(const MakeProblem& make, double from, double to, Tran
   const auto target = make(to);
   const double v_ref = std::max(current.v0.norm(), geodesic_guess(target).norm());
   const double xi_ref = std::max(current.xi0.norm(), xi_scale(target));
-  const auto distance = [&](const TangentOf<G>& dv, const CovectorOf<G>& dxi) {
+  const auto distance = [&](const groups::TangentOf<G>& dv, const groups::CovectorOf<G>& dxi) {
     return std::hypot(v_ref > 0 ? dv.norm() / v_ref : dv.norm(), dxi.norm() / xi_ref);
   };
-  std::optional<std::pair<TangentOf<G>, CovectorOf<G>>> previous;  // the solution before `current`
+  std::optional<std::pair<groups::TangentOf<G>, groups::CovectorOf<G>>> previous;  // the solution before `current`
   double previous_s = from;
   while (end.reached != to) {
     if (end.stages >= options.max_stages) {
@@ -111,8 +111,8 @@ PathEnd continue_parameter(const MakeProblem& make, double from, double to, Tran
     }
     const double next = std::abs(to - end.reached) <= std::abs(increment) ? to : end.reached + increment;
     ++end.stages;
-    TangentOf<G> v_pred = current.v0;
-    CovectorOf<G> xi_pred = current.xi0;
+    groups::TangentOf<G> v_pred = current.v0;
+    groups::CovectorOf<G> xi_pred = current.xi0;
     if (previous) {
       const double ratio = (next - end.reached) / (end.reached - previous_s);
       v_pred += ratio * (current.v0 - previous->first);
@@ -146,7 +146,7 @@ PathEnd continue_parameter(const MakeProblem& make, double from, double to, Tran
 /// The failure result of a continuation of `problem`: the better (smaller scaled residual) of
 /// `direct` (an attempt on the requested problem, may be empty) and a solve of the requested
 /// problem from the last stage reached; status ContinuationFailed (or Interrupted), all work counted.
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> best_iterate(const TransportedProblem<G, L>& problem, const TransportedSolution<G>* direct,
                                     const TransportedSolution<G>* last_stage, const ContinuationOptions& options,
                                     int sweeps, int iterations) {
@@ -182,11 +182,11 @@ TransportedSolution<G> best_iterate(const TransportedProblem<G, L>& problem, con
 }  // namespace detail
 
 /// Continuation in the horizon T (see the header comment).
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> solve_continuation_in_T(const TransportedProblem<G, L>& problem,
                                                const ContinuationOptions& options = {},
-                                               std::optional<TangentOf<G>> v0_guess = std::nullopt,
-                                               std::optional<CovectorOf<G>> xi0_guess = std::nullopt) {
+                                               std::optional<groups::TangentOf<G>> v0_guess = std::nullopt,
+                                               std::optional<groups::CovectorOf<G>> xi0_guess = std::nullopt) {
   problem.validate();
   options.validate();
   const auto start_time = std::chrono::steady_clock::now();
@@ -206,8 +206,8 @@ TransportedSolution<G> solve_continuation_in_T(const TransportedProblem<G, L>& p
     const auto p = make(start);
     // The given guess is a velocity of the requested problem: at horizon T' the same path
     // needs T / T' times its speed.
-    const TangentOf<G> v0 = v0_guess ? TangentOf<G>(*v0_guess * (problem.T / start)) : geodesic_guess(p);
-    first = solve_shooting(p, path, v0, xi0_guess && halving == 0 ? *xi0_guess : CovectorOf<G>::Zero());
+    const groups::TangentOf<G> v0 = v0_guess ? groups::TangentOf<G>(*v0_guess * (problem.T / start)) : geodesic_guess(p);
+    first = solve_shooting(p, path, v0, xi0_guess && halving == 0 ? *xi0_guess : groups::CovectorOf<G>::Zero());
     sweeps += first.sweeps;
     iterations += first.inner_iterations;
     if (halving == 0) direct = first;
@@ -245,7 +245,7 @@ TransportedSolution<G> solve_continuation_in_T(const TransportedProblem<G, L>& p
 /// Continuation in lambda from lambda_start (default 0, the classical left Euler–Poincaré case).
 /// The start solution at lambda_start is itself found by solve_continuation_in_T (directly from
 /// the geodesic guess when that converges), so that long horizons work too.
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> solve_continuation_in_lambda(const TransportedProblem<G, L>& problem,
                                                     double lambda_start = 0.0,
                                                     const ContinuationOptions& options = {}) {
@@ -282,4 +282,4 @@ TransportedSolution<G> solve_continuation_in_lambda(const TransportedProblem<G, 
   return result;
 }
 
-}  // namespace cartan
+}  // namespace cartan::transported

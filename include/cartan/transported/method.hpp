@@ -8,7 +8,7 @@
 
 #include "cartan/enum_names.hpp"
 
-namespace cartan {
+namespace cartan::transported {
 
 enum class Method {
   Auto,              ///< the default strategy (transported/solve.hpp): tries the others in turn
@@ -18,29 +18,34 @@ enum class Method {
   Collocation,       ///< fourth-order adaptive collocation of the continuous problem
 };
 
-template <>
-struct EnumNames<Method> {
-  static constexpr std::string_view what = "method";
-  static constexpr std::array<std::pair<Method, std::string_view>, 5> names{{
-      {Method::Auto, "auto"},
-      {Method::Shooting, "shooting"},
-      {Method::MultipleShooting, "multiple-shooting"},
-      {Method::TwoLevel, "two-level"},
-      {Method::Collocation, "collocation"},
-  }};
-};
-
 /// How shooting (and collocation, for its start) reaches a problem that fails from the guess:
 /// not at all, by continuation in the horizon T, or in lambda (from lambda_start).
 enum class Continuation { None, T, Lambda };
 
+}  // namespace cartan::transported
+
+// The words of each enum (enum_names.hpp); specialisations live in the template's namespace.
+namespace cartan {
+
 template <>
-struct EnumNames<Continuation> {
+struct EnumNames<transported::Method> {
+  static constexpr std::string_view what = "method";
+  static constexpr std::array<std::pair<transported::Method, std::string_view>, 5> names{{
+      {transported::Method::Auto, "auto"},
+      {transported::Method::Shooting, "shooting"},
+      {transported::Method::MultipleShooting, "multiple-shooting"},
+      {transported::Method::TwoLevel, "two-level"},
+      {transported::Method::Collocation, "collocation"},
+  }};
+};
+
+template <>
+struct EnumNames<transported::Continuation> {
   static constexpr std::string_view what = "continuation";
-  static constexpr std::array<std::pair<Continuation, std::string_view>, 3> names{{
-      {Continuation::None, "none"},
-      {Continuation::T, "T"},
-      {Continuation::Lambda, "lambda"},
+  static constexpr std::array<std::pair<transported::Continuation, std::string_view>, 3> names{{
+      {transported::Continuation::None, "none"},
+      {transported::Continuation::T, "T"},
+      {transported::Continuation::Lambda, "lambda"},
   }};
 };
 

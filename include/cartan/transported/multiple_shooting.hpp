@@ -31,7 +31,7 @@
 
 #include "cartan/transported/shooting.hpp"
 
-namespace cartan {
+namespace cartan::transported {
 
 struct MultipleShootingOptions {
   SchemeOrder order = SchemeOrder::First;
@@ -69,7 +69,7 @@ inline int default_segments(int steps) { return std::clamp(steps / 100, 1, 16); 
 /// The lifted system of multiple shooting: its unknowns, residual and analytic Jacobian.
 /// Public so that tests can check the Jacobian; solve_multiple_shooting drives it. Keeps a
 /// reference to the scheme, which must outlive it.
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 class MultipleShootingSystem {
  public:
   using Scheme = TransportedScheme<G, L>;
@@ -95,7 +95,7 @@ class MultipleShootingSystem {
 
   /// References from one sweep from (v0, xi0) up to k_{M-1}; returns the unknowns of that
   /// trajectory (chart coordinates 0), or nothing if the sweep failed (failure() says why).
-  std::optional<Eigen::VectorXd> initialise(const TangentOf<G>& v0, const CovectorOf<G>& xi0) {
+  std::optional<Eigen::VectorXd> initialise(const groups::TangentOf<G>& v0, const groups::CovectorOf<G>& xi0) {
     Eigen::VectorXd x = Eigen::VectorXd::Zero(size());
     x.head<n>() = v0;
     x.segment<n>(n) = xi0;
@@ -120,15 +120,15 @@ class MultipleShootingSystem {
   void recentre(Eigen::VectorXd& x) {
     for (int j = 1; j < segments(); ++j) {
       Node& ref = reference_[static_cast<std::size_t>(j) - 1];
-      ref.g = G::compose(ref.g, G::exp(TangentOf<G>(x.segment<n>(offset(j)))));
-      ref.transport = G::compose(G::exp(TangentOf<G>(x.segment<n>(offset(j) + n))), ref.transport);
+      ref.g = G::compose(ref.g, G::exp(groups::TangentOf<G>(x.segment<n>(offset(j)))));
+      ref.transport = G::compose(G::exp(groups::TangentOf<G>(x.segment<n>(offset(j) + n))), ref.transport);
       x.segment<2 * n>(offset(j)).setZero();
     }
   }
 
   /// Initial (v0, xi0) encoded in x.
-  static TangentOf<G> v0(const Eigen::VectorXd& x) { return x.head<n>(); }
-  static CovectorOf<G> xi0(const Eigen::VectorXd& x) { return x.segment<n>(n); }
+  static groups::TangentOf<G> v0(const Eigen::VectorXd& x) { return x.head<n>(); }
+  static groups::CovectorOf<G> xi0(const Eigen::VectorXd& x) { return x.segment<n>(n); }
 
   /// Residual at x and, if jac is set, its Jacobian. Dense although block-bidiagonal: with
   /// (4M - 2) n <= a few hundred unknowns the dense LM algebra costs at most a few sweeps
@@ -154,7 +154,7 @@ class MultipleShootingSystem {
       const Eigen::Index row = offset(j + 1) - 2 * n;  // rows of the conditions at k_{j+1}
       const Eigen::Index col = offset(j), cols = offset(j + 1) - offset(j);
       if (j == m - 1) {
-        const TangentOf<G> rg = scheme_.terminal_residual(out.last);
+        const groups::TangentOf<G> rg = scheme_.terminal_residual(out.last);
         r.segment<2 * n>(row) << rg, out.last.xi;
         if (jac) {
           jac->block(row, col, n, cols) = scheme_.terminal_residual_tangent(rg, *out.tangent);
@@ -163,8 +163,8 @@ class MultipleShootingSystem {
         continue;
       }
       const Node& next = start[static_cast<std::size_t>(j) + 1];
-      const TangentOf<G> dg = G::log(G::compose(G::inverse(next.g), out.last.g));
-      const TangentOf<G> dh = G::log(G::compose(out.last.transport, G::inverse(next.transport)));
+      const groups::TangentOf<G> dg = G::log(G::compose(G::inverse(next.g), out.last.g));
+      const groups::TangentOf<G> dh = G::log(G::compose(out.last.transport, G::inverse(next.transport)));
       r.segment<4 * n>(row) << dg, dh, out.last.mu - next.mu, out.last.xi - next.xi;
       if (!jac) continue;
       // End of segment j: g_end exp(gamma) moves dg by J_r(dg)^{-1} gamma, exp(chi) h_end moves
@@ -172,16 +172,16 @@ class MultipleShootingSystem {
       // -J_l(dg)^{-1} gamma and exp(chi) h moves dh by -J_r(dh)^{-1} chi, with gamma, chi the
       // chart Jacobians J_r(x_g), J_l(x_h) (the start tangent's identity blocks).
       const NodeTangent& e = *out.tangent;
-      jac->block(row, col, n, cols) = right_jacobian_inverse<G>(dg) * e.gamma;
-      jac->block(row + n, col, n, cols) = left_jacobian_inverse<G>(dh) * e.chi;
+      jac->block(row, col, n, cols) = groups::right_jacobian_inverse<G>(dg) * e.gamma;
+      jac->block(row + n, col, n, cols) = groups::left_jacobian_inverse<G>(dh) * e.chi;
       jac->block(row + 2 * n, col, n, cols) = e.mu;
       jac->block(row + 3 * n, col, n, cols) = e.xi;
       const Eigen::Index next_col = offset(j + 1);
       const auto [xg, xh] = charts(x, j + 1);
-      jac->block<n, n>(row, next_col) = -left_jacobian_inverse<G>(dg) * right_jacobian<G>(xg);
-      jac->block<n, n>(row + n, next_col + n) = -right_jacobian_inverse<G>(dh) * left_jacobian<G>(xh);
-      jac->block<n, n>(row + 2 * n, next_col + 2 * n) = -AlgebraMatrixOf<G>::Identity();
-      jac->block<n, n>(row + 3 * n, next_col + 3 * n) = -AlgebraMatrixOf<G>::Identity();
+      jac->block<n, n>(row, next_col) = -groups::left_jacobian_inverse<G>(dg) * groups::right_jacobian<G>(xg);
+      jac->block<n, n>(row + n, next_col + n) = -groups::right_jacobian_inverse<G>(dh) * groups::left_jacobian<G>(xh);
+      jac->block<n, n>(row + 2 * n, next_col + 2 * n) = -groups::AlgebraMatrixOf<G>::Identity();
+      jac->block<n, n>(row + 3 * n, next_col + 3 * n) = -groups::AlgebraMatrixOf<G>::Identity();
     }
     return true;
   }
@@ -190,7 +190,7 @@ class MultipleShootingSystem {
   /// First unknown of segment j: 2n for segment 0, 4n for each later one.
   Eigen::Index offset(int j) const { return j == 0 ? 0 : 2 * n + 4 * n * static_cast<Eigen::Index>(j - 1); }
 
-  std::pair<TangentOf<G>, TangentOf<G>> charts(const Eigen::VectorXd& x, int j) const {
+  std::pair<groups::TangentOf<G>, groups::TangentOf<G>> charts(const Eigen::VectorXd& x, int j) const {
     return {x.segment<n>(offset(j)), x.segment<n>(offset(j) + n)};
   }
 
@@ -212,8 +212,8 @@ class MultipleShootingSystem {
     if (!d) return;
     *d = scheme_.state_tangent(node);
     Eigen::MatrixXd chart = Eigen::MatrixXd::Identity(4 * n, 4 * n);  // d(gamma, chi, mu, xi) / d(unknowns)
-    chart.topLeftCorner<n, n>() = right_jacobian<G>(xg);
-    chart.block<n, n>(n, n) = left_jacobian<G>(xh);
+    chart.topLeftCorner<n, n>() = groups::right_jacobian<G>(xg);
+    chart.block<n, n>(n, n) = groups::left_jacobian<G>(xh);
     for (auto* m : {&d->gamma, &d->chi, &d->mu, &d->xi, &d->v}) *m = *m * chart;
   }
 
@@ -233,8 +233,8 @@ class MultipleShootingSystem {
 namespace detail {
 
 /// |(log(gT^{-1} g_N), xi_N)| of one plain sweep from (v0, xi0), or infinity if it failed.
-template <LieGroup G, ReducedLagrangian<G> L>
-double single_sweep_residual(const TransportedScheme<G, L>& scheme, const TangentOf<G>& v0, const CovectorOf<G>& xi0) {
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+double single_sweep_residual(const TransportedScheme<G, L>& scheme, const groups::TangentOf<G>& v0, const groups::CovectorOf<G>& xi0) {
   SweepOutput<G, L> out;
   if (!forward_sweep(scheme, v0, xi0, nullptr, 0, out)) return std::numeric_limits<double>::infinity();
   return std::hypot(scheme.terminal_residual(out.last).norm(), out.last.xi.norm() / xi_scale(scheme.problem()));
@@ -242,7 +242,7 @@ double single_sweep_residual(const TransportedScheme<G, L>& scheme, const Tangen
 
 /// sigma_min / sigma_max of the lifted Jacobian at x (NaN if the evaluation failed): a value
 /// near rounding means LM stopped at a local minimum of |r| on a fold, not near a root.
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 double jacobian_conditioning(MultipleShootingSystem<G, L>& system, const Eigen::VectorXd& x) {
   Eigen::VectorXd r;
   Eigen::MatrixXd jac;
@@ -259,10 +259,10 @@ double jacobian_conditioning(MultipleShootingSystem<G, L>& system, const Eigen::
 /// below the tolerance but the sweep's is not, LM goes on with a proportionally tighter
 /// tolerance (at most 3 times; then the status is "inconsistent"). The lifted residual reaches
 /// ~1e-15, so this holds for tolerances above ~1e-15 times the sweep's sensitivity.
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& problem,
-                                               const MultipleShootingOptions& options, const TangentOf<G>& v0_guess,
-                                               const CovectorOf<G>& xi0_guess) {
+                                               const MultipleShootingOptions& options, const groups::TangentOf<G>& v0_guess,
+                                               const groups::CovectorOf<G>& xi0_guess) {
   problem.validate();
   options.validate();
   require_finite(v0_guess, "solve_multiple_shooting", "v0_guess");
@@ -291,19 +291,19 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
     solution.solve_time_s = detail::seconds_since(start);
     return solution;
   }
-  const ResidualFunction f = [&](const Eigen::VectorXd& y, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
+  const numerics::ResidualFunction f = [&](const Eigen::VectorXd& y, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
     ++solution.sweeps;
     return system.evaluate(y, r, jac);
   };
   // Rounds of LM, re-centring the charts in between (the first point of a round repeats the
   // last of the previous one and is not recorded twice).
-  NonlinearSolveReport report;
+  numerics::NonlinearSolveReport report;
   double lifted_tolerance = options.tolerance;
   int rounds = 0, tightenings = 0;
   bool lifted_converged = false;
   while (solution.inner_iterations < options.max_iterations) {
     const int budget = std::min(options.recentre_every, options.max_iterations - solution.inner_iterations);
-    report = levenberg_marquardt(f, *x, {.tolerance = lifted_tolerance, .max_iterations = budget,
+    report = numerics::levenberg_marquardt(f, *x, {.tolerance = lifted_tolerance, .max_iterations = budget,
                                          .monitor = options.monitor});
     solution.inner_iterations += report.iterations;
     const auto& h = report.residual_history;
@@ -358,11 +358,11 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
 }
 
 /// From the paper's geodesic guess (v0 = log(g0^{-1} gT) / T, xi0 = 0).
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& problem,
                                                const MultipleShootingOptions& options = {}) {
   problem.validate();
-  return solve_multiple_shooting(problem, options, geodesic_guess(problem), CovectorOf<G>::Zero());
+  return solve_multiple_shooting(problem, options, geodesic_guess(problem), groups::CovectorOf<G>::Zero());
 }
 
-}  // namespace cartan
+}  // namespace cartan::transported

@@ -9,19 +9,19 @@
 #include <string>
 
 #include "cartan/errors.hpp"
-#include "cartan/group.hpp"
-#include "cartan/lagrangian.hpp"
+#include "cartan/groups/group.hpp"
+#include "cartan/mechanics/lagrangian.hpp"
 
-namespace cartan {
+namespace cartan::transported {
 
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 struct TransportedProblem {
   L lagrangian;
   double lambda = 0.5;   ///< Cartan–Schouten parameter (any real number)
   double T = 1.0;        ///< final time
   int N = 100;           ///< number of steps, h = T / N
-  ElementOf<G> g0 = G::identity();
-  ElementOf<G> gT = G::identity();
+  groups::ElementOf<G> g0 = G::identity();
+  groups::ElementOf<G> gT = G::identity();
 
   double step() const { return T / N; }
 
@@ -36,4 +36,4 @@ struct TransportedProblem {
   }
 };
 
-}  // namespace cartan
+}  // namespace cartan::transported

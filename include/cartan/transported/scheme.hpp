@@ -27,32 +27,32 @@
 #include <optional>
 #include <vector>
 
-#include "cartan/exp_jacobian.hpp"
-#include "cartan/lagrangian_hessian.hpp"
+#include "cartan/groups/exp_jacobian.hpp"
+#include "cartan/mechanics/lagrangian_hessian.hpp"
 #include "cartan/transported/problem.hpp"
 
-namespace cartan {
+namespace cartan::transported {
 
 enum class SchemeOrder { First = 1, Second = 2 };
 
-template <LieGroup G>
+template <groups::LieGroup G>
 struct SchemeNode {
   double t = 0;
-  ElementOf<G> g;
-  ElementOf<G> transport;  ///< h_k with P_k = Ad(h_k)
-  CovectorOf<G> mu;
-  CovectorOf<G> xi;
-  TangentOf<G> v;
+  groups::ElementOf<G> g;
+  groups::ElementOf<G> transport;  ///< h_k with P_k = Ad(h_k)
+  groups::CovectorOf<G> mu;
+  groups::CovectorOf<G> xi;
+  groups::TangentOf<G> v;
 };
 
 /// The discrete trajectory at every node k = 0..N.
-template <LieGroup G>
+template <groups::LieGroup G>
 struct TransportedTrajectory {
   std::vector<double> t;
-  std::vector<ElementOf<G>> g;
-  std::vector<TangentOf<G>> v;
-  std::vector<CovectorOf<G>> mu;
-  std::vector<CovectorOf<G>> xi;
+  std::vector<groups::ElementOf<G>> g;
+  std::vector<groups::TangentOf<G>> v;
+  std::vector<groups::CovectorOf<G>> mu;
+  std::vector<groups::CovectorOf<G>> xi;
 
   void reserve(std::size_t n) {
     t.reserve(n), g.reserve(n), v.reserve(n), mu.reserve(n), xi.reserve(n);
@@ -87,13 +87,13 @@ struct TransportedTrajectory {
   }
 };
 
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 class TransportedScheme {
  public:
   static constexpr int n = G::kDim;
-  using Tangent = TangentOf<G>;
-  using Covector = CovectorOf<G>;
-  using Matrix = AlgebraMatrixOf<G>;
+  using Tangent = groups::TangentOf<G>;
+  using Covector = groups::CovectorOf<G>;
+  using Matrix = groups::AlgebraMatrixOf<G>;
   using Node = SchemeNode<G>;
   /// Perturbation directions, one column per unknown.
   using Directions = Eigen::Matrix<double, n, Eigen::Dynamic>;
@@ -101,7 +101,7 @@ class TransportedScheme {
   /// Linearisation of a node: gamma (left-trivialised dg), chi (dh = chi h), dmu, dxi, dv.
   struct NodeTangent {
     Directions gamma, chi, mu, xi, v;
-    LagrangianHessian<G> hessian;
+    mechanics::LagrangianHessian<G> hessian;
   };
 
   /// Throws std::invalid_argument for an invalid problem (TransportedProblem::validate) or order.
@@ -136,7 +136,7 @@ class TransportedScheme {
     for (Directions* m : {&d.gamma, &d.chi, &d.mu, &d.xi, &d.v}) m->setZero(n, columns);
     d.v.leftCols(n).setIdentity();
     if (columns >= 2 * n) d.xi.middleCols(n, n).setIdentity();
-    d.hessian = lagrangian_hessian<G>(problem_.lagrangian, node.t, node.g, node.v);
+    d.hessian = mechanics::lagrangian_hessian<G>(problem_.lagrangian, node.t, node.g, node.v);
     d.mu = d.hessian.momentum_v * d.v;
     return d;
   }
@@ -151,7 +151,7 @@ class TransportedScheme {
     d.chi.middleCols(n, n).setIdentity();
     d.mu.middleCols(2 * n, n).setIdentity();
     d.xi.rightCols(n).setIdentity();
-    d.hessian = lagrangian_hessian<G>(problem_.lagrangian, node.t, node.g, node.v);
+    d.hessian = mechanics::lagrangian_hessian<G>(problem_.lagrangian, node.t, node.g, node.v);
     d.v = d.hessian.momentum_v.lu().solve(Directions(d.mu - d.hessian.momentum_g * d.gamma));
     return d;
   }
@@ -202,7 +202,7 @@ class TransportedScheme {
     return G::log(G::compose(G::inverse(problem_.gT), last.g));
   }
   Directions terminal_residual_tangent(const Tangent& residual, const NodeTangent& d) const {
-    return right_jacobian_inverse<G>(residual) * d.gamma;
+    return groups::right_jacobian_inverse<G>(residual) * d.gamma;
   }
 
  private:
@@ -265,15 +265,15 @@ class TransportedScheme {
                        NodeTangent& dout, bool xi_given) const {
     const Tangent hu = dt_ * r.u;
     const Tangent a = -problem_.lambda * hu;
-    dout.gamma = G::Ad(G::exp(Tangent(-hu))) * d.gamma + dt_ * (right_jacobian<G>(hu) * dr.u);
-    dout.chi = G::Ad(G::exp(a)) * d.chi - problem_.lambda * dt_ * (left_jacobian<G>(a) * dr.u);
+    dout.gamma = G::Ad(G::exp(Tangent(-hu))) * d.gamma + dt_ * (groups::right_jacobian<G>(hu) * dr.u);
+    dout.chi = G::Ad(G::exp(a)) * d.chi - problem_.lambda * dt_ * (groups::left_jacobian<G>(a) * dr.u);
     dout.mu = d.mu + dt_ * dr.dmu;
     if (xi_given) {
       dout.xi.setZero(n, d.xi.cols());
     } else {
       dout.xi = d.xi + dt_ * dr.dxi;
     }
-    dout.hessian = lagrangian_hessian<G>(problem_.lagrangian, out.t, out.g, out.v);
+    dout.hessian = mechanics::lagrangian_hessian<G>(problem_.lagrangian, out.t, out.g, out.v);
     dout.v = dout.hessian.momentum_v.lu().solve(Directions(dout.mu - dout.hessian.momentum_g * dout.gamma));
   }
 
@@ -284,4 +284,4 @@ class TransportedScheme {
   double c_curvature_;  // lambda (1 - lambda)
 };
 
-}  // namespace cartan
+}  // namespace cartan::transported

@@ -17,11 +17,11 @@
 #include <limits>
 #include <sstream>
 
-#include "cartan/nonlinear_solve.hpp"
+#include "cartan/numerics/nonlinear_solve.hpp"
 #include "cartan/transported/solution.hpp"
 #include "cartan/transported/sweep.hpp"
 
-namespace cartan {
+namespace cartan::transported {
 
 struct ShootingOptions {
   SchemeOrder order = SchemeOrder::First;
@@ -41,17 +41,17 @@ struct ShootingOptions {
 };
 
 /// The paper's initial guess: the body velocity of the geodesic from g0 to gT, log(g0^{-1} gT)/T.
-template <LieGroup G, ReducedLagrangian<G> L>
-TangentOf<G> geodesic_guess(const TransportedProblem<G, L>& problem) {
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+groups::TangentOf<G> geodesic_guess(const TransportedProblem<G, L>& problem) {
   return G::log(G::compose(G::inverse(problem.g0), problem.gT)) / problem.T;
 }
 
 /// The size of xi on this problem (see the header comment): T |v_ref| |mu_ref|, with v_ref the
 /// geodesic velocity (or 1/T along the first axis when g0 = gT); at least the smallest normal.
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 double xi_scale(const TransportedProblem<G, L>& problem) {
-  TangentOf<G> v = geodesic_guess(problem);
-  if (!(v.norm() > 0)) v = TangentOf<G>::Unit(0) / problem.T;
+  groups::TangentOf<G> v = geodesic_guess(problem);
+  if (!(v.norm() > 0)) v = groups::TangentOf<G>::Unit(0) / problem.T;
   const double scale = problem.T * v.norm() * problem.lagrangian.momentum(0, problem.g0, v).norm();
   return std::isfinite(scale) && scale > std::numeric_limits<double>::min() ? scale : 1.0;
 }
@@ -63,9 +63,9 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 /// Final recorded sweep shared by the solvers: fills trajectory and terminal figures.
-template <LieGroup G, ReducedLagrangian<G> L>
-bool record_solution(const TransportedScheme<G, L>& scheme, const TangentOf<G>& v0, const CovectorOf<G>& xi0,
-                     const std::vector<CovectorOf<G>>* given_xi, TransportedSolution<G>& solution) {
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+bool record_solution(const TransportedScheme<G, L>& scheme, const groups::TangentOf<G>& v0, const groups::CovectorOf<G>& xi0,
+                     const std::vector<groups::CovectorOf<G>>* given_xi, TransportedSolution<G>& solution) {
   SweepOutput<G, L> out;
   out.trajectory = &solution.trajectory;
   ++solution.sweeps;
@@ -82,9 +82,9 @@ bool record_solution(const TransportedScheme<G, L>& scheme, const TangentOf<G>& 
 
 }  // namespace detail
 
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, const ShootingOptions& options,
-                                      const TangentOf<G>& v0_guess, const CovectorOf<G>& xi0_guess) {
+                                      const groups::TangentOf<G>& v0_guess, const groups::CovectorOf<G>& xi0_guess) {
   problem.validate();
   options.validate();
   require_finite(v0_guess, "solve_shooting", "v0_guess");
@@ -100,7 +100,7 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   const double T = problem.T, s = xi_scale(problem);
 
   auto unpack = [&](const Eigen::VectorXd& x) {
-    return std::pair<TangentOf<G>, CovectorOf<G>>(x.head<n>() / T, x.tail<n>() * s);
+    return std::pair<groups::TangentOf<G>, groups::CovectorOf<G>>(x.head<n>() / T, x.tail<n>() * s);
   };
   auto residual_only = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
     const auto [v0, xi0] = unpack(x);
@@ -114,7 +114,7 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
     r << scheme.terminal_residual(out.last), out.last.xi / s;
     return true;
   };
-  ResidualFunction f;
+  numerics::ResidualFunction f;
   if (options.analytic_jacobian) {
     f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
       if (jac == nullptr) return residual_only(x, r);
@@ -125,7 +125,7 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
         failure = out.failure;
         return false;
       }
-      const TangentOf<G> rg = scheme.terminal_residual(out.last);
+      const groups::TangentOf<G> rg = scheme.terminal_residual(out.last);
       r.resize(2 * n);
       r << rg, out.last.xi / s;
       // Chain rule for the scaled unknowns: columns for v0 / T and xi0 s; rows of xi_N / s.
@@ -137,12 +137,12 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
       return true;
     };
   } else {
-    f = with_forward_difference_jacobian(residual_only, 1e-7);
+    f = numerics::with_forward_difference_jacobian(residual_only, 1e-7);
   }
   Eigen::VectorXd x0(2 * n);
   x0 << v0_guess * T, xi0_guess / s;
-  const NonlinearSolveReport report =
-      levenberg_marquardt(f, x0, {.tolerance = options.tolerance, .max_iterations = options.max_iterations,
+  const numerics::NonlinearSolveReport report =
+      numerics::levenberg_marquardt(f, x0, {.tolerance = options.tolerance, .max_iterations = options.max_iterations,
                                   .no_progress_window = options.no_progress_window, .monitor = options.monitor});
   solution.inner_iterations = report.iterations;
   solution.residual_history = report.residual_history;
@@ -159,10 +159,10 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   return solution;
 }
 
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, const ShootingOptions& options = {}) {
   problem.validate();
-  return solve_shooting(problem, options, geodesic_guess(problem), CovectorOf<G>::Zero());
+  return solve_shooting(problem, options, geodesic_guess(problem), groups::CovectorOf<G>::Zero());
 }
 
-}  // namespace cartan
+}  // namespace cartan::transported

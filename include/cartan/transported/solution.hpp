@@ -11,7 +11,7 @@
 #include "cartan/transported/method.hpp"
 #include "cartan/transported/scheme.hpp"
 
-namespace cartan {
+namespace cartan::transported {
 
 /// What only collocation reports: the final mesh size, the largest relative RMS residual on it,
 /// and for SO(3) max |g^T g - I| over the mesh of g and the transport element (NaN elsewhere).
@@ -21,7 +21,7 @@ struct CollocationReport {
   double group_defect = std::numeric_limits<double>::quiet_NaN();
 };
 
-template <LieGroup G>
+template <groups::LieGroup G>
 struct TransportedSolution {
   Status status = Status::NotConverged;
   std::string message;  ///< human-readable diagnostics (iterations, residuals, every attempt)
@@ -31,8 +31,8 @@ struct TransportedSolution {
   /// The requested problem's trajectory: at a failure, the best iterate found *for the requested
   /// problem* (never a stage of a continuation at another T or lambda), or empty.
   TransportedTrajectory<G> trajectory;
-  TangentOf<G> v0 = TangentOf<G>::Zero();
-  CovectorOf<G> xi0 = CovectorOf<G>::Zero();
+  groups::TangentOf<G> v0 = groups::TangentOf<G>::Zero();
+  groups::CovectorOf<G> xi0 = groups::CovectorOf<G>::Zero();
   double terminal_error = 0;  ///< |log(gT^{-1} g_N)|
   double xi_terminal = 0;     ///< |xi_N| (0 by construction in the two-level scheme)
   int outer_iterations = 0;
@@ -40,7 +40,7 @@ struct TransportedSolution {
   int sweeps = 0;             ///< forward sweeps of the scheme (tangent sweeps count once)
   std::vector<double> residual_history;
   double solve_time_s = 0;
-  /// The discrete transported action S_h of the trajectory (verify/action.hpp), so that users
+  /// The discrete transported action S_h of the trajectory (transported/action.hpp), so that users
   /// can tell solution branches apart; NaN when there is no trajectory.
   double action = std::numeric_limits<double>::quiet_NaN();
 
@@ -49,4 +49,4 @@ struct TransportedSolution {
   bool converged() const { return status == Status::Converged; }
 };
 
-}  // namespace cartan
+}  // namespace cartan::transported

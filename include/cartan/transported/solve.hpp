@@ -23,18 +23,18 @@
 #include <type_traits>
 #include <vector>
 
-#include "cartan/bvp/transported_solution.hpp"
-#include "cartan/models/heisenberg_oscillator.hpp"
-#include "cartan/models/natural_system.hpp"
-#include "cartan/models/rigid_body.hpp"
+#include "cartan/transported/collocation_solution.hpp"
+#include "cartan/mechanics/heisenberg_oscillator.hpp"
+#include "cartan/mechanics/natural_system.hpp"
+#include "cartan/mechanics/rigid_body.hpp"
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/method.hpp"
 #include "cartan/transported/solve_options.hpp"
 #include "cartan/transported/multiple_shooting.hpp"
 #include "cartan/transported/two_level.hpp"
-#include "cartan/verify/action.hpp"
+#include "cartan/transported/action.hpp"
 
-namespace cartan {
+namespace cartan::transported {
 
 /// The potential V of a NaturalLagrangian<G, V> (void for any other Lagrangian): collocation
 /// needs mu = I v with a constant inertia.
@@ -42,8 +42,8 @@ template <class L>
 struct NaturalPotentialOf {
   using type = void;
 };
-template <LieGroup G, Potential<G> V>
-struct NaturalPotentialOf<NaturalLagrangian<G, V>> {
+template <groups::LieGroup G, mechanics::Potential<G> V>
+struct NaturalPotentialOf<mechanics::NaturalLagrangian<G, V>> {
   using type = V;
 };
 
@@ -51,20 +51,20 @@ struct NaturalPotentialOf<NaturalLagrangian<G, V>> {
 /// problem at T with time rescaled, so continuation in T cannot help.
 template <class L>
 inline constexpr bool kPurelyKinetic = false;
-template <LieGroup G>
-inline constexpr bool kPurelyKinetic<NaturalLagrangian<G, ZeroPotential<G>>> = true;
+template <groups::LieGroup G>
+inline constexpr bool kPurelyKinetic<mechanics::NaturalLagrangian<G, mechanics::ZeroPotential<G>>> = true;
 
 namespace detail {
 
 /// A note when gT lies near the cut locus of g0 (e.g. a rotation by about pi): there log is
 /// discontinuous, so the geodesic guess may point either way and the branch found depends on it.
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 std::string cut_locus_note(const TransportedProblem<G, L>& problem) {
-  const ElementOf<G> d = G::compose(G::inverse(problem.g0), problem.gT);
-  const TangentOf<G> x = G::log(d);
+  const groups::ElementOf<G> d = G::compose(G::inverse(problem.g0), problem.gT);
+  const groups::TangentOf<G> x = G::log(d);
   constexpr double eps = 1e-6;
   for (int i = 0; i < G::kDim; ++i) {
-    const TangentOf<G> y = G::log(G::compose(d, G::exp(TangentOf<G>(eps * TangentOf<G>::Unit(i)))));
+    const groups::TangentOf<G> y = G::log(G::compose(d, G::exp(groups::TangentOf<G>(eps * groups::TangentOf<G>::Unit(i)))));
     if ((y - x).norm() > 100 * eps * (1 + x.norm())) {
       return "gT is near the cut locus of g0 (log(g0^-1 gT) jumps under a perturbation of 1e-6): "
              "the geodesic guess's direction is ambiguous and the branch found depends on it";
@@ -77,13 +77,13 @@ std::string cut_locus_note(const TransportedProblem<G, L>& problem) {
 /// (the scheme recovers v from mu with it at every step): checked at t = 0, g0 and t = T, gT on
 /// the geodesic velocity and the basis vectors, to 1e-6 relative (an exact inverse agrees to
 /// rounding; an iterative one to its own tolerance, which should be far below the solver's).
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 void check_legendre_inverse(const TransportedProblem<G, L>& problem) {
-  const TangentOf<G> geodesic = geodesic_guess(problem);
+  const groups::TangentOf<G> geodesic = geodesic_guess(problem);
   for (const auto& [t, g] : {std::pair{0.0, problem.g0}, std::pair{problem.T, problem.gT}}) {
     for (int i = -1; i < G::kDim; ++i) {
-      const TangentOf<G> v = i < 0 ? geodesic : TangentOf<G>(TangentOf<G>::Unit(i));
-      const TangentOf<G> back = problem.lagrangian.velocity(t, g, problem.lagrangian.momentum(t, g, v));
+      const groups::TangentOf<G> v = i < 0 ? geodesic : groups::TangentOf<G>(groups::TangentOf<G>::Unit(i));
+      const groups::TangentOf<G> back = problem.lagrangian.velocity(t, g, problem.lagrangian.momentum(t, g, v));
       if (!((back - v).norm() <= 1e-6 * (1 + v.norm()))) {
         throw_invalid("solve", "lagrangian", "(velocity(t, g, momentum(t, g, v)) = " + format_value(back) +
                                                  " for v = " + format_value(v) + " at t = " + format_value(t) + ")",
@@ -94,7 +94,7 @@ void check_legendre_inverse(const TransportedProblem<G, L>& problem) {
 }
 
 /// Fills what every result carries: the action S_h of its trajectory, the total time.
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 void complete(const TransportedProblem<G, L>& problem, TransportedSolution<G>& s,
               std::chrono::steady_clock::time_point start) {
   const auto& tr = s.trajectory;
@@ -108,7 +108,7 @@ void complete(const TransportedProblem<G, L>& problem, TransportedSolution<G>& s
   s.solve_time_s = seconds_since(start);
 }
 
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> collocation(const TransportedProblem<G, L>& problem, const SolveOptions& options,
                                    const SolveGuess<G>& guess, int samples) {
   using V = typename NaturalPotentialOf<L>::type;
@@ -118,32 +118,32 @@ TransportedSolution<G> collocation(const TransportedProblem<G, L>& problem, cons
                   "models; the Legendre map of this one may depend on g");
   } else {
     const SolveMonitor stage = options.monitor.stage("collocation");
-    const bvp::CollocationOptions c{.tol = options.tol,
-                                    .max_nodes = options.max_nodes.value_or(bvp::kTransportedMaxNodes),
+    const numerics::CollocationOptions c{.tol = options.tol,
+                                    .max_nodes = options.max_nodes.value_or(kTransportedMaxNodes),
                                     .max_newton_iterations = options.max_iterations,
                                     .monitor = &stage};
-    if constexpr (std::is_same_v<G, Heisenberg>) {
+    if constexpr (std::is_same_v<G, groups::Heisenberg>) {
       if (options.method == Method::Collocation && (guess.trajectory || options.continuation != Continuation::None)) {
         throw std::invalid_argument(
             "solve: method collocation on heisenberg takes no trajectory guess and no continuation (the "
             "closed-form collocation of H3 starts from the straight line in (a, b, c))");
       }
-      return bvp::solve_heisenberg_transported(problem, c, samples);
+      return solve_heisenberg_transported(problem, c, samples);
     } else {
-      return bvp::solve_transported_by_collocation(problem, c, samples, options.continuation,
+      return solve_transported_by_collocation(problem, c, samples, options.continuation,
                                                    guess.trajectory ? &*guess.trajectory : nullptr);
     }
   }
 }
 
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> shooting(const TransportedProblem<G, L>& problem, const SolveOptions& options,
                                 const SolveGuess<G>& guess) {
   const SolveMonitor stage = options.monitor.stage("shooting");
   ContinuationOptions c{.shooting = {.order = options.order, .tolerance = options.tol,
                                      .max_iterations = options.max_iterations, .monitor = &stage}};
-  const std::optional<TangentOf<G>> v0 = guess.start_v0();
-  const std::optional<CovectorOf<G>> xi0 = guess.start_xi0();
+  const std::optional<groups::TangentOf<G>> v0 = guess.start_v0();
+  const std::optional<groups::CovectorOf<G>> xi0 = guess.start_xi0();
   switch (options.continuation) {
     case Continuation::T: return solve_continuation_in_T(problem, c, v0, xi0);
     case Continuation::Lambda:
@@ -156,13 +156,13 @@ TransportedSolution<G> shooting(const TransportedProblem<G, L>& problem, const S
     case Continuation::None: break;
   }
   TransportedSolution<G> s =
-      solve_shooting(problem, c.shooting, v0.value_or(geodesic_guess(problem)), xi0.value_or(CovectorOf<G>::Zero()));
+      solve_shooting(problem, c.shooting, v0.value_or(geodesic_guess(problem)), xi0.value_or(groups::CovectorOf<G>::Zero()));
   s.branch = guess.empty() ? "direct from the geodesic guess" : "direct from the given guess";
   return s;
 }
 
 /// The default strategy (header comment).
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const SolveOptions& options,
                                 const SolveGuess<G>& guess) {
   std::vector<std::string> failed;  // "shooting (no-progress, |r| = ...)"
@@ -211,7 +211,7 @@ TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const S
     const ShootingOptions s{.order = options.order, .tolerance = options.tol, .max_iterations = options.max_iterations,
                             .no_progress_window = 6, .monitor = &stage};
     TransportedSolution<G> r = solve_shooting(problem, s, guess.start_v0().value_or(geodesic_guess(problem)),
-                                              guess.start_xi0().value_or(CovectorOf<G>::Zero()));
+                                              guess.start_xi0().value_or(groups::CovectorOf<G>::Zero()));
     r.branch = guessed ? "direct from the given guess" : "direct from the geodesic guess";
     if (attempt("shooting", std::move(r))) return finish(true);
   }
@@ -258,7 +258,7 @@ TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const S
     MultipleShootingOptions m{.order = options.order, .tolerance = options.tol,
                               .max_iterations = options.max_iterations, .monitor = &stage};
     if (attempt("multiple shooting", solve_multiple_shooting(problem, m, guess.start_v0().value_or(geodesic_guess(problem)),
-                                                             guess.start_xi0().value_or(CovectorOf<G>::Zero())))) {
+                                                             guess.start_xi0().value_or(groups::CovectorOf<G>::Zero())))) {
       return finish(true);
     }
   }
@@ -269,7 +269,7 @@ TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const S
 
 /// Solves `problem` as `options` say (header comment). Throws std::invalid_argument for a bad
 /// problem, options or guess; numerical failures are statuses.
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const SolveOptions& options = {},
                              const SolveGuess<G>& guess = {}) {
   problem.validate();
@@ -291,7 +291,7 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
                                   {.order = options.order, .segments = options.segments, .tolerance = options.tol,
                                    .max_iterations = options.max_iterations, .monitor = &stage},
                                   guess.start_v0().value_or(geodesic_guess(problem)),
-                                  guess.start_xi0().value_or(CovectorOf<G>::Zero()));
+                                  guess.start_xi0().value_or(groups::CovectorOf<G>::Zero()));
       break;
     }
     case Method::TwoLevel: {
@@ -318,11 +318,11 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
 
 // The built-in models' solve is compiled once, in the library (src/transported/solve_*.cpp), not
 // again in every translation unit that calls it: each instance is the heaviest code in cartan.
-extern template TransportedSolution<SO3> solve(const TransportedProblem<SO3, RigidBody>&, const SolveOptions&,
-                                               const SolveGuess<SO3>&);
-extern template TransportedSolution<SO3> solve(const TransportedProblem<SO3, SO3Oscillator>&, const SolveOptions&,
-                                               const SolveGuess<SO3>&);
-extern template TransportedSolution<Heisenberg> solve(const TransportedProblem<Heisenberg, H3Oscillator>&,
-                                                      const SolveOptions&, const SolveGuess<Heisenberg>&);
+extern template TransportedSolution<groups::SO3> solve(const TransportedProblem<groups::SO3, mechanics::RigidBody>&, const SolveOptions&,
+                                               const SolveGuess<groups::SO3>&);
+extern template TransportedSolution<groups::SO3> solve(const TransportedProblem<groups::SO3, mechanics::SO3Oscillator>&, const SolveOptions&,
+                                               const SolveGuess<groups::SO3>&);
+extern template TransportedSolution<groups::Heisenberg> solve(const TransportedProblem<groups::Heisenberg, mechanics::H3Oscillator>&,
+                                                      const SolveOptions&, const SolveGuess<groups::Heisenberg>&);
 
-}  // namespace cartan
+}  // namespace cartan::transported

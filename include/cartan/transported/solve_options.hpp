@@ -13,7 +13,7 @@
 #include "cartan/transported/method.hpp"
 #include "cartan/transported/scheme.hpp"
 
-namespace cartan {
+namespace cartan::transported {
 
 struct SolveOptions {
   Method method = Method::Auto;
@@ -29,7 +29,7 @@ struct SolveOptions {
   std::optional<int> segments;         ///< multiple shooting only (default: about 100 steps each, at most 16)
   std::optional<double> lambda_start;  ///< continuation in lambda only (default 0)
   int samples = 0;                     ///< collocation only: output at this many uniform times (0: the final mesh)
-  std::optional<int> max_nodes;        ///< collocation only (default bvp::kTransportedMaxNodes)
+  std::optional<int> max_nodes;        ///< collocation only (default transported::kTransportedMaxNodes)
   SolveMonitor monitor;                ///< progress reports and stop requests
 
   /// Throws std::invalid_argument naming the first bad or inapplicable option.
@@ -70,16 +70,16 @@ struct SolveOptions {
 /// Optional starting points: v0 and xi0, or a whole trajectory (t from 0 to T, g, v and xi at
 /// every entry; mu is not read). A trajectory supplies v0 and xi0 to the shooting methods and
 /// the whole guess to collocation.
-template <LieGroup G>
+template <groups::LieGroup G>
 struct SolveGuess {
-  std::optional<TangentOf<G>> v0;
-  std::optional<CovectorOf<G>> xi0;
+  std::optional<groups::TangentOf<G>> v0;
+  std::optional<groups::CovectorOf<G>> xi0;
   std::optional<TransportedTrajectory<G>> trajectory;
 
   bool empty() const { return !v0 && !xi0 && !trajectory; }
   /// The guess of v(0) and of xi(0): given directly, or the trajectory's first entry; none if neither.
-  std::optional<TangentOf<G>> start_v0() const { return v0 ? v0 : trajectory ? std::optional(trajectory->v.front()) : std::nullopt; }
-  std::optional<CovectorOf<G>> start_xi0() const {
+  std::optional<groups::TangentOf<G>> start_v0() const { return v0 ? v0 : trajectory ? std::optional(trajectory->v.front()) : std::nullopt; }
+  std::optional<groups::CovectorOf<G>> start_xi0() const {
     return xi0 ? xi0 : trajectory ? std::optional(trajectory->xi.front()) : std::nullopt;
   }
 
@@ -95,4 +95,4 @@ struct SolveGuess {
   }
 };
 
-}  // namespace cartan
+}  // namespace cartan::transported

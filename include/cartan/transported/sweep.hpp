@@ -9,14 +9,14 @@
 
 #include "cartan/transported/scheme.hpp"
 
-namespace cartan {
+namespace cartan::transported {
 
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 struct SweepOutput {
   using Scheme = TransportedScheme<G, L>;
   SchemeNode<G> last;
   std::optional<typename Scheme::NodeTangent> tangent;  ///< filled when tangent columns > 0
-  std::vector<CovectorOf<G>>* xi_rates = nullptr;     ///< if set: xi rate of every step (N entries)
+  std::vector<groups::CovectorOf<G>>* xi_rates = nullptr;     ///< if set: xi rate of every step (N entries)
   TransportedTrajectory<G>* trajectory = nullptr;     ///< if set: every node
   std::string failure;                                ///< why the sweep stopped early
 };
@@ -25,10 +25,10 @@ struct SweepOutput {
 /// With `tangent` set, its directions are propagated along. `given_xi` and `out` as in
 /// forward_sweep (xi rates are stored at their global step index). Returns false, with
 /// `out.failure` set, if the state became non-finite or the inverse Legendre map failed.
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 bool sweep_segment(const TransportedScheme<G, L>& scheme, SchemeNode<G> node,
                    std::optional<typename TransportedScheme<G, L>::NodeTangent> tangent, int first, int last,
-                   const std::vector<CovectorOf<G>>* given_xi, SweepOutput<G, L>& out) {
+                   const std::vector<groups::CovectorOf<G>>* given_xi, SweepOutput<G, L>& out) {
   try {
     SchemeNode<G> next;
     typename TransportedScheme<G, L>::NodeTangent dnext;
@@ -38,8 +38,8 @@ bool sweep_segment(const TransportedScheme<G, L>& scheme, SchemeNode<G> node,
       out.trajectory->push(node);
     }
     for (int k = first; k < last; ++k) {
-      const CovectorOf<G>* xi_next = given_xi ? &(*given_xi)[static_cast<std::size_t>(k) + 1] : nullptr;
-      CovectorOf<G> rate;
+      const groups::CovectorOf<G>* xi_next = given_xi ? &(*given_xi)[static_cast<std::size_t>(k) + 1] : nullptr;
+      groups::CovectorOf<G> rate;
       if (tangent) {
         rate = scheme.step_tangent(node, *tangent, next, dnext, xi_next);
         std::swap(*tangent, dnext);
@@ -67,9 +67,9 @@ bool sweep_segment(const TransportedScheme<G, L>& scheme, SchemeNode<G> node,
 /// sequence; otherwise xi is integrated forward from xi0. With `tangent_columns` > 0 the
 /// tangent-linear map is propagated along (directions: v0, then xi0). Returns false, with
 /// `out.failure` set, if the state became non-finite or the inverse Legendre map failed.
-template <LieGroup G, ReducedLagrangian<G> L>
-bool forward_sweep(const TransportedScheme<G, L>& scheme, const TangentOf<G>& v0, const CovectorOf<G>& xi0,
-                   const std::vector<CovectorOf<G>>* given_xi, int tangent_columns, SweepOutput<G, L>& out) {
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+bool forward_sweep(const TransportedScheme<G, L>& scheme, const groups::TangentOf<G>& v0, const groups::CovectorOf<G>& xi0,
+                   const std::vector<groups::CovectorOf<G>>* given_xi, int tangent_columns, SweepOutput<G, L>& out) {
   SchemeNode<G> node;
   std::optional<typename TransportedScheme<G, L>::NodeTangent> tangent;
   try {
@@ -84,4 +84,4 @@ bool forward_sweep(const TransportedScheme<G, L>& scheme, const TangentOf<G>& v0
   return sweep_segment(scheme, std::move(node), std::move(tangent), 0, steps, given_xi, out);
 }
 
-}  // namespace cartan
+}  // namespace cartan::transported

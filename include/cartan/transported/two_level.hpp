@@ -10,7 +10,7 @@
 
 #include "cartan/transported/shooting.hpp"
 
-namespace cartan {
+namespace cartan::transported {
 
 struct TwoLevelOptions {
   SchemeOrder order = SchemeOrder::First;
@@ -31,9 +31,9 @@ struct TwoLevelOptions {
   }
 };
 
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, const TwoLevelOptions& options,
-                                       const TangentOf<G>& v0_guess) {
+                                       const groups::TangentOf<G>& v0_guess) {
   problem.validate();
   options.validate();
   require_finite(v0_guess, "solve_two_level", "v0_guess");
@@ -46,25 +46,25 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
   solution.method = Method::TwoLevel;
   solution.order = static_cast<int>(options.order);
 
-  std::vector<CovectorOf<G>> xi(nodes, CovectorOf<G>::Zero());  // xi^(0) = 0 (Step 1)
-  std::vector<CovectorOf<G>> rates;
+  std::vector<groups::CovectorOf<G>> xi(nodes, groups::CovectorOf<G>::Zero());  // xi^(0) = 0 (Step 1)
+  std::vector<groups::CovectorOf<G>> rates;
   std::string failure;
   auto inner_residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
     SweepOutput<G, L> out;
     ++solution.sweeps;
     const int columns = (jac != nullptr && options.analytic_jacobian) ? n : 0;
-    if (!forward_sweep(scheme, TangentOf<G>(x), CovectorOf<G>::Zero(), &xi, columns, out)) {
+    if (!forward_sweep(scheme, groups::TangentOf<G>(x), groups::CovectorOf<G>::Zero(), &xi, columns, out)) {
       failure = out.failure;
       return false;
     }
-    const TangentOf<G> rg = scheme.terminal_residual(out.last);
+    const groups::TangentOf<G> rg = scheme.terminal_residual(out.last);
     r = rg;
     if (columns > 0) *jac = scheme.terminal_residual_tangent(rg, *out.tangent);
     return true;
   };
-  ResidualFunction inner = inner_residual;
+  numerics::ResidualFunction inner = inner_residual;
   if (!options.analytic_jacobian) {
-    inner = with_forward_difference_jacobian(
+    inner = numerics::with_forward_difference_jacobian(
         [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) { return inner_residual(x, r, nullptr); }, 1e-7);
   }
 
@@ -75,12 +75,12 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
   solution.status = Status::NotConverged;
   Eigen::VectorXd v0 = v0_guess;
   double change = std::numeric_limits<double>::infinity();
-  NonlinearSolveReport report;
+  numerics::NonlinearSolveReport report;
   std::ostringstream history;
   for (int outer = 0; outer < options.max_outer; ++outer) {
     solution.outer_iterations = outer + 1;
     // Steps 2-3: inner shooting for v0 with the current {xi_k}.
-    report = levenberg_marquardt(inner, v0, {.tolerance = options.inner_tolerance, .max_iterations = options.max_inner,
+    report = numerics::levenberg_marquardt(inner, v0, {.tolerance = options.inner_tolerance, .max_iterations = options.max_inner,
                                              .monitor = options.monitor});
     solution.inner_iterations += report.iterations;
     v0 = report.x;
@@ -94,13 +94,13 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
     SweepOutput<G, L> out;
     out.xi_rates = &rates;
     ++solution.sweeps;
-    if (!forward_sweep(scheme, TangentOf<G>(v0), CovectorOf<G>::Zero(), &xi, 0, out)) {
+    if (!forward_sweep(scheme, groups::TangentOf<G>(v0), groups::CovectorOf<G>::Zero(), &xi, 0, out)) {
       solution.status = Status::NonFinite;
       solution.message = "two-level: the sweep for the xi rates failed in outer iteration " +
                          std::to_string(outer + 1) + ": " + out.failure;
       break;
     }
-    std::vector<CovectorOf<G>> xi_new(nodes, CovectorOf<G>::Zero());
+    std::vector<groups::CovectorOf<G>> xi_new(nodes, groups::CovectorOf<G>::Zero());
     for (std::size_t k = nodes - 1; k-- > 0;) xi_new[k] = xi_new[k + 1] - dt * rates[k];
     change = 0;
     for (std::size_t k = 0; k < nodes; ++k) change = std::max(change, (xi_new[k] - xi[k]).cwiseAbs().maxCoeff());
@@ -119,7 +119,7 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
   }
   if (!decided(solution.status)) solution.status = Status::OuterNotConverged;
   // Step 6: the trajectory for the final {xi_k}.
-  if (!detail::record_solution(scheme, TangentOf<G>(v0), CovectorOf<G>::Zero(), &xi, solution)) {
+  if (!detail::record_solution(scheme, groups::TangentOf<G>(v0), groups::CovectorOf<G>::Zero(), &xi, solution)) {
     solution.status = Status::NonFinite;
   }
   std::ostringstream message;
@@ -133,10 +133,10 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
   return solution;
 }
 
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, const TwoLevelOptions& options = {}) {
   problem.validate();
   return solve_two_level(problem, options, geodesic_guess(problem));
 }
 
-}  // namespace cartan
+}  // namespace cartan::transported

@@ -9,7 +9,7 @@
 //     l = 1/2 v.I v - V(g), u.zeta = -dV/dt, so E = 1/2 v.I v + V(g) is conserved for every lambda
 //     (not only lambda in {0, 1});
 //   * residual of the continuous equations by finite differences (below);
-//   * stationarity of the discrete transported action (verify/action.hpp) along random smooth
+//   * stationarity of the discrete transported action (transported/action.hpp) along random smooth
 //     endpoint-fixed variations.
 // Each check returns a dimensionless figure (a relative size); the thresholds come from the
 // scheme's order and the resolution h * omega (discretisation_threshold).
@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
-#include "cartan/lagrangian_hessian.hpp"
+#include "cartan/mechanics/lagrangian_hessian.hpp"
 #include "cartan/transported/scheme.hpp"
-#include "cartan/verify/action.hpp"
+#include "cartan/transported/action.hpp"
 
 namespace cartan::verify {
 
@@ -62,18 +62,18 @@ struct ThreePoint {
       : a(-h2 / (h1 * (h1 + h2))), b((h2 - h1) / (h1 * h2)), c(h1 / (h2 * (h1 + h2))) {}
 };
 
-template <LieGroup G, ReducedLagrangian<G> L>
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 class TrajectoryChecks {
  public:
-  using Tangent = TangentOf<G>;
-  using Covector = CovectorOf<G>;
+  using Tangent = groups::TangentOf<G>;
+  using Covector = groups::CovectorOf<G>;
 
   /// `trajectory` needs at least 2 samples with increasing t on [0, T] (validated by the caller,
   /// e.g. cli::read_result). The transport P_k = Ad(h_k) is rebuilt from the samples alone:
   /// h_0 = e, h_{k+1} = exp(-lambda log(g_k^{-1} g_{k+1})) h_k (disc-exp with the step's mean
   /// velocity; exact for both shooting schemes, whose steps are g_{k+1} = g_k exp(h u), and
   /// second order otherwise; exact on H3, where P depends on g - g0 only, para-trans-Heis).
-  TrajectoryChecks(L lagrangian, double lambda, double T, TransportedTrajectory<G> trajectory)
+  TrajectoryChecks(L lagrangian, double lambda, double T, transported::TransportedTrajectory<G> trajectory)
       : l_(std::move(lagrangian)), lambda_(lambda), T_(T), x_(std::move(trajectory)) {
     const std::size_t m = x_.t.size();
     transport_.reserve(m);
@@ -84,11 +84,11 @@ class TrajectoryChecks {
   }
 
   std::size_t size() const { return x_.t.size(); }
-  const TransportedTrajectory<G>& trajectory() const { return x_; }
+  const transported::TransportedTrajectory<G>& trajectory() const { return x_; }
 
   /// max(|log(g0^{-1} g_0)|, |log(gT^{-1} g_N)|, |xi_N|): the boundary conditions, absolute
   /// (as the solvers' tolerances are).
-  double boundary_error(const ElementOf<G>& g0, const ElementOf<G>& gT) const {
+  double boundary_error(const groups::ElementOf<G>& g0, const groups::ElementOf<G>& gT) const {
     return std::max({G::log(G::compose(G::inverse(g0), x_.g.front())).norm(),
                      G::log(G::compose(G::inverse(gT), x_.g.back())).norm(), x_.xi.back().norm()});
   }
@@ -112,9 +112,9 @@ class TrajectoryChecks {
     double speed = 0, stiffness = 0;
     for (std::size_t k = 0; k < size(); ++k) {
       speed = std::max(speed, (G::Ad(transport_[k]) * x_.v[k]).norm());
-      const LagrangianHessian<G> hess = lagrangian_hessian<G>(l_, x_.t[k], x_.g[k], x_.v[k]);
-      const AlgebraMatrixOf<G> mass = (hess.momentum_v + hess.momentum_v.transpose()) / 2;
-      const double smallest = Eigen::SelfAdjointEigenSolver<AlgebraMatrixOf<G>>(mass, Eigen::EigenvaluesOnly).eigenvalues()[0];
+      const mechanics::LagrangianHessian<G> hess = mechanics::lagrangian_hessian<G>(l_, x_.t[k], x_.g[k], x_.v[k]);
+      const groups::AlgebraMatrixOf<G> mass = (hess.momentum_v + hess.momentum_v.transpose()) / 2;
+      const double smallest = Eigen::SelfAdjointEigenSolver<groups::AlgebraMatrixOf<G>>(mass, Eigen::EigenvaluesOnly).eigenvalues()[0];
       if (smallest > 0) stiffness = std::max(stiffness, hess.gradient_g.norm() / smallest);
     }
     return speed + std::sqrt(stiffness);
@@ -129,8 +129,8 @@ class TrajectoryChecks {
   double amplification() const {
     double torsion_operand = 0, curvature_operand = 0;
     for (std::size_t k = 0; k < size(); ++k) {
-      torsion_operand = std::max(torsion_operand, coad<G>(x_.v[k], x_.mu[k]).norm());
-      curvature_operand = std::max(curvature_operand, coad<G>(x_.v[k], x_.xi[k]).norm());
+      torsion_operand = std::max(torsion_operand, groups::coad<G>(x_.v[k], x_.mu[k]).norm());
+      curvature_operand = std::max(curvature_operand, groups::coad<G>(x_.v[k], x_.xi[k]).norm());
     }
     const double kappa = relative_to(curvature_operand, torsion_operand);
     return std::max(1.0, std::abs(2 * lambda_ - 1) + std::abs(lambda_ * (1 - lambda_)) * kappa);
@@ -175,8 +175,8 @@ class TrajectoryChecks {
       const auto p = G::Ad(transport_[k]);
       const Tangent pv = p * x_.v[k];
       const Covector force = p.transpose() * l_.group_gradient(x_.t[k], x_.g[k], x_.v[k]);
-      const Covector coad_mu = coad<G>(x_.v[k], x_.mu[k]);
-      const Covector coad_xi = coad<G>(x_.v[k], x_.xi[k]);
+      const Covector coad_mu = groups::coad<G>(x_.v[k], x_.mu[k]);
+      const Covector coad_xi = groups::coad<G>(x_.v[k], x_.xi[k]);
       const double residual[3] = {(u - pv).norm(),
                                   (dmu - force + torsion * coad_mu + curvature * coad_xi).norm(),
                                   (dxi + coad_mu).norm()};
@@ -202,7 +202,7 @@ class TrajectoryChecks {
   }
 
   /// max over `count` variations w_j(t) = sin(j pi t / T) r_j (j = 1..count, r_j random unit
-  /// vectors from `seed`) of |dS_h/de| along g_k -> g_k exp(e w_j(t_k)) (verify/action.hpp),
+  /// vectors from `seed`) of |dS_h/de| along g_k -> g_k exp(e w_j(t_k)) (transported/action.hpp),
   /// relative to the size of the first-variation integrand's terms,
   /// sum_k h (|mu_k| |w_j'(t_k)| + |zeta_k| |w_j(t_k)|): what dS would be without cancellation.
   /// Needs uniform t (is_uniform): the discrete action is defined on a uniform mesh.
@@ -224,7 +224,7 @@ class TrajectoryChecks {
         scale += h * (x_.mu[k].norm() * frequency * std::abs(std::cos(s)) +
                       l_.group_gradient(x_.t[k], x_.g[k], x_.v[k]).norm() * std::abs(std::sin(s)));
       }
-      const double derivative = transported_action_derivative<G>(l_, lambda_, T_, x_.g, w);
+      const double derivative = transported::transported_action_derivative<G>(l_, lambda_, T_, x_.g, w);
       worst = std::max(worst, relative_to(std::abs(derivative), scale));
     }
     return worst;
@@ -233,12 +233,12 @@ class TrajectoryChecks {
  private:
   /// log(g_k^{-1} g_{k+1}).
   Tangent step_log(std::size_t k) const { return G::log(G::compose(G::inverse(x_.g[k]), x_.g[k + 1])); }
-  double energy(std::size_t k) const { return lagrangian_energy<G>(l_, x_.t[k], x_.g[k], x_.v[k]); }
+  double energy(std::size_t k) const { return mechanics::lagrangian_energy<G>(l_, x_.t[k], x_.g[k], x_.v[k]); }
 
   L l_;
   double lambda_, T_;
-  TransportedTrajectory<G> x_;
-  std::vector<ElementOf<G>> transport_;
+  transported::TransportedTrajectory<G> x_;
+  std::vector<groups::ElementOf<G>> transport_;
 };
 
 }  // namespace cartan::verify

@@ -112,8 +112,8 @@ inline Report unchecked_failure(Status status) {
 /// order (1, 2, or 4 for collocation). A `status` other than converged adds a failing
 /// `converged` check (the data are then a best iterate). Throws std::invalid_argument for an
 /// invalid trajectory (TransportedTrajectory::validate, with mu), order or tol.
-template <LieGroup G, ReducedLagrangian<G> L>
-Report verify_trajectory(const TransportedProblem<G, L>& problem, TransportedTrajectory<G> x, int order, double tol,
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+Report verify_trajectory(const transported::TransportedProblem<G, L>& problem, transported::TransportedTrajectory<G> x, int order, double tol,
                          Status status = Status::Converged) {
   if (order < 1) throw_invalid("verify", "order", std::to_string(order), "must be at least 1");
   if (!(tol > 0) || !std::isfinite(tol)) throw_invalid("verify", "tol", format_value(tol), "must be positive and finite");
@@ -151,8 +151,8 @@ Report verify_trajectory(const TransportedProblem<G, L>& problem, TransportedTra
 
 /// verify_trajectory on a solver's result: its trajectory, order and status. A result without a
 /// trajectory (a failure that kept no iterate) gets the failing `converged` check alone.
-template <LieGroup G, ReducedLagrangian<G> L>
-Report verify_solution(const TransportedProblem<G, L>& problem, const TransportedSolution<G>& solution, double tol) {
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+Report verify_solution(const transported::TransportedProblem<G, L>& problem, const transported::TransportedSolution<G>& solution, double tol) {
   if (solution.trajectory.t.empty() && !solution.converged()) return unchecked_failure(solution.status);
   return verify_trajectory(problem, solution.trajectory, solution.order, tol, solution.status);
 }

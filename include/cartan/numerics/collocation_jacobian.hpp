@@ -1,0 +1,57 @@
+#pragma once
+// The Newton matrix of the collocation equations (numerics/collocation.hpp) and its two solvers.
+//
+// Rows: the collocation residuals r_0 .. r_{m-2} (n each), then the n + k boundary conditions;
+// unknowns: y_0 .. y_{m-1} (n each), then p (k). Row block i touches only y_i (block A_i),
+// y_{i+1} (B_i) and p (C_i); the boundary rows touch y_0 (Da), y_{m-1} (Db) and p (Dp).
+//
+// BlockLU is Gaussian elimination with partial pivoting on this matrix with the unknowns
+// ordered (y_1, ..., y_{m-1} | y_0, p): every column of y_{j+1} has non-zeros only in the n rows
+// left over from the previous step and in the next row block, so each step factorises a
+// 2n x n panel (n + (n + k) rows at the last), pivoting among exactly the rows a general sparse
+// LU with partial pivoting would consider. What is left is a dense (n + k) x (n + k) system for
+// (y_0, p). Work and storage are O(m n^2 (n + k)); the result equals Eigen's SparseLU up to
+// rounding (tests/numerics/test_collocation_jacobian.cpp), without its per-factorisation overhead on small blocks.
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+#include <string>
+#include <vector>
+
+namespace cartan::numerics {
+
+struct CollocationJacobian {
+  int n = 0, k = 0;
+  Eigen::Index m = 0;         ///< mesh nodes
+  Eigen::MatrixXd A, B;       ///< n x n(m-1): block i is d r_i / d y_i, d r_i / d y_{i+1}
+  Eigen::MatrixXd C;          ///< n x k(m-1): block i is d r_i / d p
+  Eigen::MatrixXd Da, Db, Dp; ///< (n+k) x n, (n+k) x n, (n+k) x k: d bc / d(y_0, y_{m-1}, p)
+
+  void resize(int states, int parameters, Eigen::Index nodes);
+  auto a(Eigen::Index i) { return A.middleCols(n * i, n); }
+  auto b(Eigen::Index i) { return B.middleCols(n * i, n); }
+  auto c(Eigen::Index i) { return C.middleCols(k * i, k); }
+  /// The same matrix in compressed sparse form (for Eigen's SparseLU).
+  Eigen::SparseMatrix<double> sparse() const;
+};
+
+class BlockLU {
+ public:
+  /// Returns false (and sets error()) when a pivot is zero or not finite.
+  bool factorize(const CollocationJacobian& jacobian);
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
+  const std::string& error() const { return error_; }
+
+ private:
+  struct Step {
+    Eigen::MatrixXd panel;    ///< rows after elimination: multipliers (left n columns, below the
+                              ///< diagonal), U (top n rows: current | next | border)
+    std::vector<int> swaps;   ///< row interchanges, in order
+  };
+  int n_ = 0, k_ = 0;
+  std::vector<Step> steps_;
+  Eigen::FullPivLU<Eigen::MatrixXd> border_;
+  std::string error_;
+};
+
+}  // namespace cartan::numerics

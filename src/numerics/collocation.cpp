@@ -1,0 +1,506 @@
+#include "cartan/numerics/collocation.hpp"
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include "cartan/numerics/collocation_jacobian.hpp"
+#include "cartan/errors.hpp"
+
+namespace cartan::numerics {
+
+namespace {
+
+using Eigen::Index;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+using SparseSolver = Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>>;
+
+constexpr std::string_view kWhere = "solve_collocation";
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+/// Newton stops when every collocation residual is below this fraction of tol h (1 + |f_mid|):
+/// the midpoint residual of S is 1.5 r_i / h, so Newton's error is then <= 7.5% of tol ...
+constexpr double kNewtonFraction = 0.05;
+/// ... or at rounding level, this many ulps of the terms of r_i (needed when tol h is tiny).
+constexpr double kRoundingUlps = 16;
+constexpr int kMaxBacktracks = 10;
+/// Newton reuses its factorisation for the next step after a full step whose simplified
+/// correction shrank at least this much (the chord method then converges at least as fast).
+constexpr double kReuseContraction = 0.25;
+/// An interval with residual r > tol is split into ceil((r / tol)^(1/3)) pieces (the residual is
+/// O(h^3)), at least 2 and at most this many per round (the model is only asymptotic).
+constexpr int kMaxPieces = 6;
+
+/// The user's functions with evaluation counts and forward-difference Jacobians.
+class Model {
+ public:
+  Model(const BvpSystem& system, double fd_step) : s_(system), fd_step_(fd_step) {}
+  int n() const { return s_.n; }
+  int k() const { return s_.k; }
+  int evaluations() const { return evaluations_; }
+
+  void rhs(double t, ConstVectorRef y, ConstVectorRef p, VectorRef out) {
+    ++evaluations_;
+    s_.rhs(t, y, p, out);
+  }
+  void bc(ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p, VectorRef out) const { s_.bc(ya, yb, p, out); }
+
+  /// df/dy and df/dp at (t, y, p), where f0 = f(t, y, p).
+  void rhs_jacobian(double t, ConstVectorRef y, ConstVectorRef p, ConstVectorRef f0, MatrixXd& dfdy,
+                    MatrixXd& dfdp) {
+    dfdy.resize(n(), n());
+    dfdp.resize(n(), k());
+    if (s_.rhs_jacobian) {
+      s_.rhs_jacobian(t, y, p, dfdy, dfdp);
+      return;
+    }
+    VectorXd f(n());
+    difference(y, dfdy, f0, [&](const VectorXd& yy) { rhs(t, yy, p, f); return f; });
+    difference(p, dfdp, f0, [&](const VectorXd& pp) { rhs(t, y, pp, f); return f; });
+  }
+
+  /// d bc / d(ya, yb, p) at a point where bc = r0.
+  void bc_jacobian(const VectorXd& ya, const VectorXd& yb, const VectorXd& p, const VectorXd& r0, MatrixXd& dya,
+                   MatrixXd& dyb, MatrixXd& dp) const {
+    const int rows = n() + k();
+    dya.resize(rows, n());
+    dyb.resize(rows, n());
+    dp.resize(rows, k());
+    if (s_.bc_jacobian) {
+      s_.bc_jacobian(ya, yb, p, dya, dyb, dp);
+      return;
+    }
+    VectorXd r(rows);
+    difference(ya, dya, r0, [&](const VectorXd& x) { bc(x, yb, p, r); return r; });
+    difference(yb, dyb, r0, [&](const VectorXd& x) { bc(ya, x, p, r); return r; });
+    difference(p, dp, r0, [&](const VectorXd& x) { bc(ya, yb, x, r); return r; });
+  }
+
+ private:
+  /// Forward differences of g at x (g(x) = g0), column j with step fd_step max(1, |x_j|).
+  template <class Function>
+  void difference(ConstVectorRef x, MatrixXd& out, ConstVectorRef g0, const Function& g) const {
+    VectorXd xx = x;
+    for (Index j = 0; j < x.size(); ++j) {
+      xx[j] = x[j] + fd_step_ * std::max(1.0, std::abs(x[j]));
+      const double step = xx[j] - x[j];  // the step actually taken (exact in floating point)
+      out.col(j) = (g(xx) - g0) / step;
+      xx[j] = x[j];
+    }
+  }
+
+  const BvpSystem& s_;
+  double fd_step_;
+  int evaluations_ = 0;
+};
+
+/// The collocation system at one iterate on one mesh.
+struct Iterate {
+  VectorXd t, h;
+  MatrixXd y, f;        // n x m
+  MatrixXd ymid, fmid;  // n x (m - 1)
+  VectorXd p;
+  VectorXd residual;    // n (m - 1) collocation rows, then n + k boundary rows
+
+  Index nodes() const { return t.size(); }
+  VectorXd unknowns() const {
+    VectorXd z(y.size() + p.size());
+    z << y.reshaped(), p;
+    return z;
+  }
+};
+
+/// Evaluates f, the midpoint values and the residual; false if anything is not finite.
+bool evaluate(Model& model, const VectorXd& t, const MatrixXd& y, const VectorXd& p, Iterate& it) {
+  const int n = model.n();
+  const Index m = t.size();
+  it.t = t;
+  it.h = t.tail(m - 1) - t.head(m - 1);
+  it.y = y;
+  it.p = p;
+  it.f.resize(n, m);
+  it.ymid.resize(n, m - 1);
+  it.fmid.resize(n, m - 1);
+  it.residual.resize(n * m + model.k());
+  for (Index i = 0; i < m; ++i) model.rhs(t[i], y.col(i), p, it.f.col(i));
+  for (Index i = 0; i + 1 < m; ++i) {
+    const double h = it.h[i];
+    it.ymid.col(i) = (y.col(i) + y.col(i + 1)) / 2 - h / 8 * (it.f.col(i + 1) - it.f.col(i));
+    model.rhs(t[i] + h / 2, it.ymid.col(i), p, it.fmid.col(i));
+    it.residual.segment(n * i, n) =
+        y.col(i + 1) - y.col(i) - h / 6 * (it.f.col(i) + 4 * it.fmid.col(i) + it.f.col(i + 1));
+  }
+  model.bc(y.col(0), y.col(m - 1), p, it.residual.tail(n + model.k()));
+  return it.f.allFinite() && it.fmid.allFinite() && it.residual.allFinite();
+}
+
+bool evaluate(Model& model, const Iterate& shape, const VectorXd& z, Iterate& it) {
+  const Index ny = shape.y.size();
+  return evaluate(model, shape.t, z.head(ny).reshaped(shape.y.rows(), shape.y.cols()), z.tail(z.size() - ny), it);
+}
+
+/// The Jacobian of the residual with respect to (y_0, ..., y_{m-1}, p), blockwise.
+void jacobian(Model& model, const Iterate& it, CollocationJacobian& jac) {
+  const int n = model.n(), k = model.k();
+  const Index m = it.nodes();
+  jac.resize(n, k, m);
+  const MatrixXd eye = MatrixXd::Identity(n, n);
+  MatrixXd jy_left, jp_left, jy_right, jp_right, jmy, jmp;
+  model.rhs_jacobian(it.t[0], it.y.col(0), it.p, it.f.col(0), jy_right, jp_right);
+  for (Index i = 0; i + 1 < m; ++i) {
+    std::swap(jy_left, jy_right);
+    std::swap(jp_left, jp_right);
+    model.rhs_jacobian(it.t[i + 1], it.y.col(i + 1), it.p, it.f.col(i + 1), jy_right, jp_right);
+    const double h = it.h[i];
+    model.rhs_jacobian(it.t[i] + h / 2, it.ymid.col(i), it.p, it.fmid.col(i), jmy, jmp);
+    // dy_mid/dy_i = I/2 + h/8 J_i, dy_mid/dy_{i+1} = I/2 - h/8 J_{i+1}, dy_mid/dp = -h/8 (P_{i+1} - P_i).
+    // lazyProduct: coefficient-wise products, much faster than GEMM for these small blocks.
+    jac.a(i) = -eye - h / 6 * jy_left - h / 3 * jmy - h * h / 12 * jmy.lazyProduct(jy_left);
+    jac.b(i) = eye - h / 6 * jy_right - h / 3 * jmy + h * h / 12 * jmy.lazyProduct(jy_right);
+    if (k > 0) jac.c(i) = -h / 6 * (jp_left + 4 * jmp + jp_right) + h * h / 12 * jmy * (jp_right - jp_left);
+  }
+  model.bc_jacobian(it.y.col(0), it.y.col(m - 1), it.p, it.residual.tail(n + k), jac.Da, jac.Db, jac.Dp);
+}
+
+/// Factorises the Newton matrix with the chosen solver and solves with it.
+class LinearSolver {
+ public:
+  explicit LinearSolver(LinearSolverKind kind) : kind_(kind) {}
+  bool factorize(const CollocationJacobian& jac) {
+    if (kind_ == LinearSolverKind::BlockLU) {
+      const bool ok = block_.factorize(jac);
+      error_ = block_.error();
+      return ok;
+    }
+    const Eigen::SparseMatrix<double> sparse = jac.sparse();
+    if (!analysed_) {  // the pattern depends on the mesh only: every block is stored in full
+      sparse_.analyzePattern(sparse);
+      analysed_ = true;
+    }
+    sparse_.factorize(sparse);
+    error_ = sparse_.lastErrorMessage();
+    return sparse_.info() == Eigen::Success;
+  }
+  VectorXd solve(const VectorXd& rhs) const {
+    return kind_ == LinearSolverKind::BlockLU ? block_.solve(rhs) : VectorXd(sparse_.solve(rhs));
+  }
+  const std::string& error() const { return error_; }
+
+ private:
+  LinearSolverKind kind_;
+  BlockLU block_;
+  SparseSolver sparse_;
+  bool analysed_ = false;
+  std::string error_;
+};
+
+/// Largest collocation residual relative to its Newton target, and largest |bc|.
+struct ResidualSize {
+  double collocation = 0;  // max |r_ij| / target_ij; Newton needs <= 1
+  double boundary = 0;
+};
+
+ResidualSize residual_size(const Iterate& it, int n, double tol) {
+  ResidualSize size;
+  for (Index i = 0; i + 1 < it.nodes(); ++i) {
+    const double h = it.h[i];
+    const auto fmid = it.fmid.col(i).array().abs();
+    const auto terms = it.y.col(i).array().abs() + it.y.col(i + 1).array().abs() +
+                       h * (it.f.col(i).array().abs() + 4 * fmid + it.f.col(i + 1).array().abs()) / 6;
+    const auto target = (kNewtonFraction * tol * h * (1 + fmid)).max(kRoundingUlps * kEpsilon * terms);
+    size.collocation = std::max(size.collocation, (it.residual.segment(n * i, n).array().abs() / target).maxCoeff());
+  }
+  size.boundary = it.residual.tail(it.residual.size() - n * (it.nodes() - 1)).cwiseAbs().maxCoeff();
+  return size;
+}
+
+struct NewtonOutcome {
+  Status status = Status::Converged;
+  std::string message;
+};
+
+struct Counters {
+  int newton = 0;
+  int jacobians = 0;
+};
+
+bool newton_converged(const ResidualSize& size, const CollocationOptions& options) {
+  return size.collocation <= 1 && size.boundary <= options.boundary_tolerance();
+}
+
+std::string describe(const ResidualSize& size, const CollocationOptions& options) {
+  std::ostringstream out;
+  out << "max collocation residual " << format_value(size.collocation) << " x its target "
+      << format_value(kNewtonFraction * options.tol) << " h (1 + |f|), max |bc| " << format_value(size.boundary)
+      << " (bc_tol " << format_value(options.boundary_tolerance()) << ")";
+  return out.str();
+}
+
+/// Damped Newton from `it` (evaluated); on return `it` holds the last accepted iterate. A trial
+/// step alpha is accepted when the simplified Newton correction |J^{-1} r(z - alpha dz)| is at
+/// most (1 - alpha/4) |dz| (natural monotonicity, affine invariant) or the trial has converged.
+/// Jacobian reuse: after a full step (alpha = 1) that contracted well, theta = |simplified| / |dz|
+/// <= kReuseContraction, the simplified correction already computed with the old factorisation
+/// is the next step (a chord step, as in Deuflhard's NLEQ codes and COLNEW). A chord step is
+/// only taken in full; when it is not accepted, the iteration starts again from a fresh
+/// Jacobian at the same iterate.
+NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& options, Counters& counters) {
+  const int n = model.n();
+  LinearSolver solver(options.linear_solver);
+  CollocationJacobian jac;
+  Iterate trial;
+  VectorXd chord;  // the next step with the current factorisation, when reusing it
+  bool reuse = false;
+  // One acceptance test and one reuse test for Newton and chord steps alike.
+  auto acceptable = [&](double simplified, double norm, double alpha) {
+    return simplified <= (1 - alpha / 4) * norm || newton_converged(residual_size(trial, n, options.tol), options);
+  };
+  auto worth_reusing = [&](double simplified, double norm) {
+    return options.reuse_jacobian && simplified <= kReuseContraction * norm;
+  };
+  for (int iteration = 0;; ++iteration) {
+    const ResidualSize size = residual_size(it, n, options.tol);
+    if (newton_converged(size, options)) return {};
+    if (iteration == options.max_newton_iterations) {
+      return {Status::NotConverged, "Newton did not converge in " + std::to_string(iteration) +
+                                           " iterations on " + std::to_string(it.nodes()) + " nodes: " +
+                                           describe(size, options)};
+    }
+    if (options.monitor != nullptr) {
+      options.monitor->report(counters.newton, std::max(size.collocation, size.boundary));
+      if (options.monitor->stop_requested()) return {Status::Interrupted, "stop requested"};
+    }
+    ++counters.newton;
+    const VectorXd z = it.unknowns();
+    if (reuse) {
+      reuse = false;
+      const double norm = chord.norm();
+      if (evaluate(model, it, VectorXd(z - chord), trial)) {
+        VectorXd next = solver.solve(trial.residual);
+        const double simplified = next.norm();
+        if (acceptable(simplified, norm, 1)) {
+          reuse = worth_reusing(simplified, norm);
+          chord = std::move(next);
+          std::swap(it, trial);
+          continue;
+        }
+      }
+    }
+    jacobian(model, it, jac);
+    ++counters.jacobians;
+    if (!solver.factorize(jac)) {
+      return {Status::SingularJacobian, "the collocation Jacobian is singular on " + std::to_string(it.nodes()) +
+                                               " nodes (" + solver.error() + ")"};
+    }
+    const VectorXd step = solver.solve(it.residual);
+    if (!step.allFinite()) {
+      return {Status::SingularJacobian,
+              "the Newton step is not finite on " + std::to_string(it.nodes()) + " nodes (singular Jacobian)"};
+    }
+    const double norm = step.norm();
+    double alpha = 1;
+    bool accepted = false;
+    for (int backtrack = 0; backtrack < kMaxBacktracks && !accepted; ++backtrack, alpha /= 2) {
+      if (!evaluate(model, it, VectorXd(z - alpha * step), trial)) continue;
+      chord = solver.solve(trial.residual);
+      const double simplified = chord.norm();
+      accepted = acceptable(simplified, norm, alpha);
+      reuse = accepted && alpha == 1 && worth_reusing(simplified, norm);
+    }
+    if (!accepted) {
+      return {Status::NotConverged, "Newton's line search failed after " + std::to_string(kMaxBacktracks) +
+                                           " halvings on " + std::to_string(it.nodes()) + " nodes: " +
+                                           describe(size, options)};
+    }
+    std::swap(it, trial);
+  }
+}
+
+/// Relative RMS residual of the cubic interpolant on each interval. rho = (S' - f(t, S)) / (1 + |f|)
+/// is integrated by 5-point Lobatto quadrature (nodes 0, 1/2 -+ sqrt(3/7)/2, 1 in units of h;
+/// weights 1/20, 49/180, 16/45, 49/180, 1/20); rho = 0 at the nodes, where S' = f.
+VectorXd rms_residuals(Model& model, const Iterate& it) {
+  const int n = model.n();
+  const CubicHermite s(it.t, it.y, it.f);
+  const double offset = std::sqrt(3.0 / 7.0) / 2;
+  VectorXd rms(it.nodes() - 1);
+  VectorXd f(n), value(n), slope(n);
+  auto relative = [](const VectorXd& dS, ConstVectorRef rate) {
+    return ((dS - rate).array() / (1 + rate.array().abs())).matrix().squaredNorm();
+  };
+  for (Index i = 0; i + 1 < it.nodes(); ++i) {
+    const double h = it.h[i], mid = it.t[i] + h / 2;
+    double outer = 0;
+    for (double tt : {mid - offset * h, mid + offset * h}) {
+      s.evaluate(tt, &value, &slope);
+      model.rhs(tt, value, it.p, f);
+      outer += relative(slope, f);
+    }
+    s.evaluate(mid, nullptr, &slope);
+    rms[i] = std::sqrt(49.0 / 180.0 * outer + 16.0 / 45.0 * relative(slope, it.fmid.col(i)));
+  }
+  return rms;
+}
+
+/// New mesh: interval i is split into `pieces[i]` equal parts; values from the interpolant.
+void refine(const Iterate& it, const std::vector<int>& pieces, VectorXd& t, MatrixXd& y) {
+  const CubicHermite s(it.t, it.y, it.f);
+  std::vector<double> nodes{it.t[0]};
+  for (Index i = 0; i + 1 < it.nodes(); ++i) {
+    const int parts = pieces[static_cast<std::size_t>(i)];
+    for (int j = 1; j < parts; ++j) nodes.push_back(it.t[i] + it.h[i] * j / parts);
+    nodes.push_back(it.t[i + 1]);
+  }
+  t = Eigen::Map<const VectorXd>(nodes.data(), static_cast<Index>(nodes.size()));
+  y = s.values(t);
+}
+
+void fill(BvpResult& result, Model& model, const Iterate& it, const Counters& counters, Status status,
+          const std::string& message) {
+  result.status = status;
+  result.t = it.t;
+  result.y = it.y;
+  result.yp = it.f;
+  result.p = it.p;
+  result.newton_iterations = counters.newton;
+  result.jacobian_evaluations = counters.jacobians;
+  if (it.f.allFinite() && it.fmid.allFinite()) {
+    result.rms_residual = rms_residuals(model, it);
+    result.max_rms_residual = result.rms_residual.maxCoeff();
+  }
+  result.max_bc_residual = it.residual.tail(model.n() + model.k()).cwiseAbs().maxCoeff();
+  result.rhs_evaluations = model.evaluations();
+  std::ostringstream out;
+  out << to_string(status) << ": " << message << " (" << it.nodes() << " nodes, " << result.refinements
+      << " refinements, " << counters.newton << " Newton iterations, max relative residual "
+      << format_value(result.max_rms_residual) << ", max |bc| " << format_value(result.max_bc_residual) << ")";
+  result.message = out.str();
+}
+
+void validate_input(const BvpSystem& system, const VectorXd& t, const MatrixXd& y, const VectorXd& p,
+                    const CollocationOptions& options) {
+  options.validate();
+  if (system.n < 1) throw_invalid(kWhere, "system.n", std::to_string(system.n), "must be at least 1");
+  if (system.k < 0) throw_invalid(kWhere, "system.k", std::to_string(system.k), "must be non-negative");
+  if (!system.rhs) throw_invalid(kWhere, "system.rhs", "(empty)", "must be set");
+  if (!system.bc) throw_invalid(kWhere, "system.bc", "(empty)", "must be set");
+  if (t.size() < 2) throw_invalid(kWhere, "t", format_value(t.transpose()), "must have at least 2 nodes");
+  require_finite(t, kWhere, "t");
+  for (Index i = 0; i + 1 < t.size(); ++i) {
+    if (!(t[i + 1] > t[i])) {
+      throw_invalid(kWhere, "t", format_value(t.transpose()),
+                    "is not strictly increasing: t[" + std::to_string(i + 1) + "] = " + format_value(t[i + 1]) +
+                        " <= t[" + std::to_string(i) + "] = " + format_value(t[i]));
+    }
+  }
+  if (t.size() > options.max_nodes) {
+    throw_invalid(kWhere, "t", "(" + std::to_string(t.size()) + " nodes)",
+                  "has more nodes than options.max_nodes = " + std::to_string(options.max_nodes));
+  }
+  require_shape(y, system.n, t.size(), kWhere, "y");
+  require_finite(y, kWhere, "y");
+  require_shape(p, system.k, 1, kWhere, "p");
+  require_finite(p, kWhere, "p");
+}
+
+BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p, const CollocationOptions& options,
+              bool adapt) {
+  validate_input(system, t, y, p, options);
+  Model model(system, options.fd_step);
+  Counters counters;
+  BvpResult result;
+  Iterate it;
+  for (int round = 0;; ++round) {
+    result.refinements = round;
+    const VectorXd params = round == 0 ? p : it.p;
+    if (!evaluate(model, t, y, params, it)) {
+      fill(result, model, it, counters, Status::NotConverged,
+           "f or bc is not finite at the " + std::string(round == 0 ? "initial guess" : "refined mesh's start"));
+      return result;
+    }
+    const NewtonOutcome outcome = newton(model, it, options, counters);
+    if (outcome.status == Status::SingularJacobian || outcome.status == Status::Interrupted ||
+        (outcome.status != Status::Converged && !adapt)) {
+      fill(result, model, it, counters, outcome.status, outcome.message);
+      return result;
+    }
+    const Index m = it.nodes();
+    std::vector<int> pieces(static_cast<std::size_t>(m - 1), 2);  // after a Newton failure: halve all
+    std::string why = outcome.message;
+    if (outcome.status == Status::Converged) {
+      if (!adapt) {
+        fill(result, model, it, counters, Status::Converged, "collocation equations solved on the given mesh");
+        return result;
+      }
+      const VectorXd rms = rms_residuals(model, it);
+      if (rms.maxCoeff() <= options.tol) {
+        fill(result, model, it, counters, Status::Converged, "residual below tol = " + format_value(options.tol));
+        return result;
+      }
+      for (Index i = 0; i + 1 < m; ++i) {
+        const double r = rms[i];
+        pieces[static_cast<std::size_t>(i)] =
+            r <= options.tol ? 1 : std::clamp(static_cast<int>(std::ceil(std::cbrt(r / options.tol))), 2, kMaxPieces);
+      }
+      why = "residual " + format_value(rms.maxCoeff()) + " above tol = " + format_value(options.tol);
+    }
+    Index needed = 1;
+    for (int parts : pieces) needed += parts;
+    if (needed > options.max_nodes) {
+      const Status status =
+          outcome.status == Status::Converged ? Status::MaxNodesExceeded : Status::NotConverged;
+      fill(result, model, it, counters, status,
+           why + "; refining needs " + std::to_string(needed) + " nodes > max_nodes = " +
+               std::to_string(options.max_nodes));
+      return result;
+    }
+    if (round == options.max_refinements) {
+      fill(result, model, it, counters, Status::NotConverged,
+           why + " after max_refinements = " + std::to_string(options.max_refinements));
+      return result;
+    }
+    refine(it, pieces, t, y);
+  }
+}
+
+}  // namespace
+
+void CollocationOptions::validate() const {
+  constexpr std::string_view where = "CollocationOptions";
+  require_finite(tol, where, "tol");
+  if (!(tol > 0)) throw_invalid(where, "tol", format_value(tol), "must be positive");
+  if (tol < 100 * kEpsilon) {
+    throw_invalid(where, "tol", format_value(tol), "is below 100 machine epsilons (" + format_value(100 * kEpsilon) + ")");
+  }
+  require_finite(bc_tol, where, "bc_tol");
+  if (bc_tol < 0) throw_invalid(where, "bc_tol", format_value(bc_tol), "must be non-negative (0: use tol)");
+  if (max_nodes < 2) throw_invalid(where, "max_nodes", std::to_string(max_nodes), "must be at least 2");
+  if (max_newton_iterations < 1) {
+    throw_invalid(where, "max_newton_iterations", std::to_string(max_newton_iterations), "must be at least 1");
+  }
+  if (max_refinements < 0) {
+    throw_invalid(where, "max_refinements", std::to_string(max_refinements), "must be non-negative");
+  }
+  require_finite(fd_step, where, "fd_step");
+  if (!(fd_step > 0)) throw_invalid(where, "fd_step", format_value(fd_step), "must be positive");
+}
+
+BvpResult solve_collocation(const BvpSystem& system, const Eigen::VectorXd& t, const Eigen::MatrixXd& y,
+                            const Eigen::VectorXd& p, const CollocationOptions& options) {
+  return run(system, t, y, p, options, true);
+}
+
+BvpResult solve_collocation(const BvpSystem& system, const BvpResult& previous, const CollocationOptions& options) {
+  return run(system, previous.t, previous.y, previous.p, options, true);
+}
+
+BvpResult solve_collocation_on_mesh(const BvpSystem& system, const Eigen::VectorXd& t, const Eigen::MatrixXd& y,
+                                    const Eigen::VectorXd& p, const CollocationOptions& options) {
+  return run(system, t, y, p, options, false);
+}
+
+}  // namespace cartan::numerics

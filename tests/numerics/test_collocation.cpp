@@ -1,0 +1,330 @@
+// The collocation BVP solver (numerics/collocation.hpp) against closed forms, its measured order,
+// standard test problems of SciPy's solve_bvp suite (written from their published equations),
+// every failure status, and bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "cartan/numerics/collocation.hpp"
+
+namespace cartan::numerics {
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+/// y'' = 3/2 y^2, y(0) = 4, y(1) = 1: y = 4 / (1 + t)^2 (Ascher, Mattheij & Russell, one of
+/// two solutions; the other has y'(0) ~ -36).
+BvpSystem quadratic_problem(bool analytic_jacobian) {
+  BvpSystem s;
+  s.n = 2;
+  s.rhs = [](double, ConstVectorRef y, ConstVectorRef, VectorRef dy) { dy << y[1], 1.5 * y[0] * y[0]; };
+  s.bc = [](ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef, VectorRef r) { r << ya[0] - 4, yb[0] - 1; };
+  if (analytic_jacobian) {
+    s.rhs_jacobian = [](double, ConstVectorRef y, ConstVectorRef, MatrixRef dfdy, MatrixRef) {
+      dfdy << 0, 1, 3 * y[0], 0;
+    };
+    s.bc_jacobian = [](ConstVectorRef, ConstVectorRef, ConstVectorRef, MatrixRef dya, MatrixRef dyb, MatrixRef) {
+      dya << 1, 0, 0, 0;
+      dyb << 0, 0, 1, 0;
+    };
+  }
+  return s;
+}
+
+VectorXd quadratic_exact(double t) { return VectorXd{{4 / ((1 + t) * (1 + t)), -8 / std::pow(1 + t, 3)}}; }
+
+VectorXd uniform(double a, double b, int nodes) { return VectorXd::LinSpaced(nodes, a, b); }
+
+/// Values of `exact` at the mesh, perturbed by a smooth bump that vanishes at neither end.
+template <class Exact>
+MatrixXd perturbed_guess(const VectorXd& t, const Exact& exact, double size) {
+  MatrixXd y(exact(t[0]).size(), t.size());
+  for (Eigen::Index i = 0; i < t.size(); ++i) y.col(i) = exact(t[i]).array() + size * std::cos(t[i]);
+  return y;
+}
+
+template <class Exact>
+double max_error_at(const BvpResult& r, const VectorXd& times, const Exact& exact) {
+  double worst = 0;
+  for (double t : times) worst = std::max(worst, (r(t) - exact(t)).cwiseAbs().maxCoeff());
+  return worst;
+}
+
+// Fourth order, measured: on fixed uniform meshes with h halving, the nodal error and the
+// dense-output error must fall by 2^4. The three-stage Lobatto IIIA method has nodal order
+// 2s - 2 = 4 and its C^1 cubic interpolant is O(h^4) uniformly; 0.3 allows the pre-asymptotic
+// h^5 term at h = 1/8. Newton runs to tol = 1e-13 so its error stays far below the 1e-10 errors.
+TEST(Collocation, MeasuredOrderIsFourOnFixedMeshes) {
+  const BvpSystem s = quadratic_problem(false);
+  const VectorXd dense = uniform(0, 1, 201);
+  std::vector<double> nodal, interpolated;
+  for (int intervals : {16, 32, 64, 128}) {
+    const VectorXd t = uniform(0, 1, intervals + 1);
+    const BvpResult r = solve_collocation_on_mesh(s, t, perturbed_guess(t, quadratic_exact, 0.3), VectorXd(0),
+                                                  {.tol = 1e-13});
+    ASSERT_TRUE(r.success()) << r.message;
+    nodal.push_back(max_error_at(r, t, quadratic_exact));
+    interpolated.push_back(max_error_at(r, dense, quadratic_exact));
+  }
+  for (std::size_t j = 0; j + 1 < nodal.size(); ++j) {
+    EXPECT_NEAR(std::log2(nodal[j] / nodal[j + 1]), 4.0, 0.3) << nodal[j] << " " << nodal[j + 1];
+    EXPECT_NEAR(std::log2(interpolated[j] / interpolated[j + 1]), 4.0, 0.3)
+        << interpolated[j] << " " << interpolated[j + 1];
+  }
+}
+
+// The residual control bounds what it claims: an independent dense sampling of the relative
+// defect (S' - f(t, S)) / (1 + |f|) (21 points per interval, trapezoidal RMS) agrees with the
+// reported per-interval RMS to 10% (both approximate the same integral of a smooth O(h^3)
+// function), and every interval is below tol. The analytic and finite-difference Jacobians
+// reach the same solution (same equations; only Newton's path differs, so to ~Newton's error).
+TEST(Collocation, ResidualControlAndJacobians) {
+  const VectorXd t = uniform(0, 1, 5);
+  const MatrixXd guess = perturbed_guess(t, quadratic_exact, 0.3);
+  const CollocationOptions options{.tol = 1e-6};
+  const BvpResult fd = solve_collocation(quadratic_problem(false), t, guess, VectorXd(0), options);
+  const BvpResult an = solve_collocation(quadratic_problem(true), t, guess, VectorXd(0), options);
+  ASSERT_TRUE(fd.success()) << fd.message;
+  ASSERT_TRUE(an.success()) << an.message;
+  EXPECT_LE(fd.max_rms_residual, options.tol);
+  EXPECT_EQ(fd.t.size(), an.t.size());
+  EXPECT_LE((fd.y - an.y).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT(an.rhs_evaluations, fd.rhs_evaluations);
+
+  const BvpSystem s = quadratic_problem(false);
+  const CubicHermite S = fd.interpolant();
+  VectorXd f(2);
+  for (Eigen::Index i = 0; i + 1 < fd.t.size(); ++i) {
+    double sum = 0;
+    constexpr int kPoints = 20;
+    for (int j = 0; j <= kPoints; ++j) {
+      const double tt = fd.t[i] + (fd.t[i + 1] - fd.t[i]) * j / kPoints;
+      s.rhs(tt, S.value(tt), VectorXd(0), f);
+      const double rho2 = ((S.derivative(tt) - f).array() / (1 + f.array().abs())).matrix().squaredNorm();
+      sum += (j == 0 || j == kPoints ? 0.5 : 1.0) * rho2;
+    }
+    const double sampled = std::sqrt(sum / kPoints);
+    EXPECT_NEAR(sampled, fd.rms_residual[i], 0.1 * fd.rms_residual[i]) << "interval " << i;
+  }
+  // The global error follows the residual: this problem is well conditioned (O(1) Green's
+  // function), so an error within 10 tol is what the residual control promises.
+  EXPECT_LE(max_error_at(fd, uniform(0, 1, 101), quadratic_exact), 10 * options.tol);
+}
+
+// SciPy's Sturm–Liouville test: y'' + k^2 y = 0, y(0) = y(1) = 0, y'(0) = k, k unknown.
+// From k = 2.5 and a one-hump guess Newton finds the first eigenvalue k = pi, y = sin(pi t).
+TEST(Collocation, EigenvalueProblemWithUnknownParameter) {
+  BvpSystem s;
+  s.n = 2;
+  s.k = 1;
+  s.rhs = [](double, ConstVectorRef y, ConstVectorRef p, VectorRef dy) { dy << y[1], -p[0] * p[0] * y[0]; };
+  s.bc = [](ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p, VectorRef r) { r << ya[0], yb[0], ya[1] - p[0]; };
+  const VectorXd t = uniform(0, 1, 6);
+  MatrixXd guess(2, t.size());
+  for (Eigen::Index i = 0; i < t.size(); ++i) guess.col(i) << 4 * t[i] * (1 - t[i]), 4 - 8 * t[i];
+  const double tol = 1e-7;
+  const BvpResult r = solve_collocation(s, t, guess, VectorXd{{2.5}}, {.tol = tol});
+  ASSERT_TRUE(r.success()) << r.message;
+  // k and y are determined by a well-conditioned system: errors within 10 tol (as above).
+  EXPECT_NEAR(r.p[0], M_PI, 10 * tol);
+  const auto exact = [](double x) { return VectorXd{{std::sin(M_PI * x), M_PI * std::cos(M_PI * x)}}; };
+  EXPECT_LE(max_error_at(r, uniform(0, 1, 51), exact), 10 * tol * M_PI);
+}
+
+/// eps y'' + t y' = -eps pi^2 cos(pi t) - pi t sin(pi t) on [-1, 1], y(-1) = -2, y(1) = 0 (SciPy's
+/// shock test, after Ascher–Mattheij–Russell): y = cos(pi t) + erf(t / sqrt(2 eps)) / erf(1 / sqrt(2 eps)).
+struct ShockLayer {
+  double eps;
+  BvpSystem system() const {
+    BvpSystem s;
+    s.n = 2;
+    s.rhs = [e = eps](double t, ConstVectorRef y, ConstVectorRef, VectorRef dy) {
+      dy << y[1], -(t * y[1] + e * M_PI * M_PI * std::cos(M_PI * t) + M_PI * t * std::sin(M_PI * t)) / e;
+    };
+    s.bc = [](ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef, VectorRef r) { r << ya[0] + 2, yb[0]; };
+    return s;
+  }
+  VectorXd exact(double t) const {
+    const double w = std::sqrt(2 * eps), scale = std::erf(1 / w);
+    return VectorXd{{std::cos(M_PI * t) + std::erf(t / w) / scale,
+                     -M_PI * std::sin(M_PI * t) + 2 / std::sqrt(M_PI) / w * std::exp(-t * t / (2 * eps)) / scale}};
+  }
+};
+
+// A mildly stiff layer of width sqrt(eps) = 0.1 at t = 0 from a zero guess on 5 nodes: the
+// refinement must concentrate nodes in the layer, and the error must follow the residual.
+TEST(Collocation, BoundaryLayerFromZeroGuessConcentratesNodes) {
+  const ShockLayer shock{1e-2};
+  const double tol = 1e-6;
+  const BvpResult r = solve_collocation(shock.system(), uniform(-1, 1, 5), MatrixXd::Zero(2, 5), VectorXd(0), {.tol = tol});
+  ASSERT_TRUE(r.success()) << r.message;
+  const auto in_layer = (r.t.array().abs() < 0.3).count();
+  EXPECT_GT(in_layer, r.t.size() - in_layer) << "nodes in |t| < 0.3: " << in_layer << " of " << r.t.size();
+  // y' reaches 1/sqrt(eps) ~ 8 in the layer: the residual is relative to 1 + |f| with
+  // |f| ~ |y''| ~ 100 there, so errors of up to ~100 tol are what the control allows.
+  const auto exact = [&](double x) { return shock.exact(x); };
+  EXPECT_LE(max_error_at(r, uniform(-1, 1, 401), exact), 100 * tol);
+}
+
+// Both factorisations of the Newton matrix (structured block LU, Eigen's SparseLU) solve the
+// same linear systems, so the whole adaptive run takes the same path: same mesh, same Newton
+// count, solutions equal to rounding amplified by a few Newton steps (1e-10).
+TEST(Collocation, BlockAndSparseLUTakeTheSamePath) {
+  const ShockLayer shock{1e-2};
+  BvpResult r[2];
+  int j = 0;
+  for (LinearSolverKind kind : {LinearSolverKind::BlockLU, LinearSolverKind::SparseLU}) {
+    r[j] = solve_collocation(shock.system(), uniform(-1, 1, 5), MatrixXd::Zero(2, 5), VectorXd(0),
+                             {.tol = 1e-6, .linear_solver = kind});
+    ASSERT_TRUE(r[j].success()) << r[j].message;
+    ++j;
+  }
+  ASSERT_EQ(r[0].t.size(), r[1].t.size());
+  EXPECT_EQ(r[0].newton_iterations, r[1].newton_iterations);
+  EXPECT_LE((r[0].y - r[1].y).cwiseAbs().maxCoeff(), 1e-10);
+}
+
+// Reusing the Newton matrix (chord steps while Newton contracts by 4 or more) changes the
+// iterates but not the convergence test, so both runs meet the same residual bound: same
+// accuracy against the exact solution (the error bound 100 tol of the test above), fewer
+// Jacobians with reuse, and at least one chord step taken (more Newton iterations than
+// Jacobians) — otherwise the option would be untested.
+TEST(Collocation, ReusingTheNewtonMatrixKeepsTheAccuracyWithFewerJacobians) {
+  const ShockLayer shock{1e-2};
+  const auto exact = [&](double x) { return shock.exact(x); };
+  BvpResult r[2];
+  for (int reuse : {0, 1}) {
+    r[reuse] = solve_collocation(shock.system(), uniform(-1, 1, 5), MatrixXd::Zero(2, 5), VectorXd(0),
+                                 {.tol = 1e-6, .reuse_jacobian = reuse == 1});
+    ASSERT_TRUE(r[reuse].success()) << r[reuse].message;
+    EXPECT_LE(max_error_at(r[reuse], uniform(-1, 1, 401), exact), 100 * 1e-6) << reuse;
+  }
+  EXPECT_EQ(r[0].newton_iterations, r[0].jacobian_evaluations);
+  EXPECT_LT(r[1].jacobian_evaluations, r[0].jacobian_evaluations);
+  EXPECT_GT(r[1].newton_iterations, r[1].jacobian_evaluations);
+}
+
+// Warm start: continuing from a converged result at the same tolerance needs no Newton step and
+// no new node; continuing to a tighter tolerance refines from it and reaches that tolerance.
+TEST(Collocation, ContinuationFromAPreviousSolution) {
+  const BvpSystem s = quadratic_problem(true);
+  const VectorXd t = uniform(0, 1, 5);
+  const BvpResult loose = solve_collocation(s, t, perturbed_guess(t, quadratic_exact, 0.3), VectorXd(0), {.tol = 1e-3});
+  ASSERT_TRUE(loose.success()) << loose.message;
+  const BvpResult again = solve_collocation(s, loose, {.tol = 1e-3});
+  ASSERT_TRUE(again.success()) << again.message;
+  EXPECT_EQ(again.newton_iterations, 0);
+  EXPECT_EQ(again.t.size(), loose.t.size());
+  const BvpResult tight = solve_collocation(s, loose, {.tol = 1e-9});
+  ASSERT_TRUE(tight.success()) << tight.message;
+  EXPECT_GT(tight.t.size(), loose.t.size());
+  EXPECT_LE(max_error_at(tight, uniform(0, 1, 101), quadratic_exact), 1e-8);
+}
+
+// Cubic Hermite dense output reproduces cubics exactly (so S interpolates nodes and slopes).
+TEST(Collocation, DenseOutputReproducesCubics) {
+  const auto cubic = [](double t) { return 1 - 2 * t + 0.5 * t * t * t; };
+  const auto slope = [](double t) { return -2 + 1.5 * t * t; };
+  const VectorXd t{{-1.0, 0.2, 0.5, 2.0}};
+  MatrixXd y(1, 4), yp(1, 4);
+  for (int i = 0; i < 4; ++i) y(0, i) = cubic(t[i]), yp(0, i) = slope(t[i]);
+  const CubicHermite s(t, y, yp);
+  for (double x : {-1.5, -1.0, -0.3, 0.2, 0.41, 1.7, 2.0, 2.5}) {
+    EXPECT_NEAR(s.value(x)[0], cubic(x), 1e-13) << x;
+    EXPECT_NEAR(s.derivative(x)[0], slope(x), 1e-13) << x;
+  }
+}
+
+// ---- Every failure status, provoked ----
+
+TEST(CollocationStatus, MaxNodesExceeded) {
+  const BvpResult r = solve_collocation(ShockLayer{1e-3}.system(), uniform(-1, 1, 5), MatrixXd::Zero(2, 5),
+                                        VectorXd(0), {.tol = 1e-8, .max_nodes = 40});
+  EXPECT_EQ(r.status, Status::MaxNodesExceeded) << r.message;
+  EXPECT_NE(r.message.find("max_nodes = 40"), std::string::npos) << r.message;
+  EXPECT_LE(r.t.size(), 40);
+}
+
+// y' = 0 with y(a) = y(b) does not determine the constant: the Jacobian is exactly singular.
+TEST(CollocationStatus, SingularJacobian) {
+  BvpSystem s;
+  s.n = 1;
+  s.rhs = [](double, ConstVectorRef, ConstVectorRef, VectorRef dy) { dy.setZero(); };
+  s.bc = [](ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef, VectorRef r) { r << ya[0] - yb[0]; };
+  const VectorXd t = uniform(0, 1, 4);
+  const BvpResult r = solve_collocation(s, t, t.transpose(), VectorXd(0));
+  EXPECT_EQ(r.status, Status::SingularJacobian) << r.message;
+  EXPECT_NE(r.message.find("singular"), std::string::npos) << r.message;
+}
+
+TEST(CollocationStatus, NotConvergedWhenRefinementsRunOut) {
+  const BvpResult r = solve_collocation(ShockLayer{1e-2}.system(), uniform(-1, 1, 5), MatrixXd::Zero(2, 5),
+                                        VectorXd(0), {.tol = 1e-8, .max_refinements = 1});
+  EXPECT_EQ(r.status, Status::NotConverged) << r.message;
+  EXPECT_NE(r.message.find("max_refinements = 1"), std::string::npos) << r.message;
+  EXPECT_GT(r.max_rms_residual, 1e-8);
+}
+
+// One Newton iteration cannot solve the nonlinear problem from a poor guess, and halving the
+// mesh (the response to a Newton failure) is blocked by max_nodes.
+TEST(CollocationStatus, NotConvergedWhenNewtonFails) {
+  const VectorXd t = uniform(0, 1, 5);
+  const BvpResult r = solve_collocation(quadratic_problem(true), t, perturbed_guess(t, quadratic_exact, 2.0), VectorXd(0),
+                                        {.tol = 1e-6, .max_nodes = 8, .max_newton_iterations = 1});
+  EXPECT_EQ(r.status, Status::NotConverged) << r.message;
+  EXPECT_NE(r.message.find("Newton did not converge"), std::string::npos) << r.message;
+}
+
+TEST(CollocationStatus, NotConvergedWhenRhsIsNotFinite) {
+  BvpSystem s;
+  s.n = 1;
+  s.rhs = [](double, ConstVectorRef y, ConstVectorRef, VectorRef dy) { dy << std::sqrt(y[0]); };
+  s.bc = [](ConstVectorRef ya, ConstVectorRef, ConstVectorRef, VectorRef r) { r << ya[0] - 1; };
+  const BvpResult r = solve_collocation(s, uniform(0, 1, 3), MatrixXd::Constant(1, 3, -1.0), VectorXd(0));
+  EXPECT_EQ(r.status, Status::NotConverged) << r.message;
+  EXPECT_NE(r.message.find("not finite"), std::string::npos) << r.message;
+}
+
+// ---- Bad input: std::invalid_argument naming the value ----
+
+void expect_invalid(const std::function<void()>& call, const std::string& needle) {
+  try {
+    call();
+    ADD_FAILURE() << "no exception; expected one mentioning " << needle;
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+  }
+}
+
+TEST(CollocationBadInput, ThrowsNamingTheValue) {
+  const BvpSystem s = quadratic_problem(false);
+  const VectorXd t = uniform(0, 1, 4);
+  const MatrixXd y = MatrixXd::Ones(2, 4);
+  const VectorXd none(0);
+  const double nan = std::nan("");
+  expect_invalid([&] { solve_collocation(s, VectorXd{{0.0, nan, 1.0}}, MatrixXd::Ones(2, 3), none); }, "t = ");
+  expect_invalid([&] { solve_collocation(s, VectorXd{{1.0, 0.0}}, MatrixXd::Ones(2, 2), none); },
+                 "not strictly increasing");
+  expect_invalid([&] { solve_collocation(s, VectorXd{{0.0, 0.5, 0.5, 1.0}}, y, none); }, "t[2] = 0.5");
+  expect_invalid([&] { solve_collocation(s, VectorXd{{0.0}}, MatrixXd::Ones(2, 1), none); }, "at least 2 nodes");
+  expect_invalid([&] { solve_collocation(s, t, MatrixXd::Ones(3, 4), none); }, "y = ");
+  expect_invalid([&] { solve_collocation(s, t, MatrixXd::Constant(2, 4, nan), none); }, "non-finite");
+  expect_invalid([&] { solve_collocation(s, t, y, VectorXd{{1.0}}); }, "p = ");
+  expect_invalid([&] { solve_collocation(s, t, y, none, {.tol = 0}); }, "tol = 0");
+  expect_invalid([&] { solve_collocation(s, t, y, none, {.tol = -1e-3}); }, "tol = -0.001");
+  expect_invalid([&] { solve_collocation(s, t, y, none, {.tol = nan}); }, "tol = nan");
+  expect_invalid([&] { solve_collocation(s, t, y, none, {.tol = 1e-17}); }, "100 machine epsilons");
+  expect_invalid([&] { solve_collocation(s, t, y, none, {.max_nodes = 1}); }, "max_nodes = 1");
+  expect_invalid([&] { solve_collocation(s, t, y, none, {.max_nodes = 3}); }, "max_nodes = 3");
+  BvpSystem empty = s;
+  empty.rhs = nullptr;
+  expect_invalid([&] { solve_collocation(empty, t, y, none); }, "system.rhs");
+  BvpSystem zero = s;
+  zero.n = 0;
+  expect_invalid([&] { solve_collocation(zero, t, MatrixXd(0, 4), none); }, "system.n = 0");
+}
+
+}  // namespace
+}  // namespace cartan::numerics

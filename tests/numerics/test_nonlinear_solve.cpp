@@ -1,0 +1,82 @@
+// Levenberg–Marquardt on systems with known roots, and its failure reports.
+#include <gtest/gtest.h>
+
+#include "cartan/numerics/nonlinear_solve.hpp"
+#include "test_support.hpp"
+
+namespace cartan::numerics {
+namespace {
+
+// Rosenbrock as a square system r = (10(x2 - x1^2), 1 - x1): root (1, 1).
+bool rosenbrock(const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
+  r.resize(2);
+  r << 10 * (x[1] - x[0] * x[0]), 1 - x[0];
+  if (jac) {
+    jac->resize(2, 2);
+    *jac << -20 * x[0], 10, -1, 0;
+  }
+  return true;
+}
+
+TEST(LevenbergMarquardt, SolvesRosenbrockWithAnalyticJacobian) {
+  const auto report = levenberg_marquardt(rosenbrock, Eigen::Vector2d(-1.2, 1.0), {.tolerance = 1e-13});
+  ASSERT_EQ(report.status, Status::Converged) << report.message;
+  EXPECT_NEAR(report.x[0], 1.0, 1e-13);  // |r| <= 1e-13 and J is well conditioned at the root
+  EXPECT_NEAR(report.x[1], 1.0, 1e-12);
+  EXPECT_LE(report.residual_norm, 1e-13);
+  EXPECT_EQ(report.residual_history.back(), report.residual_norm);
+}
+
+TEST(LevenbergMarquardt, ForwardDifferenceJacobianCountsEvaluations) {
+  int calls = 0;
+  auto f = [&calls](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+    ++calls;
+    return rosenbrock(x, r, nullptr);
+  };
+  const auto report =
+      levenberg_marquardt(with_forward_difference_jacobian(f, 1e-7), Eigen::Vector2d(-1.2, 1.0), {.tolerance = 1e-12});
+  ASSERT_EQ(report.status, Status::Converged) << report.message;
+  EXPECT_EQ(calls, 3 * report.evaluations);  // residual + one per unknown, per evaluation
+  EXPECT_NEAR(report.x[0], 1.0, 1e-11);
+}
+
+TEST(LevenbergMarquardt, ReportsStallAtNonZeroMinimum) {
+  // r = (x^2 + 1): no root; minimum |r| = 1 at x = 0.
+  auto f = [](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
+    r = Eigen::VectorXd::Constant(1, x[0] * x[0] + 1);
+    if (jac) *jac = Eigen::MatrixXd::Constant(1, 1, 2 * x[0]);
+    return true;
+  };
+  const auto report = levenberg_marquardt(f, Eigen::VectorXd::Constant(1, 3.0), {.max_iterations = 500});
+  EXPECT_NE(report.status, Status::Converged);
+  EXPECT_NEAR(report.residual_norm, 1.0, 1e-6);
+  EXPECT_NE(report.message.find("|r| = "), std::string::npos) << report.message;
+}
+
+TEST(LevenbergMarquardt, ReportsNonFiniteAndIterationLimit) {
+  auto nan_f = [](const Eigen::VectorXd&, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
+    r = Eigen::VectorXd::Constant(1, std::nan(""));
+    if (jac) *jac = Eigen::MatrixXd::Ones(1, 1);
+    return true;
+  };
+  EXPECT_EQ(levenberg_marquardt(nan_f, Eigen::VectorXd::Zero(1)).status, Status::NonFinite);
+  const auto limited = levenberg_marquardt(rosenbrock, Eigen::Vector2d(-1.2, 1.0), {.max_iterations = 1});
+  EXPECT_EQ(limited.status, Status::MaxIterations);
+  EXPECT_EQ(limited.iterations, 1);
+  EXPECT_NE(limited.message.find("max-iterations after 1 iterations"), std::string::npos) << limited.message;
+}
+
+// Bad options, a non-finite start and an empty function are errors naming the value.
+TEST(LevenbergMarquardt, RejectsBadInput) {
+  using testing::expect_invalid;
+  const Eigen::Vector2d start(-1.2, 1.0);
+  expect_invalid([&] { levenberg_marquardt(rosenbrock, start, {.tolerance = 0}); }, "tolerance = 0");
+  expect_invalid([&] { levenberg_marquardt(rosenbrock, start, {.tolerance = std::nan("")}); }, "tolerance");
+  expect_invalid([&] { levenberg_marquardt(rosenbrock, start, {.max_iterations = 0}); }, "max_iterations = 0");
+  expect_invalid([&] { levenberg_marquardt(rosenbrock, start, {.fd_step = -1e-7}); }, "fd_step");
+  expect_invalid([&] { levenberg_marquardt(rosenbrock, Eigen::Vector2d(1.0, INFINITY)); }, "x0");
+  expect_invalid([&] { levenberg_marquardt(ResidualFunction{}, start); }, "f is empty");
+}
+
+}  // namespace
+}  // namespace cartan::numerics
