@@ -1,14 +1,14 @@
 #pragma once
 // Invariant connections (invariant_connection.hpp), the Cartan–Schouten family
 // (cartan_schouten.hpp: CS-conn, CS-conn-right, tor-cur-lie-alg) and parallel transport as
-// ordered exponentials (ordered_exp.hpp: cor-parr, parr-tran-Cartan-lambda), bound once for
+// ordered exponentials (parallel_transport.hpp: cor-parr, parr-tran-Cartan-lambda), bound once for
 // every group as the nested class `<Group>.Connection` and static methods of the group class.
 
 #include <string>
 
 #include "bind_group.hpp"
 #include "cartan/connections/cartan_schouten.hpp"
-#include "cartan/transport/ordered_exp.hpp"
+#include "cartan/transport/parallel_transport.hpp"
 
 namespace cartan::python {
 
@@ -71,15 +71,11 @@ void bind_connection(GroupClass<G>& group, const std::string& group_name) {
   cls.def("transport_sampled", [where](const Connection& c, const py::object& u_nodes, double s, double t,
                                        const std::string& method, const py::object& u_midpoints, bool nodes) {
     const std::string w = where + ".transport_sampled";
-    const auto un = to_eigen_list<groups::TangentOf<G>>(u_nodes, w, "u_nodes");
+    transport::Samples<groups::TangentOf<G>> samples{to_eigen_list<groups::TangentOf<G>>(u_nodes, w, "u_nodes"), {}, s, t};
+    if (!u_midpoints.is_none()) samples.midpoints = to_eigen_list<groups::TangentOf<G>>(u_midpoints, w, "u_midpoints");
     const transport::TransportMethod m = parse_transport_method(method, w);
-    if (u_midpoints.is_none()) {
-      return final_or_nodes(nodes, [&] { return transport::transport_operator_sampled(c, un, s, t, m); },
-                            [&] { return transport::transport_operator_sampled_nodes(c, un, s, t, m); });
-    }
-    const auto um = to_eigen_list<groups::TangentOf<G>>(u_midpoints, w, "u_midpoints");
-    return final_or_nodes(nodes, [&] { return transport::transport_operator_sampled(c, un, um, s, t, m); },
-                          [&] { return transport::transport_operator_sampled_nodes(c, un, um, s, t, m); });
+    return final_or_nodes(nodes, [&] { return transport::transport_operator(c, samples, m); },
+                          [&] { return transport::transport_operator_nodes(c, samples, m); });
   }, py::arg("u_nodes"), py::arg("s"), py::arg("t"), py::arg("method") = "magnus2",
      py::arg("u_midpoints") = py::none(), py::arg("nodes") = false,
      "P(s -> t) from samples u(t_k) on a uniform grid (and u(t_k + h/2) for magnus4).");

@@ -105,7 +105,7 @@ def test_connection_errors():
     conn = cartan.SO3.cartan_schouten(0.5)
     with pytest.raises(ValueError, match=r"^transport_operator: steps = 0 must be at least 1$"):
         conn.transport(lambda t: np.zeros(3), 0.0, 1.0, steps=0)
-    with pytest.raises(ValueError, match=r"^SO3\.Connection\.transport: u\(0\) = array of shape \(2,\) must have shape"):
+    with pytest.raises(ValueError, match=r"^SO3\.Connection\.transport: u\([0-9.e-]+\) = array of shape \(2,\) must have shape"):
         conn.transport(lambda t: np.zeros(2), 0.0, 1.0)
     with pytest.raises(ValueError, match=r'method = "rk4" is not one of: lie-euler, magnus2, magnus4'):
         conn.transport(lambda t: np.zeros(3), 0.0, 1.0, method="rk4")

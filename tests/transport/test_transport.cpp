@@ -1,4 +1,4 @@
-// Ordered exponentials and parallel transport (include/cartan/transport/ordered_exp.hpp): cor-parr,
+// Ordered exponentials and parallel transport (include/cartan/transport/parallel_transport.hpp): cor-parr,
 // parr-tran-Cartan-lambda, rem-simple / para-trans-heis, para-trans-Heis, para-trans-dual-Heis.
 #include <cmath>
 #include <functional>
@@ -7,7 +7,8 @@
 #include <string>
 
 #include "cartan/connections/cartan_schouten.hpp"
-#include "cartan/transport/ordered_exp.hpp"
+#include "cartan/transport/disc_exp.hpp"
+#include "cartan/transport/parallel_transport.hpp"
 #include "connections/connection_identities.hpp"
 #include "groups/all_groups.hpp"
 #include "test_support.hpp"
@@ -156,8 +157,8 @@ TYPED_TEST(TransportTest, CartanSchoutenFastPathMatchesGenericPath) {
         const double tol = 1e-12 * std::max(1.0, generic.cwiseAbs().maxCoeff());
         EXPECT_NEAR_MATRIX(transport::cartan_schouten_transport<G>(lambda, side, u, s, t, n, m), generic, tol)
             << to_string(m) << " lambda " << lambda << " " << to_string(side);
-        EXPECT_NEAR_MATRIX(transport::cartan_schouten_transport_sampled<G>(lambda, side, nodes, mids, s, t, m),
-                           transport::transport_operator_sampled(conn, nodes, mids, s, t, m), tol)
+        EXPECT_NEAR_MATRIX(transport::cartan_schouten_transport<G>(lambda, side, transport::Samples{nodes, mids, s, t}, m),
+                           transport::transport_operator(conn, transport::Samples{nodes, mids, s, t}, m), tol)
             << to_string(m) << " lambda " << lambda;
         const auto fast_nodes = transport::cartan_schouten_transport_nodes<G>(lambda, side, u, s, t, n, m);
         const auto generic_nodes = transport::transport_operator_nodes(conn, u, s, t, n, m);
@@ -166,10 +167,11 @@ TYPED_TEST(TransportTest, CartanSchoutenFastPathMatchesGenericPath) {
         for (std::size_t k = 0; k < fast_nodes.size(); ++k) EXPECT_NEAR_MATRIX(fast_nodes[k], generic_nodes[k], tol);
       }
       // The Lie–Euler fast path is (disc-exp) step by step.
-      groups::AlgebraMatrixOf<G> p = groups::AlgebraMatrixOf<G>::Identity();
+      groups::ElementOf<G> y = G::identity();
       const double c = side == groups::Side::Left ? lambda : lambda - 1;
-      for (int k = 0; k < n; ++k) p = transport::cartan_schouten_transport_step<G>(c, (t - s) / n, nodes[k]) * p;
-      EXPECT_NEAR_MATRIX(transport::cartan_schouten_transport_sampled<G>(lambda, side, nodes, s, t, transport::TransportMethod::LieEuler), p,
+      for (int k = 0; k < n; ++k) y = transport::disc_exp_update<G>(c, (t - s) / n, nodes[k], y);
+      const groups::AlgebraMatrixOf<G> p = G::Ad(y);
+      EXPECT_NEAR_MATRIX(transport::cartan_schouten_transport<G>(lambda, side, transport::Samples{nodes, {}, s, t}, transport::TransportMethod::LieEuler), p,
                          1e-12 * std::max(1.0, p.cwiseAbs().maxCoeff()));
     }
   }
@@ -232,10 +234,10 @@ TYPED_TEST(TransportTest, BackwardTransportIsTheInverse) {
     EXPECT_NEAR_MATRIX(backward * forward, identity, 1e-12 * scale) << to_string(m);
     // Sampled: the backward samples are the forward ones in reverse order.
     auto nodes = sample(u, s, t, 24, false), mids = sample(u, s, t, 24, true);
-    const auto forward_sampled = transport::transport_operator_sampled(conn, nodes, mids, s, t, m);
+    const auto forward_sampled = transport::transport_operator(conn, transport::Samples{nodes, mids, s, t}, m);
     std::reverse(nodes.begin(), nodes.end());
     std::reverse(mids.begin(), mids.end());
-    EXPECT_NEAR_MATRIX(transport::transport_operator_sampled(conn, nodes, mids, t, s, m) * forward_sampled, identity,
+    EXPECT_NEAR_MATRIX(transport::transport_operator(conn, transport::Samples{nodes, mids, t, s}, m) * forward_sampled, identity,
                        1e-12 * scale)
         << to_string(m);
     // The fast path too.
@@ -394,8 +396,7 @@ TEST(TransportConvergence, OrdersOnSO3) {
       expect_orders(name + " samples", m,
                     observed_orders(
                         [&](int k) {
-                          return transport::transport_operator_sampled(conn, sample(u, s, t, k, false), sample(u, s, t, k, true),
-                                                            s, t, m);
+                          return transport::transport_operator(conn, transport::Samples{sample(u, s, t, k, false), sample(u, s, t, k, true), s, t}, m);
                         },
                         reference, n));
       if (name == "general") continue;
@@ -423,19 +424,19 @@ TEST(TransportConvergence, OrdersForADynamicMatrixGenerator) {
     expect_orders(
         "5x5 samples", m,
         observed_orders(
-            [&](int k) { return transport::ordered_exp_sampled(sample(a, s, t, k, false), sample(a, s, t, k, true), s, t, m); },
+            [&](int k) { return transport::ordered_exp(transport::Samples{sample(a, s, t, k, false), sample(a, s, t, k, true), s, t}, m); },
             reference, n));
   }
   // Without midpoints the sampled path offers LieEuler and Magnus2 with the same results.
   const auto nodes = sample(a, s, t, 16, false), mids = sample(a, s, t, 16, true);
   for (transport::TransportMethod m : {transport::TransportMethod::LieEuler, transport::TransportMethod::Magnus2}) {
-    EXPECT_NEAR_MATRIX(transport::ordered_exp_sampled(nodes, s, t, m), transport::ordered_exp_sampled(nodes, mids, s, t, m), 0.0);
+    EXPECT_NEAR_MATRIX(transport::ordered_exp(transport::Samples{nodes, {}, s, t}, m), transport::ordered_exp(transport::Samples{nodes, mids, s, t}, m), 0.0);
   }
   // The node version ends at the final value and starts at I.
-  const auto path = transport::ordered_exp_sampled_nodes(nodes, mids, s, t, transport::TransportMethod::Magnus4);
+  const auto path = transport::ordered_exp_nodes(transport::Samples{nodes, mids, s, t}, transport::TransportMethod::Magnus4);
   ASSERT_EQ(path.size(), nodes.size());
   EXPECT_NEAR_MATRIX(path.front(), Mat::Identity(5, 5), 0.0);
-  EXPECT_NEAR_MATRIX(path.back(), transport::ordered_exp_sampled(nodes, mids, s, t, transport::TransportMethod::Magnus4), 0.0);
+  EXPECT_NEAR_MATRIX(path.back(), transport::ordered_exp(transport::Samples{nodes, mids, s, t}, transport::TransportMethod::Magnus4), 0.0);
   const auto fpath = transport::ordered_exp_nodes(a, s, t, 16, transport::TransportMethod::Magnus4);
   ASSERT_EQ(fpath.size(), 17u);
   EXPECT_NEAR_MATRIX(fpath.back(), transport::ordered_exp(a, s, t, 16, transport::TransportMethod::Magnus4), 0.0);
@@ -503,41 +504,40 @@ TEST(TransportValidation, RejectsBadInput) {
   // Samples: counts, missing midpoints, non-finite entries, shapes.
   const std::vector<V3> u_nodes = {V3(0, 1, 0), V3(1, 1, 0), V3(2, 1, 0)};
   const std::vector<V3> u_mids = {V3(0.5, 1, 0), V3(1.5, 1, 0)};
-  expect_invalid([&] { transport::transport_operator_sampled(conn, std::vector<V3>{V3::Zero()}, 0, 1, transport::TransportMethod::Magnus2); },
+  expect_invalid([&] { transport::transport_operator(conn, transport::Samples{std::vector<V3>{V3::Zero()}, {}, 0, 1}, transport::TransportMethod::Magnus2); },
                  "u_nodes.size() = 1 must be at least 2");
-  expect_invalid([&] { transport::transport_operator_sampled(conn, u_nodes, 0, 1, transport::TransportMethod::Magnus4); },
+  expect_invalid([&] { transport::transport_operator(conn, transport::Samples{u_nodes, {}, 0, 1}, transport::TransportMethod::Magnus4); },
                  "method = Magnus4 needs midpoint samples");
   expect_invalid(
       [&] {
-        transport::ordered_exp_sampled(std::vector<Eigen::Matrix3d>(3, Eigen::Matrix3d::Zero()), 0, 1, transport::TransportMethod::Magnus4);
+        transport::ordered_exp(transport::Samples{std::vector<Eigen::Matrix3d>(3, Eigen::Matrix3d::Zero()), {}, 0, 1}, transport::TransportMethod::Magnus4);
       },
       "method = Magnus4 needs midpoint samples");
   expect_invalid(
-      [&] { transport::cartan_schouten_transport_sampled<groups::SO3>(0.5, groups::Side::Left, u_nodes, 0, 1, transport::TransportMethod::Magnus4); },
+      [&] { transport::cartan_schouten_transport<groups::SO3>(0.5, groups::Side::Left, transport::Samples{u_nodes, {}, 0, 1}, transport::TransportMethod::Magnus4); },
       "method = Magnus4");
   expect_invalid(
-      [&] { transport::transport_operator_sampled(conn, u_nodes, std::vector<V3>{V3::Zero()}, 0, 1, transport::TransportMethod::Magnus4); },
+      [&] { transport::transport_operator(conn, transport::Samples{u_nodes, std::vector<V3>{V3::Zero()}, 0, 1}, transport::TransportMethod::Magnus4); },
       "u_midpoints.size() = 1 must be u_nodes.size() - 1 = 2");
   std::vector<V3> bad_nodes = u_nodes;
   bad_nodes[2][1] = nan;
-  expect_invalid([&] { transport::transport_operator_sampled(conn, bad_nodes, 0, 1, transport::TransportMethod::Magnus2); },
+  expect_invalid([&] { transport::transport_operator(conn, transport::Samples{bad_nodes, {}, 0, 1}, transport::TransportMethod::Magnus2); },
                  "u_nodes[2] = [");
   expect_invalid(
-      [&] { transport::cartan_schouten_transport_sampled<groups::SO3>(0.5, groups::Side::Right, bad_nodes, 0, 1, transport::TransportMethod::LieEuler); },
+      [&] { transport::cartan_schouten_transport<groups::SO3>(0.5, groups::Side::Right, transport::Samples{bad_nodes, {}, 0, 1}, transport::TransportMethod::LieEuler); },
       "u_nodes[2]");
   std::vector<V3> bad_mids = u_mids;
   bad_mids[0][0] = inf;
-  expect_invalid([&] { transport::transport_operator_sampled(conn, u_nodes, bad_mids, 0, 1, transport::TransportMethod::Magnus4); },
+  expect_invalid([&] { transport::transport_operator(conn, transport::Samples{u_nodes, bad_mids, 0, 1}, transport::TransportMethod::Magnus4); },
                  "u_midpoints[0] = [inf");
-  expect_invalid([&] { transport::transport_operator_sampled(conn, u_nodes, u_mids, 0, nan, transport::TransportMethod::Magnus4); },
+  expect_invalid([&] { transport::transport_operator(conn, transport::Samples{u_nodes, u_mids, 0, nan}, transport::TransportMethod::Magnus4); },
                  "t1 = nan");
   std::vector<Eigen::MatrixXd> ragged = {Eigen::MatrixXd::Zero(2, 2), Eigen::MatrixXd::Zero(3, 3)};
-  expect_invalid([&] { transport::ordered_exp_sampled(ragged, 0, 1, transport::TransportMethod::LieEuler); },
+  expect_invalid([&] { transport::ordered_exp(transport::Samples{ragged, {}, 0, 1}, transport::TransportMethod::LieEuler); },
                  "nodes[1] = [0, 0, 0; 0, 0, 0; 0, 0, 0] has shape 3x3, expected 2x2");
   expect_invalid(
       [&] {
-        transport::ordered_exp_sampled(std::vector<Eigen::MatrixXd>(2, Eigen::MatrixXd::Zero(2, 3)), 0, 1,
-                            transport::TransportMethod::LieEuler);
+        transport::ordered_exp(transport::Samples{std::vector<Eigen::MatrixXd>(2, Eigen::MatrixXd::Zero(2, 3)), {}, 0, 1}, transport::TransportMethod::LieEuler);
       },
       "nodes[0] = [0, 0, 0; 0, 0, 0] is not square (2x3)");
   // Ambient helpers validate the points.

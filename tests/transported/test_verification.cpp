@@ -197,6 +197,26 @@ TEST(TransportedVerification, SixPaperCasesConverge) {
   }
 }
 
+// A failed direct attempt handed to continuation in T (the default strategy's first step) is
+// not repeated: the path is the same computation from T/2 on, so the result is bitwise the same
+// and costs exactly the direct attempt's sweeps less.
+TEST(TransportedVerification, ContinuationInTReusesAFailedDirectAttempt) {
+  const transported::ContinuationOptions options{.shooting = {.tolerance = 1e-10}};
+  const auto problem = paper_oscillator(0.5);
+  transported::ShootingOptions direct_options = options.shooting;
+  direct_options.no_progress_window = options.no_progress_window;
+  const auto direct = transported::solve_shooting(problem, direct_options);
+  ASSERT_FALSE(direct.converged()) << "the T = 12 oscillator no longer needs continuation: pick a harder case";
+  const auto full = transported::solve_continuation_in_T(problem, options);
+  const auto reused = transported::solve_continuation_in_T(problem, options, std::nullopt, std::nullopt, &direct);
+  ASSERT_TRUE(full.converged() && reused.converged()) << full.message << reused.message;
+  EXPECT_EQ(reused.v0, full.v0);
+  EXPECT_EQ(reused.branch, full.branch);
+  EXPECT_EQ(reused.sweeps, full.sweeps - direct.sweeps);
+  EXPECT_THROW(transported::solve_continuation_in_T(problem, options, std::nullopt, std::nullopt, &full),
+               std::invalid_argument);
+}
+
 // Continuation in lambda from the classical lambda = 0 solution (itself continued in T at
 // T = 12) reaches the same branch as continuation in T at the target lambda. Measured: v0
 // agrees to 1e-15 (free body) and about 1e-9 (oscillator, T = 12) for lambda = 1/2 and 1. Both

@@ -59,6 +59,13 @@ TangentOf<G> bracket(const TangentOf<G>& u, const TangentOf<G>& v) {
   return G::ad(u) * v;
 }
 
+/// log(a^{-1} b): the algebra element that left-translates a to b, b = a exp(log_between(a, b))
+/// (within the injectivity radius of exp). For consecutive nodes of a curve it is h u_k.
+template <LieGroup G>
+TangentOf<G> log_between(const ElementOf<G>& a, const ElementOf<G>& b) {
+  return G::log(G::compose(G::inverse(a), b));
+}
+
 /// Matrix of the coadjoint operator ad*_u on g*: <ad*_u mu, w> = <mu, ad_u w>, so ad*_u = ad_u^T.
 template <LieGroup G>
 AlgebraMatrixOf<G> coad(const TangentOf<G>& u) {

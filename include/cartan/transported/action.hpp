@@ -14,6 +14,7 @@
 
 #include "cartan/errors.hpp"
 #include "cartan/mechanics/lagrangian.hpp"
+#include "cartan/transport/disc_exp.hpp"
 
 namespace cartan::transported {
 
@@ -35,12 +36,12 @@ double transported_action(const L& lagrangian, double lambda, const std::vector<
   for (std::size_t k = 0; k + 1 < g.size(); ++k) {
     const double h = t[k + 1] - t[k];
     if (!(h > 0)) throw_invalid("transported_action", "t", format_value(t[k + 1]), "must increase");
-    const groups::TangentOf<G> u = G::log(G::compose(G::inverse(g[k]), g[k + 1])) / h;
+    const groups::TangentOf<G> u = groups::log_between<G>(g[k], g[k + 1]) / h;
     const groups::ElementOf<G> g_mid = G::compose(g[k], G::exp(groups::TangentOf<G>(h / 2 * u)));
-    const groups::ElementOf<G> transport_mid = G::compose(G::exp(groups::TangentOf<G>(-lambda * h / 2 * u)), transport);
+    const groups::ElementOf<G> transport_mid = transport::disc_exp_update<G>(lambda, h / 2, u, transport);
     const groups::TangentOf<G> v_mid = G::Ad(G::inverse(transport_mid)) * u;
     action += h * lagrangian.value(t[k] + h / 2, g_mid, v_mid);
-    transport = G::compose(G::exp(groups::TangentOf<G>(-lambda * h * u)), transport);
+    transport = transport::disc_exp_update<G>(lambda, h, u, transport);
   }
   return action;
 }

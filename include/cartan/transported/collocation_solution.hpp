@@ -74,7 +74,7 @@ TransportedSolution<G> collocation_solution(const TransportedProblem<G, L>& prob
   if (!tr.t.empty()) {
     s.v0 = tr.v.front();
     s.xi0 = tr.xi.front();
-    s.terminal_error = G::log(G::compose(G::inverse(problem.gT), tr.g.back())).norm();
+    s.terminal_error = groups::log_between<G>(problem.gT, tr.g.back()).norm();
     s.xi_terminal = tr.xi.back().norm();
   }
   s.collocation = CollocationReport{static_cast<int>(result.t.size()), result.max_rms_residual};

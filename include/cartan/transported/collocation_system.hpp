@@ -21,6 +21,7 @@
 #include "cartan/groups/so3.hpp"
 #include "cartan/transported/problem.hpp"
 #include "cartan/transported/scheme.hpp"
+#include "cartan/transport/disc_exp.hpp"
 
 namespace cartan::transported {
 
@@ -71,7 +72,7 @@ class TransportedCollocation {
   /// The geodesic guess on a uniform mesh of problem.N intervals: u = w / T constant with
   /// w = log(g0^{-1} gT), so g = g0 exp(t u), h = exp(-lambda t u), v = Ad(h)^{-1} u = u, xi = 0.
   static void geodesic_guess(const Problem& problem, Eigen::VectorXd& t, Eigen::MatrixXd& y) {
-    const groups::TangentOf<G> u = G::log(G::compose(G::inverse(problem.g0), problem.gT)) / problem.T;
+    const groups::TangentOf<G> u = groups::log_between<G>(problem.g0, problem.gT) / problem.T;
     t = Eigen::VectorXd::LinSpaced(problem.N + 1, 0, problem.T);
     y.setZero(kStates, t.size());
     for (Eigen::Index i = 0; i < t.size(); ++i) {
@@ -102,8 +103,8 @@ class TransportedCollocation {
       y.col(i).template segment<kDim>(kXi) = trajectory.xi[k];
       if (i + 1 < m) {
         const double dt = t[i + 1] - t[i];
-        const groups::TangentOf<G> u = G::log(G::compose(G::inverse(trajectory.g[k]), trajectory.g[k + 1])) / dt;
-        h = G::compose(G::exp(groups::TangentOf<G>(-problem.lambda * dt * u)), h);
+        const groups::TangentOf<G> u = groups::log_between<G>(trajectory.g[k], trajectory.g[k + 1]) / dt;
+        h = transport::disc_exp_update<G>(problem.lambda, dt, u, h);
       }
     }
   }

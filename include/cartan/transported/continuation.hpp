@@ -181,14 +181,20 @@ TransportedSolution<G> best_iterate(const TransportedProblem<G, L>& problem, con
 
 }  // namespace detail
 
-/// Continuation in the horizon T (see the header comment).
+/// Continuation in the horizon T (see the header comment). `failed_direct`, when given, is a
+/// failed attempt at the full horizon from the same guess with the path's shooting options
+/// (the default strategy's first step): it is not repeated, the halving starts at T/2.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> solve_continuation_in_T(const TransportedProblem<G, L>& problem,
                                                const ContinuationOptions& options = {},
                                                std::optional<groups::TangentOf<G>> v0_guess = std::nullopt,
-                                               std::optional<groups::CovectorOf<G>> xi0_guess = std::nullopt) {
+                                               std::optional<groups::CovectorOf<G>> xi0_guess = std::nullopt,
+                                               const TransportedSolution<G>* failed_direct = nullptr) {
   problem.validate();
   options.validate();
+  if (failed_direct != nullptr && failed_direct->converged()) {
+    throw std::invalid_argument("solve_continuation_in_T: failed_direct is a converged result; return it instead");
+  }
   const auto start_time = std::chrono::steady_clock::now();
   const double h = problem.step();
   auto make = [&](double horizon) {
@@ -203,6 +209,10 @@ TransportedSolution<G> solve_continuation_in_T(const TransportedProblem<G, L>& p
   TransportedSolution<G> first, direct;
   int sweeps = 0, iterations = 0;
   for (int halving = 0; halving <= options.max_halvings; ++halving, start /= 2) {
+    if (halving == 0 && failed_direct != nullptr) {
+      direct = first = *failed_direct;
+      continue;
+    }
     const auto p = make(start);
     // The given guess is a velocity of the requested problem: at horizon T' the same path
     // needs T / T' times its speed.

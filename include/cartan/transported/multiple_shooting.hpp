@@ -163,7 +163,7 @@ class MultipleShootingSystem {
         continue;
       }
       const Node& next = start[static_cast<std::size_t>(j) + 1];
-      const groups::TangentOf<G> dg = G::log(G::compose(G::inverse(next.g), out.last.g));
+      const groups::TangentOf<G> dg = groups::log_between<G>(next.g, out.last.g);
       const groups::TangentOf<G> dh = G::log(G::compose(out.last.transport, G::inverse(next.transport)));
       r.segment<4 * n>(row) << dg, dh, out.last.mu - next.mu, out.last.xi - next.xi;
       if (!jac) continue;

@@ -30,6 +30,7 @@
 #include "cartan/groups/exp_jacobian.hpp"
 #include "cartan/mechanics/lagrangian_hessian.hpp"
 #include "cartan/transported/problem.hpp"
+#include "cartan/transport/disc_exp.hpp"
 
 namespace cartan::transported {
 
@@ -199,7 +200,7 @@ class TransportedScheme {
   /// Shooting residual at the final node: r_g = vee(log(gT^{-1} g_N))
   /// (docs/paper-notes.md#convention-shooting-residual), and its derivative J_r(r_g)^{-1} gamma_N.
   Tangent terminal_residual(const Node& last) const {
-    return G::log(G::compose(G::inverse(problem_.gT), last.g));
+    return groups::log_between<G>(problem_.gT, last.g);
   }
   Directions terminal_residual_tangent(const Tangent& residual, const NodeTangent& d) const {
     return groups::right_jacobian_inverse<G>(residual) * d.gamma;
@@ -252,7 +253,7 @@ class TransportedScheme {
   void advance(const Node& node, const Rates& r, Node& out, const Covector* xi_next) const {
     out.t = node.t + dt_;
     out.g = G::compose(node.g, G::exp(Tangent(dt_ * r.u)));
-    out.transport = G::compose(G::exp(Tangent(-problem_.lambda * dt_ * r.u)), node.transport);
+    out.transport = transport::disc_exp_update<G>(problem_.lambda, dt_, r.u, node.transport);
     out.mu = node.mu + dt_ * r.dmu;
     out.xi = xi_next ? *xi_next : Covector(node.xi + dt_ * r.dxi);
     out.v = problem_.lagrangian.velocity(out.t, out.g, out.mu);

@@ -43,7 +43,7 @@ struct ShootingOptions {
 /// The paper's initial guess: the body velocity of the geodesic from g0 to gT, log(g0^{-1} gT)/T.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 groups::TangentOf<G> geodesic_guess(const TransportedProblem<G, L>& problem) {
-  return G::log(G::compose(G::inverse(problem.g0), problem.gT)) / problem.T;
+  return groups::log_between<G>(problem.g0, problem.gT) / problem.T;
 }
 
 /// The size of xi on this problem (see the header comment): T |v_ref| |mu_ref|, with v_ref the

@@ -138,14 +138,14 @@ TransportedSolution<G> collocation(const TransportedProblem<G, L>& problem, cons
 
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> shooting(const TransportedProblem<G, L>& problem, const SolveOptions& options,
-                                const SolveGuess<G>& guess) {
+                                const SolveGuess<G>& guess, const TransportedSolution<G>* failed_direct = nullptr) {
   const SolveMonitor stage = options.monitor.stage("shooting");
   ContinuationOptions c{.shooting = {.order = options.order, .tolerance = options.tol,
                                      .max_iterations = options.max_iterations, .monitor = &stage}};
   const std::optional<groups::TangentOf<G>> v0 = guess.start_v0();
   const std::optional<groups::CovectorOf<G>> xi0 = guess.start_xi0();
   switch (options.continuation) {
-    case Continuation::T: return solve_continuation_in_T(problem, c, v0, xi0);
+    case Continuation::T: return solve_continuation_in_T(problem, c, v0, xi0, failed_direct);
     case Continuation::Lambda:
       if (!guess.empty() && options.method == Method::Shooting) {
         throw std::invalid_argument(
@@ -206,20 +206,23 @@ TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const S
   SolveOptions direct = options;
   direct.method = Method::Shooting;
   // 1. Shooting from the guess, abandoned when it makes no progress.
+  TransportedSolution<G> direct_attempt;
   {
     const SolveMonitor stage = options.monitor.stage("shooting");
     const ShootingOptions s{.order = options.order, .tolerance = options.tol, .max_iterations = options.max_iterations,
-                            .no_progress_window = 6, .monitor = &stage};
+                            .no_progress_window = ContinuationOptions{}.no_progress_window, .monitor = &stage};
     TransportedSolution<G> r = solve_shooting(problem, s, guess.start_v0().value_or(geodesic_guess(problem)),
                                               guess.start_xi0().value_or(groups::CovectorOf<G>::Zero()));
     r.branch = guessed ? "direct from the given guess" : "direct from the geodesic guess";
+    direct_attempt = r;
     if (attempt("shooting", std::move(r))) return finish(true);
   }
   // 2. Continuation in T where a shorter horizon is an easier problem.
   constexpr int kMinStepsToHalve = 16;
   if (!kPurelyKinetic<L> && problem.N >= kMinStepsToHalve && !stopped()) {
     direct.continuation = Continuation::T;
-    if (attempt("continuation in T", shooting(problem, direct, guess))) return finish(true);
+    // Its first stage would repeat step 1 exactly (same start, same shooting options): reuse it.
+    if (attempt("continuation in T", shooting(problem, direct, guess, &direct_attempt))) return finish(true);
   }
   // 3. Continuation in lambda from the flat connections.
   for (const double start : {0.0, 1.0}) {

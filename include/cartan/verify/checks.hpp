@@ -25,6 +25,7 @@
 #include "cartan/mechanics/lagrangian_hessian.hpp"
 #include "cartan/transported/scheme.hpp"
 #include "cartan/transported/action.hpp"
+#include "cartan/transport/disc_exp.hpp"
 
 namespace cartan::verify {
 
@@ -79,7 +80,7 @@ class TrajectoryChecks {
     transport_.reserve(m);
     transport_.push_back(G::identity());
     for (std::size_t k = 0; k + 1 < m; ++k) {
-      transport_.push_back(G::compose(G::exp(Tangent(-lambda_ * step_log(k))), transport_.back()));
+      transport_.push_back(transport::disc_exp_update<G>(lambda_, 1.0, step_log(k), transport_.back()));
     }
   }
 
@@ -89,8 +90,8 @@ class TrajectoryChecks {
   /// max(|log(g0^{-1} g_0)|, |log(gT^{-1} g_N)|, |xi_N|): the boundary conditions, absolute
   /// (as the solvers' tolerances are).
   double boundary_error(const groups::ElementOf<G>& g0, const groups::ElementOf<G>& gT) const {
-    return std::max({G::log(G::compose(G::inverse(g0), x_.g.front())).norm(),
-                     G::log(G::compose(G::inverse(gT), x_.g.back())).norm(), x_.xi.back().norm()});
+    return std::max({groups::log_between<G>(g0, x_.g.front()).norm(),
+                     groups::log_between<G>(gT, x_.g.back()).norm(), x_.xi.back().norm()});
   }
 
   /// max_k |mu_k - dl/dv(g_k, v_k)| / max_k (|mu_k| + |dl/dv|): the Legendre relation, which
@@ -232,7 +233,7 @@ class TrajectoryChecks {
 
  private:
   /// log(g_k^{-1} g_{k+1}).
-  Tangent step_log(std::size_t k) const { return G::log(G::compose(G::inverse(x_.g[k]), x_.g[k + 1])); }
+  Tangent step_log(std::size_t k) const { return groups::log_between<G>(x_.g[k], x_.g[k + 1]); }
   double energy(std::size_t k) const { return mechanics::lagrangian_energy<G>(l_, x_.t[k], x_.g[k], x_.v[k]); }
 
   L l_;
