@@ -7,7 +7,13 @@ function(cartan_set_warnings target)
                            -fno-sanitize-recover=all)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
-  if(CARTAN_FUZZ)  # coverage feedback for libFuzzer; the fuzz targets link the fuzzer itself
+endfunction()
+
+# libFuzzer's coverage feedback (CARTAN_FUZZ) for the code the fuzz targets run: the library and
+# the CLI core. The tests in the same sanitizer build are not instrumented for it (the sanitizer
+# runtime provides the coverage hooks when they link the library).
+function(cartan_fuzz_coverage target)
+  if(CARTAN_FUZZ)
     target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
   endif()
 endfunction()

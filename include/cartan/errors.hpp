@@ -5,7 +5,8 @@
 //   * static_assert / concepts for misuse of types;
 //   * std::invalid_argument (bad values) and std::domain_error (values outside a map's domain)
 //     thrown at API boundaries, with the offending value printed in the message;
-//   * result objects with a status for numerical outcomes (non-convergence), never exceptions.
+//   * result objects with a status for numerical outcomes (non-convergence), never exceptions;
+//     a defective model callback is not such an outcome: ModelError (an invalid_argument).
 
 #include <Eigen/Core>
 #include <sstream>
@@ -14,6 +15,14 @@
 #include <string_view>
 
 namespace cartan {
+
+/// A model callback (a Lagrangian's momentum, say) returned an unusable value from valid
+/// arguments: a defect of the model, not a numerical outcome. The solvers, which turn other
+/// exceptions inside a sweep into a failed iterate, let it through, so the caller sees it at once.
+class ModelError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
 
 /// Prints a vector or matrix on one line, rows separated by ';', with full precision.
 std::string format_value(const Eigen::Ref<const Eigen::MatrixXd>& x);

@@ -93,16 +93,6 @@ struct FromPython<mechanics::LagrangianHessian<G>> {
   }
 };
 
-inline bool all_finite(double x) { return std::isfinite(x); }
-template <class Derived>
-bool all_finite(const Eigen::MatrixBase<Derived>& x) {
-  return x.allFinite();
-}
-template <groups::LieGroup G>
-bool all_finite(const mechanics::LagrangianHessian<G>& h) {
-  return h.momentum_v.allFinite() && h.momentum_g.allFinite() && h.gradient_v.allFinite() && h.gradient_g.allFinite();
-}
-
 /// The Python object and its methods, looked up once (optional ones may be missing).
 class PythonModel {
  public:
@@ -119,14 +109,9 @@ class PythonModel {
   R call(std::size_t index, double t, const E& g, const X& x) const {
     const std::string who = kind_ + "." + names_[index];
     return guarded_callback(*state_, who, [&] {
-      R result = FromPython<R>::convert(methods_[index](t, to_numpy(g), to_numpy(x)), who);
-      // A non-finite value from finite arguments is the callback's fault: name it at once rather
-      // than let the solvers retry (continuation would halve T eight times first).
-      if (!all_finite(result) && std::isfinite(t) && g.allFinite() && x.allFinite()) {
-        throw std::invalid_argument(who + " returned a non-finite value at t = " + format_value(t) + ", g = " +
-                                    format_value(g) + ", argument = " + format_value(x));
-      }
-      return result;
+      // A non-finite value from finite arguments is named at once (require_finite_result).
+      return mechanics::require_finite_result(FromPython<R>::convert(methods_[index](t, to_numpy(g), to_numpy(x)), who),
+                                              who, t, g, x);
     });
   }
 

@@ -387,7 +387,9 @@ TEST(TransportConvergence, OrdersOnSO3) {
   std::mt19937 rng(kSeed + 6);
   const std::pair<std::string, connections::InvariantConnection<G>> connections[] = {
       {"cartan-schouten(0.5)", connections::cartan_schouten<G>(0.5)}, {"general", random_connection<G>(groups::Side::Left, rng)}};
-  for (const auto& [name, conn] : connections) {
+  for (const auto& entry : connections) {
+    const std::string& name = entry.first;  // not a structured binding: lambdas below capture it
+    const connections::InvariantConnection<G>& conn = entry.second;
     const auto reference = transport::transport_operator(conn, u, s, t, 4096, transport::TransportMethod::Magnus4);
     for (transport::TransportMethod m : kMethods) {
       const int n = coarse_steps(m);

@@ -1,6 +1,10 @@
 // The discrete transported-velocity scheme: its tangent-linear map, and the agreement of the
 // augmented shooting with the paper's two-level fixed point.
+#include <limits>
+#include <string>
+
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
+#include "cartan/transported/continuation.hpp"
 #include "cartan/transported/two_level.hpp"
 #include "test_support.hpp"
 #include "transported/paper_cases.hpp"
@@ -136,6 +140,39 @@ TEST(TransportedScheme, FailuresAreReportedNotHidden) {
   const auto two_level = transported::solve_two_level(problem, {.max_outer = 1});
   EXPECT_FALSE(two_level.converged());
   EXPECT_NE(two_level.message.find("outer"), std::string::npos) << two_level.message;
+}
+
+/// The rigid body with a defect in one callback: `broken` returns NaN once the body has turned
+/// away from the identity (g(0, 0) < 0.99), from finite arguments.
+struct DefectiveBody {
+  mechanics::RigidBody body;
+  std::string broken;
+  double value(double t, const Eigen::Matrix3d& g, const Eigen::Vector3d& v) const { return body.value(t, g, v); }
+  Eigen::Vector3d momentum(double t, const Eigen::Matrix3d& g, const Eigen::Vector3d& v) const {
+    return spoil("momentum", g, body.momentum(t, g, v));
+  }
+  Eigen::Vector3d group_gradient(double t, const Eigen::Matrix3d& g, const Eigen::Vector3d& v) const {
+    return spoil("group_gradient", g, body.group_gradient(t, g, v));
+  }
+  Eigen::Vector3d velocity(double t, const Eigen::Matrix3d& g, const Eigen::Vector3d& mu) const {
+    return spoil("velocity", g, body.velocity(t, g, mu));
+  }
+  Eigen::Vector3d spoil(const std::string& name, const Eigen::Matrix3d& g, Eigen::Vector3d x) const {
+    if (name == broken && g(0, 0) < 0.99) x[1] = std::numeric_limits<double>::quiet_NaN();
+    return x;
+  }
+};
+
+// A C++ model's non-finite value from finite arguments is reported at once, naming the callback
+// (not left to the solvers: continuation in T would halve T eight times first).
+TEST(TransportedScheme, NonFiniteCallbackValuesAreNamedAtOnce) {
+  const auto free_body = paper_free_body(0.5, 200, 5);
+  for (const std::string name : {"group_gradient", "velocity"}) {
+    const transported::TransportedProblem<groups::SO3, DefectiveBody> problem{
+        {free_body.lagrangian, name}, 0.5, free_body.T, free_body.N, free_body.g0, free_body.gT};
+    expect_invalid([&] { transported::solve_shooting(problem); }, "lagrangian." + name + " returned a non-finite value at t = ");
+    expect_invalid([&] { transported::solve_continuation_in_T(problem); }, "lagrangian." + name + " returned a non-finite");
+  }
 }
 
 TEST(TransportedScheme, RejectsBadProblems) {

@@ -21,6 +21,7 @@
 #include <concepts>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "cartan/errors.hpp"
 #include "cartan/groups/group.hpp"
@@ -44,6 +45,26 @@ concept ReducedHamiltonian =
       { h.velocity(t, g, mu) } -> std::convertible_to<groups::TangentOf<G>>;
       { h.group_gradient(t, g, mu) } -> std::convertible_to<groups::CovectorOf<G>>;
     };
+
+inline bool all_finite(double x) { return std::isfinite(x); }
+template <class Derived>
+bool all_finite(const Eigen::MatrixBase<Derived>& x) {
+  return x.allFinite();
+}
+
+/// `result` of the model callback `callback` (e.g. "lagrangian.momentum") at (t, g, x), or
+/// ModelError naming the callback and its arguments when it is not finite although
+/// the arguments are: the model's fault, reported at once rather than left to the solvers, which
+/// would retry (continuation in T would halve T eight times first). Non-finite arguments are
+/// the solver's business (a diverging iterate) and pass through.
+template <class R, class E, class X>
+const R& require_finite_result(const R& result, std::string_view callback, double t, const E& g, const X& x) {
+  if (!all_finite(result) && std::isfinite(t) && g.allFinite() && x.allFinite()) {
+    throw ModelError(std::string(callback) + " returned a non-finite value at t = " + format_value(t) +
+                                ", g = " + format_value(g) + ", argument = " + format_value(x));
+  }
+  return result;
+}
 
 /// The energy mu . v - l(t, g, v) of a reduced Lagrangian (conserved when l does not depend on t).
 template <groups::LieGroup G, ReducedLagrangian<G> L>

@@ -18,6 +18,12 @@ struct LagrangianHessian {
   groups::AlgebraMatrixOf<G> gradient_g;  ///< d zeta / d gamma
 };
 
+/// All four blocks finite (for require_finite_result).
+template <groups::LieGroup G>
+bool all_finite(const LagrangianHessian<G>& h) {
+  return h.momentum_v.allFinite() && h.momentum_g.allFinite() && h.gradient_v.allFinite() && h.gradient_g.allFinite();
+}
+
 /// Central-difference step: truncation ~ step^2 |l'''|, rounding ~ 1e-16 / step: both ~1e-10.
 inline constexpr double kHessianStep = 1e-5;
 
@@ -43,11 +49,12 @@ LagrangianHessian<G> lagrangian_hessian_fd(const L& l, double t, const groups::E
     return out;
 }
 
-/// The model's analytic `hessian(t, g, v)` when it has one, central differences otherwise.
+/// The model's analytic `hessian(t, g, v)` when it has one (checked: require_finite_result),
+/// central differences otherwise.
 template <groups::LieGroup G, ReducedLagrangian<G> L>
 LagrangianHessian<G> lagrangian_hessian(const L& l, double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) {
   if constexpr (requires { { l.hessian(t, g, v) } -> std::convertible_to<LagrangianHessian<G>>; }) {
-    return l.hessian(t, g, v);
+    return require_finite_result(LagrangianHessian<G>(l.hessian(t, g, v)), "lagrangian.hessian", t, g, v);
   } else {
     return lagrangian_hessian_fd<G>(l, t, g, v);
   }

@@ -79,6 +79,9 @@ struct Samples {
   double t0 = 0;
   double t1 = 1;
 };
+/// Samples{nodes, midpoints, t0, t1} deduces X (for compilers without aggregate deduction).
+template <class X>
+Samples(std::vector<X>, std::vector<X>, double, double) -> Samples<X>;
 
 namespace detail {
 

@@ -103,6 +103,8 @@ class MultipleShootingSystem {
     SweepOutput<G, L> out;
     try {
       out.last = scheme_.initial(v0, xi0);
+    } catch (const ModelError&) {
+      throw;  // the model's defect, not a failed iterate
     } catch (const std::exception& e) {
       failure_ = e.what();
       return std::nullopt;
@@ -142,6 +144,8 @@ class MultipleShootingSystem {
     try {
       for (int j = 0; j < m; ++j) start_node(x, j, start[static_cast<std::size_t>(j)],
                                             jac ? &dstart[static_cast<std::size_t>(j)] : nullptr);
+    } catch (const ModelError&) {
+      throw;  // the model's defect, not a failed iterate
     } catch (const std::exception& e) {
       failure_ = e.what();
       return false;
@@ -208,7 +212,7 @@ class MultipleShootingSystem {
     node.transport = G::compose(G::exp(xh), ref.transport);
     node.mu = x.segment<n>(offset(j) + 2 * n);
     node.xi = x.segment<n>(offset(j) + 3 * n);
-    node.v = scheme_.problem().lagrangian.velocity(node.t, node.g, node.mu);
+    node.v = scheme_.velocity(node.t, node.g, node.mu);
     if (!d) return;
     *d = scheme_.state_tangent(node);
     Eigen::MatrixXd chart = Eigen::MatrixXd::Identity(4 * n, 4 * n);  // d(gamma, chi, mu, xi) / d(unknowns)

@@ -119,13 +119,20 @@ class TransportedScheme {
   SchemeOrder order() const { return order_; }
   double step_size() const { return dt_; }
 
+  /// The Lagrangian's inverse Legendre map v(t, g, mu), checked (require_finite_result).
+  Tangent velocity(double t, const groups::ElementOf<G>& g, const Covector& mu) const {
+    return mechanics::require_finite_result(Tangent(problem_.lagrangian.velocity(t, g, mu)), "lagrangian.velocity", t,
+                                            g, mu);
+  }
+
   Node initial(const Tangent& v0, const Covector& xi0) const {
     Node node;
     node.t = 0;
     node.g = problem_.g0;
     node.transport = G::identity();
     node.v = v0;
-    node.mu = problem_.lagrangian.momentum(0.0, node.g, v0);
+    node.mu = mechanics::require_finite_result(Covector(problem_.lagrangian.momentum(0.0, node.g, v0)),
+                                               "lagrangian.momentum", 0.0, node.g, v0);
     node.xi = xi0;
     return node;
   }
@@ -222,9 +229,14 @@ class TransportedScheme {
     return m;
   }
 
+  Covector group_gradient(const Node& node) const {
+    return mechanics::require_finite_result(Covector(problem_.lagrangian.group_gradient(node.t, node.g, node.v)),
+                                            "lagrangian.group_gradient", node.t, node.g, node.v);
+  }
+
   Rates rates(const Node& node) const {
     const Matrix p = G::Ad(node.transport);
-    const Covector zeta = problem_.lagrangian.group_gradient(node.t, node.g, node.v);
+    const Covector zeta = group_gradient(node);
     const Matrix coad_v = G::ad(node.v).transpose();
     const Covector coad_v_mu = coad_v * node.mu;
     Rates r;
@@ -236,7 +248,7 @@ class TransportedScheme {
 
   RatesTangent rates_tangent(const Node& node, const NodeTangent& d, const Rates& r) const {
     const Matrix p = G::Ad(node.transport);
-    const Covector zeta = problem_.lagrangian.group_gradient(node.t, node.g, node.v);
+    const Covector zeta = group_gradient(node);
     const Matrix coad_v = G::ad(node.v).transpose();
     const Directions dcoad_v_mu = coad_v * d.mu + coad_first(node.mu) * d.v;
     const Directions dzeta = d.hessian.gradient_g * d.gamma + d.hessian.gradient_v * d.v;
@@ -256,7 +268,7 @@ class TransportedScheme {
     out.transport = transport::disc_exp_update<G>(problem_.lambda, dt_, r.u, node.transport);
     out.mu = node.mu + dt_ * r.dmu;
     out.xi = xi_next ? *xi_next : Covector(node.xi + dt_ * r.dxi);
-    out.v = problem_.lagrangian.velocity(out.t, out.g, out.mu);
+    out.v = velocity(out.t, out.g, out.mu);
   }
 
   /// Linearisation of `advance`: g' = g exp(h u) gives gamma' = Ad(exp(-h u)) gamma + h J_r(h u) du;

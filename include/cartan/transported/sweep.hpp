@@ -57,6 +57,8 @@ bool sweep_segment(const TransportedScheme<G, L>& scheme, SchemeNode<G> node,
     out.last = node;
     out.tangent = std::move(tangent);
     return true;
+  } catch (const ModelError&) {
+    throw;  // the model's defect, not a failed iterate
   } catch (const std::exception& e) {
     out.failure = e.what();
     return false;
@@ -75,6 +77,8 @@ bool forward_sweep(const TransportedScheme<G, L>& scheme, const groups::TangentO
   try {
     node = scheme.initial(v0, given_xi ? (*given_xi)[0] : xi0);
     if (tangent_columns > 0) tangent = scheme.initial_tangent(node, tangent_columns);
+  } catch (const ModelError&) {
+    throw;  // the model's defect, not a failed iterate
   } catch (const std::exception& e) {
     out.failure = e.what();
     return false;
