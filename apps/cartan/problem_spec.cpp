@@ -54,15 +54,13 @@ const char* one_or_two(double x) { return x == 1 || x == 2 ? nullptr : "must be 
 std::vector<ProblemField> make_fields() {
   using S = ProblemSpec;
   const std::string groups = group_names();
-  std::string models;
+  std::string models, inertias, elements;
   for (const auto& m : model_infos()) {
-    models += (models.empty() ? "" : "; ") + std::string(m.group) + ": " + std::string(m.model);
-  }
-  std::string inertias, elements;
-  for (const auto& m : model_infos()) {
-    inertias += (inertias.empty() ? "" : "; ") + std::string(m.group) + " " + std::string(m.model) + " " + excerpt(m.default_inertia);
-    if (elements.find(std::string(m.group) + ":") == std::string::npos) {
-      elements += (elements.empty() ? "" : "; ") + std::string(m.group) + ": " + std::string(m.element_what);
+    const std::string group = std::string(m.group);
+    inertias += (inertias.empty() ? "" : "; ") + group + " " + std::string(m.model) + " " + excerpt(m.default_inertia);
+    if (elements.find(group + ":") == std::string::npos) {  // once per group
+      models += (models.empty() ? "" : "; ") + group + ": " + model_names(m.group);
+      elements += (elements.empty() ? "" : "; ") + group + ": " + std::string(m.element_what);
     }
   }
   return {
