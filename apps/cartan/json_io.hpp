@@ -1,8 +1,14 @@
 #pragma once
-// Reading and writing the CLI's JSON files with errors that name the file and the flag.
+// The CLI's one JSON helper kit: reading and writing its JSON files with errors that name the
+// file and the flag, reading typed values out of a document, and describing values in messages.
+// Messages never dump input: a string is quoted, escaped and cut (quote_input, at most 60
+// characters), a container is described by its kind and size, a list of numbers is cut to about
+// 60 characters (excerpt).
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace cartan::cli {
 
@@ -18,5 +24,32 @@ nlohmann::json read_json_file(const std::string& path, const std::string& what);
 /// Writes `value` as one line to `path`, or to stdout when `path` is empty. Throws
 /// std::invalid_argument starting with `what` when the file cannot be written.
 void write_json(const nlohmann::json& value, const std::string& path, const std::string& what);
+
+/// A short description of a JSON value for messages: a number printed, a string quoted, escaped
+/// and cut (quote_input), a container by kind and size ("(an array of 3 entries)", "(an object
+/// with 2 keys)"), never dumped: a hostile document may be huge or deeply nested.
+std::string describe(const nlohmann::json& value);
+
+/// Numbers separated by commas (17 significant digits), cut after about 60 characters ("...").
+std::string excerpt(const std::vector<double>& values);
+
+/// Parses "x,y,z" into numbers; throws std::invalid_argument "<where>: <name> = ..." on a bad entry.
+std::vector<double> parse_list(const std::string& text, const std::string& name, std::string_view where = "cartan solve");
+
+// Typed values of a document. Each throws std::invalid_argument "<where>: <name> = <describe(value)>
+// <problem>" when the value has the wrong type.
+
+double json_number(const nlohmann::json& value, std::string_view where, const std::string& name);
+/// An integral number within +-2e9.
+int json_integer(const nlohmann::json& value, std::string_view where, const std::string& name);
+std::string json_text(const nlohmann::json& value, std::string_view where, const std::string& name);
+/// A list of finite numbers: an array of numbers, an array of rows (arrays of numbers of one
+/// length: a matrix, read row-major), or a string "x,y,z" (parse_list). Entries are named
+/// name[i] or name[i][j] in messages.
+std::vector<double> json_numbers(const nlohmann::json& value, std::string_view where, const std::string& name);
+
+/// `j[key]`; throws "<where>: <key> = (missing) is required in <what>" when absent.
+const nlohmann::json& require_key(const nlohmann::json& j, const std::string& key, std::string_view where,
+                                  std::string_view what);
 
 }  // namespace cartan::cli

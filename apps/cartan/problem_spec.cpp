@@ -6,76 +6,31 @@
 
 #include <Eigen/Dense>
 
+#include "cartan/enum_names.hpp"
 #include "cartan/errors.hpp"
 #include "cartan/groups/so3.hpp"
 #include "cartan/transported/method.hpp"
+#include "json_io.hpp"
+#include "model_table.hpp"
 
 namespace cartan::cli {
 
 namespace {
 
+constexpr std::string_view kWhere = "cartan solve";
+
 [[noreturn]] void bad(const std::string& name, const std::string& value, const std::string& problem) {
-  throw_invalid("cartan solve", name, value, problem);
+  throw_invalid(kWhere, name, value, problem);
 }
 
-std::string join(const std::vector<double>& values) {
-  std::ostringstream out;
-  for (std::size_t i = 0; i < values.size(); ++i) out << (i ? "," : "") << format_value(values[i]);
-  return out.str();
-}
-
-std::vector<double> json_numbers(const nlohmann::json& value, const std::string& key) {
-  if (value.is_string()) return parse_list(value.get<std::string>(), key);
-  if (!value.is_array()) bad(key, value.dump(), "must be a list of numbers");
-  std::vector<double> out;
-  for (const auto& x : value) {
-    if (x.is_array()) {
-      for (const auto& y : x) {  // a matrix given as rows
-        if (!y.is_number()) bad(key, value.dump(), "must contain only numbers");
-        out.push_back(y.get<double>());
-      }
-    } else {
-      if (!x.is_number()) bad(key, value.dump(), "must contain only numbers");
-      out.push_back(x.get<double>());
-    }
-  }
-  return out;
-}
-
-double json_number(const nlohmann::json& value, const std::string& key) {
-  if (!value.is_number()) bad(key, value.dump(), "must be a number");
-  return value.get<double>();
-}
-
-int json_int(const nlohmann::json& value, const std::string& key) {
-  if (!value.is_number_integer() && !(value.is_number() && std::floor(value.get<double>()) == value.get<double>())) {
-    bad(key, value.dump(), "must be an integer");
-  }
-  const double x = value.get<double>();
-  if (std::abs(x) > 2e9) bad(key, value.dump(), "is out of range");
-  return static_cast<int>(x);
-}
-
-std::string json_string(const nlohmann::json& value, const std::string& key) {
-  if (!value.is_string()) bad(key, value.dump(), "must be a string");
-  return value.get<std::string>();
-}
-
-void require_one_of(const std::string& name, const std::string& value, const std::vector<std::string>& choices) {
-  if (std::find(choices.begin(), choices.end(), value) == choices.end()) {
-    std::string list;
-    for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
-    bad(name, quote_input(value), "is not one of: " + list);
-  }
-}
-
+/// Throws naming `name` unless `values` are `size` finite numbers.
 void require_size(const std::string& name, const std::vector<double>& values, std::size_t size,
                   const std::string& what) {
   if (values.size() != size) {
-    bad(name, join(values), "must have " + std::to_string(size) + " numbers (" + what + ")");
+    bad(name, excerpt(values), "must have " + std::to_string(size) + " numbers (" + what + ")");
   }
   for (double x : values) {
-    if (!std::isfinite(x)) bad(name, join(values), "contains a non-finite number");
+    if (!std::isfinite(x)) bad(name, excerpt(values), "contains a non-finite number");
   }
 }
 
@@ -90,100 +45,179 @@ void require_memory(const std::string& name, int count, double bytes, const std:
   }
 }
 
+const char* finite_value(double x) { return std::isfinite(x) ? nullptr : "is not finite"; }
+const char* positive_finite(double x) { return std::isfinite(x) && x > 0 ? nullptr : "must be positive and finite"; }
+const char* at_least_one(double x) { return x >= 1 ? nullptr : "must be at least 1"; }
+const char* non_negative(double x) { return x >= 0 ? nullptr : "must be non-negative"; }
+const char* one_or_two(double x) { return x == 1 || x == 2 ? nullptr : "must be 1 or 2"; }
+
+std::vector<ProblemField> make_fields() {
+  using S = ProblemSpec;
+  const std::string groups = group_names();
+  std::string models, inertias, elements;
+  for (const auto& m : model_infos()) {
+    const std::string group = std::string(m.group);
+    inertias += (inertias.empty() ? "" : "; ") + group + " " + std::string(m.model) + " " + excerpt(m.default_inertia);
+    if (elements.find(group + ":") == std::string::npos) {  // once per group
+      models += (models.empty() ? "" : "; ") + group + ": " + model_names(m.group);
+      elements += (elements.empty() ? "" : "; ") + group + ": " + std::string(m.element_what);
+    }
+  }
+  return {
+      {"group", &S::group, "the group: " + groups + " (default so3)", true, nullptr},
+      {"model", &S::model, "the model (default the group's first): " + models, true, nullptr},
+      {"inertia", &S::inertia,
+       "n numbers (the diagonal) or n*n (a symmetric positive-definite matrix, row-major), n = the algebra's dimension "
+       "(default: " + inertias + ")",
+       true, nullptr},
+      {"lambda", &S::lambda, "Cartan-Schouten parameter (any real; default 0.5)", true, finite_value},
+      {"T", &S::T, "final time (default 1)", true, positive_finite},
+      {"N", &S::N, "number of steps (default 100)", true, at_least_one},
+      {"g0", &S::g0, "initial element (default the identity): " + elements, true, nullptr},
+      {"gT", &S::gT, "final element, as --g0", false, nullptr},  // echoed as final_element
+      {"a0", &S::a0, "so3: initial direction; gT = minimal rotation taking a0 to aT", false, nullptr},
+      {"aT", &S::aT, "so3: final direction", false, nullptr},
+      {"method", &S::method,
+       enum_choices<transported::Method>() +
+           " (default auto: a strategy that tries shooting, continuation in T and in lambda, "
+           "collocation and multiple shooting in turn and stops at the first success; shooting: "
+           "augmented shooting with an analytic Jacobian; multiple-shooting: lifted LM over --segments "
+           "segments; two-level: the paper's scheme; collocation: fourth-order adaptive collocation)",
+       false, nullptr},
+      {"continuation", &S::continuation,
+       enum_choices<transported::Continuation>() +
+           " (default none). shooting: how to reach a problem that fails from the guess (T: from a "
+           "shorter horizon; lambda: from the lambda = 0 solution); so3 collocation: where to start "
+           "when Newton from the geodesic guess fails (from that order-2 shooting solution)",
+       false, nullptr},
+      {"v0", &S::v0, "guess of v(0), n numbers (shooting methods; default the geodesic velocity)", false, nullptr},
+      {"xi0", &S::xi0, "guess of xi(0), n numbers (shooting, multiple-shooting; default 0)", false, nullptr},
+      {"segments", &S::segments, "multiple-shooting only: number of segments (default about 100 steps each, at most 16)",
+       false, non_negative},
+      {"order", &S::order, "1 (the paper's scheme) | 2 (second order) (default 1)", false, one_or_two},
+      {"tol", &S::tol, "tolerance (default 1e-10)", true, positive_finite},
+      {"samples", &S::samples, "collocation only: output at this many uniform times on [0, T] (0: the final mesh)",
+       false, non_negative},
+      {"max_iterations", &S::max_iterations, "iteration limit of each loop (default 200)", false, at_least_one},
+      {"output", &S::output, "output file (default stdout)", false, nullptr},
+  };
+}
+
+/// A field's value for messages (numbers as given, lists cut by excerpt).
+std::string shown(const ProblemSpec& spec, const ProblemField& field) {
+  return std::visit(
+      [&](auto member) -> std::string {
+        const auto& value = spec.*member;
+        using T = std::decay_t<decltype(value)>;
+        if constexpr (std::is_same_v<T, std::string>) return quote_input(value);
+        else if constexpr (std::is_same_v<T, std::vector<double>>) return excerpt(value);
+        else if constexpr (std::is_same_v<T, int>) return std::to_string(value);
+        else return format_value(value);
+      },
+      field.member);
+}
+
 }  // namespace
+
+std::string ProblemField::flag() const {
+  std::string out = "--" + key;
+  std::replace(out.begin(), out.end(), '_', '-');
+  return out;
+}
+
+const std::vector<ProblemField>& problem_fields() {
+  static const std::vector<ProblemField> fields = make_fields();
+  return fields;
+}
+
+const ProblemField* find_field(std::string_view key) {
+  for (const auto& f : problem_fields()) {
+    if (f.key == key) return &f;
+  }
+  return nullptr;
+}
+
+void read_field(ProblemSpec& spec, const ProblemField& field, const nlohmann::json& value, std::string_view where) {
+  std::visit(
+      [&](auto member) {
+        auto& target = spec.*member;
+        using T = std::decay_t<decltype(target)>;
+        if constexpr (std::is_same_v<T, std::string>) target = json_text(value, where, field.key);
+        else if constexpr (std::is_same_v<T, std::vector<double>>) target = json_numbers(value, where, field.key);
+        else if constexpr (std::is_same_v<T, int>) target = json_integer(value, where, field.key);
+        else target = json_number(value, where, field.key);
+      },
+      field.member);
+}
+
+void check_field(const ProblemSpec& spec, const ProblemField& field, std::string_view where) {
+  if (field.check == nullptr) return;
+  const double value = std::visit(
+      [&](auto member) -> double {
+        const auto& x = spec.*member;
+        if constexpr (std::is_arithmetic_v<std::decay_t<decltype(x)>>) return static_cast<double>(x);
+        else return 0;  // checks are for numbers only
+      },
+      field.member);
+  if (const char* problem = field.check(value)) throw_invalid(where, field.key, shown(spec, field), problem);
+}
 
 std::vector<double> final_element(const ProblemSpec& spec) {
   if (spec.a0.empty()) return spec.gT;
-  const groups::SO3::Element r = groups::SO3::minimal_rotation(Eigen::Vector3d(spec.a0.data()), Eigen::Vector3d(spec.aT.data()));
-  std::vector<double> out(9);
-  for (int i = 0; i < 9; ++i) out[static_cast<std::size_t>(i)] = r(i / 3, i % 3);  // row-major
-  return out;
+  return element_numbers(groups::SO3::minimal_rotation(Eigen::Vector3d(spec.a0.data()), Eigen::Vector3d(spec.aT.data())));
 }
 
 nlohmann::json result_header(const ProblemSpec& spec, const std::string& status, const std::string& message,
                              const std::string& method, int order, const std::string& branch) {
-  return {{"status", status}, {"message", message}, {"group", spec.group}, {"model", spec.model},
-          {"lambda", spec.lambda}, {"T", spec.T}, {"N", spec.N}, {"method", method}, {"order", order},
-          {"branch", branch}, {"inertia", spec.inertia}, {"g0", spec.g0}, {"gT", final_element(spec)},
-          {"tol", spec.tol}};
-}
-
-std::vector<double> parse_list(const std::string& text, const std::string& name) {
-  std::vector<double> out;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
-    const auto first = item.find_first_not_of(" \t");
-    const auto last = item.find_last_not_of(" \t");
-    const std::string trimmed = first == std::string::npos ? "" : item.substr(first, last - first + 1);
-    std::size_t used = 0;
-    double value = 0;
-    try {
-      value = std::stod(trimmed, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (trimmed.empty() || used != trimmed.size()) bad(name, quote_input(text), "is not a comma-separated list of numbers");
-    out.push_back(value);
+  nlohmann::json out = {{"status", status}, {"message", message}, {"method", method},
+                        {"order", order},   {"branch", branch},   {"gT", final_element(spec)}};
+  for (const auto& field : problem_fields()) {
+    if (!field.echoed) continue;
+    std::visit([&](auto member) { out[field.key] = spec.*member; }, field.member);
   }
-  if (out.empty()) bad(name, quote_input(text), "is empty");
+  const auto n = static_cast<std::size_t>(std::lround(std::sqrt(static_cast<double>(spec.inertia.size()))));
+  if (n > 1 && n * n == spec.inertia.size()) {  // n x n: as rows (n numbers, the diagonal, stay a list)
+    nlohmann::json rows = nlohmann::json::array();
+    for (std::size_t i = 0; i < n; ++i) {
+      rows.push_back(std::vector<double>(spec.inertia.begin() + static_cast<std::ptrdiff_t>(i * n),
+                                         spec.inertia.begin() + static_cast<std::ptrdiff_t>((i + 1) * n)));
+    }
+    out["inertia"] = rows;
+  }
   return out;
 }
 
 void apply_json(ProblemSpec& spec, const nlohmann::json& file) {
-  if (!file.is_object()) bad("problem file", file.dump().substr(0, 80), "must be a JSON object");
+  if (!file.is_object()) bad("problem file", describe(file), "must be a JSON object");
   for (const auto& [key, value] : file.items()) {
-    if (key == "group") spec.group = json_string(value, key);
-    else if (key == "model") spec.model = json_string(value, key);
-    else if (key == "inertia") spec.inertia = json_numbers(value, key);
-    else if (key == "lambda") spec.lambda = json_number(value, key);
-    else if (key == "T") spec.T = json_number(value, key);
-    else if (key == "N") spec.N = json_int(value, key);
-    else if (key == "g0") spec.g0 = json_numbers(value, key);
-    else if (key == "gT") spec.gT = json_numbers(value, key);
-    else if (key == "a0") spec.a0 = json_numbers(value, key);
-    else if (key == "aT") spec.aT = json_numbers(value, key);
-    else if (key == "method") spec.method = json_string(value, key);
-    else if (key == "order") spec.order = json_int(value, key);
-    else if (key == "tol") spec.tol = json_number(value, key);
-    else if (key == "samples") spec.samples = json_int(value, key);
-    else if (key == "segments") spec.segments = json_int(value, key);
-    else if (key == "continuation") spec.continuation = json_string(value, key);
-    else if (key == "v0") spec.v0 = json_numbers(value, key);
-    else if (key == "xi0") spec.xi0 = json_numbers(value, key);
-    else if (key == "max_iterations") spec.max_iterations = json_int(value, key);
-    else if (key == "output") spec.output = json_string(value, key);
-    else bad("key " + quote_input(key), quote_input(value.dump()), "is not a problem-file key");
+    const ProblemField* field = find_field(key);
+    if (field == nullptr) bad("key " + quote_input(key), describe(value), "is not a problem-file key");
+    read_field(spec, *field, value, kWhere);
   }
 }
 
 void validate(ProblemSpec& spec) {
-  require_one_of("group", spec.group, {"so3", "heisenberg"});
-  require_one_of("model", spec.model, spec.group == "so3" ? std::vector<std::string>{"free-rigid-body", "oscillator"}
-                                                           : std::vector<std::string>{"oscillator"});
+  const ModelInfo& model = find_model(spec.group, spec.model, kWhere);
+  spec.model = model.model;
+  const std::size_t n = static_cast<std::size_t>(model.dim);
   const transported::Method method = parse_enum<transported::Method>(spec.method, "cartan solve");
   const transported::Continuation continuation = parse_enum<transported::Continuation>(spec.continuation, "cartan solve");
   if (continuation != transported::Continuation::None && method != transported::Method::Shooting && method != transported::Method::Collocation) {
     bad("continuation", quote_input(spec.continuation), "is an option of --method shooting and collocation only");
   }
-  if (!spec.v0.empty()) require_size("v0", spec.v0, 3, "a guess of v(0)");
-  if (!spec.xi0.empty()) require_size("xi0", spec.xi0, 3, "a guess of xi(0)");
+  const std::string vector_what = std::to_string(n) + " for group " + spec.group;
+  if (!spec.v0.empty()) require_size("v0", spec.v0, n, "a guess of v(0), " + vector_what);
+  if (!spec.xi0.empty()) require_size("xi0", spec.xi0, n, "a guess of xi(0), " + vector_what);
   if ((!spec.v0.empty() || !spec.xi0.empty()) && method == transported::Method::Collocation) {
-    bad(spec.v0.empty() ? "xi0" : "v0", join(spec.v0.empty() ? spec.xi0 : spec.v0),
+    bad(spec.v0.empty() ? "xi0" : "v0", excerpt(spec.v0.empty() ? spec.xi0 : spec.v0),
         "is a guess for the shooting methods, not for --method collocation");
   }
   if (!spec.xi0.empty() && method == transported::Method::TwoLevel) {
-    bad("xi0", join(spec.xi0), "is not a guess of --method two-level (its xi starts at 0)");
+    bad("xi0", excerpt(spec.xi0), "is not a guess of --method two-level (its xi starts at 0)");
   }
-  if (spec.order != 1 && spec.order != 2) bad("order", std::to_string(spec.order), "must be 1 or 2");
-  if (!std::isfinite(spec.lambda)) bad("lambda", format_value(spec.lambda), "is not finite");
-  if (!(std::isfinite(spec.T) && spec.T > 0)) bad("T", format_value(spec.T), "must be positive and finite");
-  if (spec.N < 1) bad("N", std::to_string(spec.N), "must be at least 1");
+  for (const auto& field : problem_fields()) check_field(spec, field, kWhere);
   require_memory("N", spec.N, kBytesPerNode * spec.N, "the trajectory and its JSON output, ~1 KiB per step");
-  if (!(std::isfinite(spec.tol) && spec.tol > 0)) bad("tol", format_value(spec.tol), "must be positive and finite");
-  if (spec.max_iterations < 1) bad("max_iterations", std::to_string(spec.max_iterations), "must be at least 1");
-  if (spec.samples < 0) bad("samples", std::to_string(spec.samples), "must be non-negative");
-  if (spec.segments < 0 || spec.segments > spec.N) {
+  if (spec.segments > spec.N) {
     bad("segments", std::to_string(spec.segments), "must be between 1 and N (0: the default, about 100 steps each)");
   }
   require_memory("samples", spec.samples, kBytesPerNode * spec.samples, "the sampled output, ~1 KiB per sample");
@@ -196,35 +230,35 @@ void validate(ProblemSpec& spec) {
     bad("segments", std::to_string(spec.segments), "is an option of --method multiple-shooting only");
   }
   if (spec.samples == 1) bad("samples", "1", "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");
-  if (spec.inertia.empty()) spec.inertia = spec.group == "so3" ? std::vector<double>{2, 3, 4} : std::vector<double>{1, 1, 1};
-  require_size("inertia", spec.inertia, 3, "the diagonal of the inertia");
-  for (double x : spec.inertia) {
-    if (!(x > 0)) bad("inertia", join(spec.inertia), "is not positive definite (entries must be > 0)");
+  if (spec.inertia.empty()) spec.inertia = model.default_inertia;
+  if (spec.inertia.size() != n && spec.inertia.size() != n * n) {
+    bad("inertia", excerpt(spec.inertia),
+        "must have " + std::to_string(n) + " numbers (the diagonal) or " + std::to_string(n * n) +
+            " (the matrix, row-major) for group " + spec.group);
   }
-  const std::size_t element_size = spec.group == "so3" ? 9 : 3;
-  const std::string element_what = spec.group == "so3" ? "a rotation matrix, row-major" : "coordinates a,b,c";
-  if (spec.g0.empty()) {
-    spec.g0 = spec.group == "so3" ? std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1} : std::vector<double>{0, 0, 0};
-  }
-  require_size("g0", spec.g0, element_size, element_what);
+  require_size("inertia", spec.inertia, spec.inertia.size(), "");
+  check_inertia(model, spec.inertia, kWhere);
+  const std::string element_what = std::string(model.element_what);
+  if (spec.g0.empty()) spec.g0 = model.identity;
+  require_size("g0", spec.g0, model.element_size, element_what);  // group membership: solve (solve_command.hpp)
   const bool directions = !spec.a0.empty() || !spec.aT.empty();
   if (directions) {
-    if (spec.group != "so3") bad("a0/aT", join(spec.a0) + " / " + join(spec.aT), "are only for --group so3");
-    if (!spec.gT.empty()) bad("gT", join(spec.gT), "conflicts with a0/aT: give one or the other");
+    if (!model.directions) bad("a0/aT", excerpt(spec.a0) + " / " + excerpt(spec.aT), "are only for --group so3");
+    if (!spec.gT.empty()) bad("gT", excerpt(spec.gT), "conflicts with a0/aT: give one or the other");
     require_size("a0", spec.a0, 3, "a direction");
     require_size("aT", spec.aT, 3, "a direction");
     const Eigen::Vector3d a0(spec.a0.data()), aT(spec.aT.data());
-    if (a0.stableNorm() == 0) bad("a0", join(spec.a0), "has zero length");
-    if (aT.stableNorm() == 0) bad("aT", join(spec.aT), "has zero length");
+    if (a0.stableNorm() == 0) bad("a0", excerpt(spec.a0), "has zero length");
+    if (aT.stableNorm() == 0) bad("aT", excerpt(spec.aT), "has zero length");
     // stable: |a| of 1e200 or 1e-200 overflows/underflows in a plain norm
     const Eigen::Vector3d x = a0.stableNormalized(), y = aT.stableNormalized();
     if (x.cross(y).norm() < 1e-12 && x.dot(y) < 0) {
-      bad("a0/aT", join(spec.a0) + " / " + join(spec.aT),
+      bad("a0/aT", excerpt(spec.a0) + " / " + excerpt(spec.aT),
           "are antiparallel: the minimal rotation is not unique (give --gT instead)");
     }
   } else {
-    if (spec.gT.empty()) bad("gT", "(missing)", "is required (or, for so3, a0 and aT)");
-    require_size("gT", spec.gT, element_size, element_what);
+    if (spec.gT.empty()) bad("gT", "(missing)", std::string("is required") + (model.directions ? " (or a0 and aT)" : ""));
+    require_size("gT", spec.gT, model.element_size, element_what);
   }
 }
 

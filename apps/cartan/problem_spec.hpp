@@ -6,18 +6,20 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <variant>
 #include <vector>
 
 namespace cartan::cli {
 
 struct ProblemSpec {
-  std::string group = "so3";            ///< so3 | heisenberg
-  std::string model = "free-rigid-body";  ///< free-rigid-body | oscillator
-  std::vector<double> inertia;          ///< 3 numbers (diagonal); default 2,3,4 (so3), 1,1,1 (heisenberg)
+  std::string group = "so3";            ///< a group of the model table (model_table.hpp)
+  std::string model;                    ///< a model of the group; empty: the group's first (validate fills it)
+  std::vector<double> inertia;          ///< n numbers (diagonal) or n^2 (row-major); default: the model's
   double lambda = 0.5;
   double T = 1.0;
   int N = 100;
-  std::vector<double> g0;               ///< so3: 9 numbers row-major; heisenberg: a,b,c
+  std::vector<double> g0;               ///< the element's numbers (model_table.hpp); default the identity
   std::vector<double> gT;
   std::vector<double> a0, aT;           ///< so3 only: gT = minimal rotation taking a0 to aT
   std::string method = "auto";          ///< a Method word (transported/method.hpp): auto | shooting | multiple-shooting | two-level | collocation
@@ -25,11 +27,40 @@ struct ProblemSpec {
   double tol = 1e-10;
   int samples = 0;                      ///< collocation: output at this many uniform times (0: the final mesh)
   std::string continuation = "none";    ///< a Continuation word: none | T | lambda (shooting and collocation only)
-  std::vector<double> v0, xi0;          ///< optional guesses of v(0) and xi(0) (3 numbers each)
+  std::vector<double> v0, xi0;          ///< optional guesses of v(0) and xi(0) (n numbers each)
   int segments = 0;                     ///< multiple shooting: number of segments (0: default_segments(N))
   int max_iterations = 200;
   std::string output;                   ///< empty: stdout
 };
+
+/// One field of a problem: its JSON key (the flag is --key with '_' written '-'), the ProblemSpec
+/// member it fills (its type is the field's kind: text, number, integer or a list of numbers),
+/// its help, whether results echo it (so that `cartan verify` rebuilds the problem), and for
+/// numbers the check of its value. The one list of the problem's fields: parsed from problem
+/// files and flags, checked by validate, echoed by result_header, read back by read_result.
+struct ProblemField {
+  using Member = std::variant<std::string ProblemSpec::*, double ProblemSpec::*, int ProblemSpec::*,
+                              std::vector<double> ProblemSpec::*>;
+  std::string key;
+  Member member;
+  std::string help;
+  bool echoed = false;
+  /// A number's problem ("must be positive and finite"), or nullptr when the value is fine.
+  const char* (*check)(double) = nullptr;
+
+  std::string flag() const;  ///< "--max-iterations" for max_iterations
+};
+
+/// Every field, in the order of `cartan solve --help`.
+const std::vector<ProblemField>& problem_fields();
+/// The field with this JSON key, or nullptr.
+const ProblemField* find_field(std::string_view key);
+
+/// Sets the field from a JSON value (json_io.hpp's typed readers). Throws std::invalid_argument
+/// "<where>: <key> = <value> <problem>" for a wrong type.
+void read_field(ProblemSpec& spec, const ProblemField& field, const nlohmann::json& value, std::string_view where);
+/// Throws std::invalid_argument "<where>: <key> = <value> <problem>" when field.check rejects it.
+void check_field(const ProblemSpec& spec, const ProblemField& field, std::string_view where);
 
 /// Memory limit of one `cartan solve` run, checked by validate() so that a huge N, --samples or
 /// --segments is refused with a message instead of ending in std::bad_alloc or the OOM killer.
@@ -45,20 +76,20 @@ inline constexpr double kBytesPerSegmentSquared = 4 * 144 * 8;
 /// wrong types throw std::invalid_argument naming the key.
 void apply_json(ProblemSpec& spec, const nlohmann::json& file);
 
-/// Parses "x,y,z" into numbers; throws std::invalid_argument naming `name` on a bad entry.
-std::vector<double> parse_list(const std::string& text, const std::string& name);
-
-/// Checks every field and fills defaults (inertia; g0 = identity). Throws std::invalid_argument
-/// naming the first bad value.
+/// Checks every field and fills defaults (model: the group's first; inertia: the model's;
+/// g0 = identity). The inertia is checked by building the library's model; that g0 and gT are
+/// group elements is checked by solve (solve_command.hpp), so that `cartan sweep` reports such a
+/// point as an error row. Throws std::invalid_argument naming the first bad value.
 void validate(ProblemSpec& spec);
 
 /// The final element of a validated spec as its numbers (so3: row-major): gT, or for so3 with
 /// a0/aT the minimal rotation taking a0 to aT.
 std::vector<double> final_element(const ProblemSpec& spec);
 
-/// The part of a `cartan solve` result every method shares: status, message, group, model,
-/// lambda, T, N, method, order, branch, and what rebuilds the problem (`cartan verify`):
-/// inertia, g0, gT (final_element), tol. Each method adds its trajectory and diagnostics.
+/// The part of a `cartan solve` result every method shares: status, message, method, order,
+/// branch, the echoed fields (group, model, inertia, lambda, T, N, g0, tol: what rebuilds the
+/// problem for `cartan verify`) and gT (final_element). An n x n inertia is echoed as rows.
+/// Each method adds its trajectory and diagnostics.
 nlohmann::json result_header(const ProblemSpec& spec, const std::string& status, const std::string& message,
                              const std::string& method, int order, const std::string& branch);
 

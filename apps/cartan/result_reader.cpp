@@ -1,8 +1,5 @@
 #include "result_reader.hpp"
 
-#include "cartan/status.hpp"
-#include "cartan/transported/method.hpp"
-
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -10,13 +7,17 @@
 #include <vector>
 
 #include "cartan/errors.hpp"
-#include "problem_spec.hpp"
+#include "cartan/status.hpp"
+#include "cartan/transported/method.hpp"
+#include "json_io.hpp"
+#include "model_table.hpp"
 
 namespace cartan::cli {
 
 namespace {
 
-constexpr const char* kWhere = "cartan verify";
+constexpr std::string_view kWhere = "cartan verify";
+constexpr std::string_view kResultFile = "a result file";
 
 /// The first and last times must match 0 and T to this fraction of T (shooting accumulates t_k
 /// by adding h, which leaves a rounding error of about N eps T).
@@ -26,48 +27,8 @@ constexpr double kTimeSpanTolerance = 1e-6;
   throw_invalid(kWhere, name, value, problem);
 }
 
-/// A short description of a JSON value for messages: scalars printed, containers by type and
-/// size (never dumped: a hostile document may be huge or deeply nested).
-std::string describe(const nlohmann::json& value) {
-  if (value.is_number()) return format_value(value.get<double>());
-  if (value.is_string()) {
-    const auto& s = value.get_ref<const std::string&>();
-    return "\"" + (s.size() > 40 ? s.substr(0, 40) + "..." : s) + "\"";
-  }
-  if (value.is_array()) return "(an array of " + std::to_string(value.size()) + " entries)";
-  if (value.is_object()) return "(an object)";
-  return std::string("(") + value.type_name() + ")";
-}
-
-const nlohmann::json& require_key(const nlohmann::json& j, const std::string& key) {
-  const auto it = j.find(key);
-  if (it == j.end()) bad(key, "(missing)", "is required in a result file");
-  return *it;
-}
-
-double finite_number(const nlohmann::json& value, const std::string& name) {
-  if (!value.is_number()) bad(name, describe(value), "must be a number");
-  const double x = value.get<double>();
-  if (!std::isfinite(x)) bad(name, describe(value), "is not finite");
-  return x;
-}
-
-double positive_number(const nlohmann::json& value, const std::string& name) {
-  const double x = finite_number(value, name);
-  if (!(x > 0)) bad(name, describe(value), "must be positive");
-  return x;
-}
-
-int integer(const nlohmann::json& value, const std::string& name) {
-  const double x = finite_number(value, name);
-  if (std::floor(x) != x) bad(name, describe(value), "must be an integer");
-  if (std::abs(x) > 2e9) bad(name, describe(value), "is out of range");
-  return static_cast<int>(x);
-}
-
 std::string one_of(const nlohmann::json& value, const std::string& name, const std::vector<std::string>& choices) {
-  if (!value.is_string()) bad(name, describe(value), "must be a string");
-  const auto& s = value.get_ref<const std::string&>();
+  const std::string s = json_text(value, kWhere, name);
   if (std::find(choices.begin(), choices.end(), s) == choices.end()) {
     std::string list;
     for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
@@ -81,23 +42,8 @@ Eigen::VectorXd numbers(const nlohmann::json& value, const std::string& name, st
   if (!value.is_array() || value.size() != size) {
     bad(name, describe(value), "must be a list of " + std::to_string(size) + " numbers");
   }
-  Eigen::VectorXd out(static_cast<Eigen::Index>(size));
-  for (std::size_t i = 0; i < size; ++i) {
-    out[static_cast<Eigen::Index>(i)] = finite_number(value[i], name + "[" + std::to_string(i) + "]");
-  }
-  return out;
-}
-
-/// Throws unless the 9 row-major numbers are a rotation within kResultRotationTolerance.
-void require_rotation(const Eigen::VectorXd& rowmajor, const std::string& name) {
-  Eigen::Matrix3d r;
-  for (int i = 0; i < 9; ++i) r(i / 3, i % 3) = rowmajor[i];
-  const double orthogonality = (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-  if (orthogonality > kResultRotationTolerance || std::abs(r.determinant() - 1) > kResultRotationTolerance) {
-    bad(name, format_value(r),
-        "is not a rotation (max|R^T R - I| = " + format_value(orthogonality) + ", det = " + format_value(r.determinant()) +
-            ", tolerance " + format_value(kResultRotationTolerance) + ")");
-  }
+  const std::vector<double> x = json_numbers(value, kWhere, name);
+  return Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
 }
 
 /// `rows` rows of `width` finite numbers each, as a rows x width matrix.
@@ -128,39 +74,50 @@ Eigen::VectorXd times(const nlohmann::json& value, double T) {
   return t;
 }
 
+/// The echoed problem fields (problem_fields()), read and checked as a problem file's, then the
+/// model (model_table.hpp), its inertia (by the library's model) and the boundary elements.
+ProblemSpec problem_of(const nlohmann::json& j) {
+  ProblemSpec p;
+  for (const auto& field : problem_fields()) {
+    if (!field.echoed) continue;
+    read_field(p, field, require_key(j, field.key, kWhere, kResultFile), kWhere);
+    if (field.key == "group" || field.key == "model") continue;  // checked against the table below
+    check_field(p, field, kWhere);
+  }
+  const ModelInfo& model = find_model(p.group, p.model, kWhere);
+  const auto n = static_cast<std::size_t>(model.dim);
+  if (p.inertia.size() != n && p.inertia.size() != n * n) {
+    bad("inertia", excerpt(p.inertia), "must have " + std::to_string(n) + " or " + std::to_string(n * n) + " numbers");
+  }
+  check_inertia(model, p.inertia, kWhere);
+  for (const char* key : {"g0", "gT"}) {
+    const Eigen::VectorXd x = numbers(require_key(j, key, kWhere, kResultFile), key, model.element_size);
+    (key == std::string("g0") ? p.g0 : p.gT) = std::vector<double>(x.data(), x.data() + x.size());
+    model.check_element(key == std::string("g0") ? p.g0 : p.gT, kWhere, key);
+  }
+  return p;
+}
+
 ResultFile read(const nlohmann::json& j) {
   if (!j.is_object()) bad("result file", describe(j), "must be a JSON object");
   ResultFile r;
-  r.status = one_of(require_key(j, "status"), "status", enum_words<Status>());
-  r.group = one_of(require_key(j, "group"), "group", {"so3", "heisenberg"});
-  const bool so3 = r.group == "so3";
-  r.model = one_of(require_key(j, "model"), "model",
-                   so3 ? std::vector<std::string>{"free-rigid-body", "oscillator"} : std::vector<std::string>{"oscillator"});
-  r.method = one_of(require_key(j, "method"), "method", enum_words<transported::Method>());
-  r.order = integer(require_key(j, "order"), "order");
+  r.status = one_of(require_key(j, "status", kWhere, kResultFile), "status", enum_words<Status>());
+  r.problem = problem_of(j);
+  const ModelInfo& model = find_model(r.problem.group, r.problem.model, kWhere);
+  r.method = one_of(require_key(j, "method", kWhere, kResultFile), "method", enum_words<transported::Method>());
+  r.order = json_integer(require_key(j, "order", kWhere, kResultFile), kWhere, "order");
   if (r.order != 1 && r.order != 2 && r.order != 4) bad("order", std::to_string(r.order), "must be 1, 2 or 4");
-  r.lambda = finite_number(require_key(j, "lambda"), "lambda");
-  r.T = positive_number(require_key(j, "T"), "T");
-  r.N = integer(require_key(j, "N"), "N");
-  if (r.N < 1) bad("N", std::to_string(r.N), "must be at least 1");
-  r.tol = positive_number(require_key(j, "tol"), "tol");
-  r.inertia = numbers(require_key(j, "inertia"), "inertia", 3);
-  for (int i = 0; i < 3; ++i) {
-    if (!(r.inertia[i] > 0)) bad("inertia", format_value(r.inertia.transpose()), "is not positive definite (entries must be > 0)");
-  }
-  const std::size_t width = so3 ? 9 : 3;
-  r.g0 = numbers(require_key(j, "g0"), "g0", width);
-  r.gT = numbers(require_key(j, "gT"), "gT", width);
-  if (so3) require_rotation(r.g0, "g0"), require_rotation(r.gT, "gT");
-  r.t = times(require_key(j, "t"), r.T);
+  r.t = times(require_key(j, "t", kWhere, kResultFile), r.problem.T);
   const auto rows = static_cast<std::size_t>(r.t.size());
-  r.g = table(require_key(j, "g"), "g", rows, width);
-  if (so3) {
-    for (Eigen::Index k = 0; k < r.g.rows(); ++k) require_rotation(r.g.row(k).transpose(), "g[" + std::to_string(k) + "]");
+  r.g = table(require_key(j, "g", kWhere, kResultFile), "g", rows, model.element_size);
+  for (Eigen::Index k = 0; k < r.g.rows(); ++k) {
+    const Eigen::VectorXd row = r.g.row(k).transpose();
+    model.check_element(std::vector<double>(row.data(), row.data() + row.size()), kWhere, "g[" + std::to_string(k) + "]");
   }
-  r.v = table(require_key(j, "v"), "v", rows, 3);
-  r.mu = table(require_key(j, "mu"), "mu", rows, 3);
-  r.xi = table(require_key(j, "xi"), "xi", rows, 3);
+  const auto n = static_cast<std::size_t>(model.dim);
+  r.v = table(require_key(j, "v", kWhere, kResultFile), "v", rows, n);
+  r.mu = table(require_key(j, "mu", kWhere, kResultFile), "mu", rows, n);
+  r.xi = table(require_key(j, "xi", kWhere, kResultFile), "xi", rows, n);
   return r;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// A TransportedSolution as the JSON of the CLI contract (README.md): trajectories as rows, an
-// SO(3) element as 9 numbers row-major, a 3-vector (a Heisenberg element, v, mu, xi) as 3 numbers.
+// A TransportedSolution as the JSON of the CLI contract (README.md): trajectories as rows, a
+// matrix element (so3, se2, se3) as its numbers row-major, a vector (a Heisenberg element, v, mu,
+// xi) as its n numbers.
 
 #include <Eigen/Core>
 #include <cmath>
@@ -8,24 +9,16 @@
 #include <vector>
 
 #include "cartan/transported/solution.hpp"
+#include "model_table.hpp"
 #include "problem_spec.hpp"
 
 namespace cartan::cli {
 
-inline nlohmann::json row_major(const Eigen::Matrix3d& m) {
-  return {m(0, 0), m(0, 1), m(0, 2), m(1, 0), m(1, 1), m(1, 2), m(2, 0), m(2, 1), m(2, 2)};
-}
-
-inline nlohmann::json rows(const std::vector<Eigen::Matrix3d>& g) {
+/// One row per element: its numbers (element_numbers: a matrix row-major, a vector as it is).
+template <class Value>
+nlohmann::json rows(const std::vector<Value>& values) {
   nlohmann::json out = nlohmann::json::array();
-  for (const auto& m : g) out.push_back(row_major(m));
-  return out;
-}
-
-template <class Vec>
-nlohmann::json rows(const std::vector<Vec>& x) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& v : x) out.push_back({v[0], v[1], v[2]});
+  for (const auto& x : values) out.push_back(element_numbers(x));
   return out;
 }
 
@@ -34,7 +27,7 @@ inline nlohmann::json number_or_null(double x) { return std::isfinite(x) ? nlohm
 
 /// Every key of a `cartan solve` result: result_header, the trajectory (t, g, v, mu, xi), the
 /// diagnostics (terminal_error, xi_terminal, action, iterations, solve_time_s) and, for
-/// collocation, mesh_size, max_residual and (so3) group_defect. `order` is the scheme's order
+/// collocation, mesh_size, max_residual and (matrix groups) group_defect. `order` is the scheme's order
 /// (1 or 2 for the discrete schemes, 4 for collocation).
 template <groups::LieGroup G>
 nlohmann::json solution_json(const ProblemSpec& spec, const transported::TransportedSolution<G>& s) {

@@ -53,6 +53,8 @@ Command add_solve_command(CLI::App& tool) {
       "  cartan solve --model free-rigid-body --lambda 0.5 --T 50 --N 1000 --a0 -1,-1,-1 --aT 0.9,1,1 --tol 1e-8\n"
       "  cartan solve --model oscillator --lambda 0 --T 12 --N 800 --a0=-0.7,-1,-0.7 --aT 0.8,0.8,1 --tol 1e-6\n"
       "  cartan solve --group heisenberg --model oscillator --lambda 0.5 --T 1 --N 200 --gT 1,0.5,0.8\n"
+      "  cartan solve --group se2 --T 1 --N 100 --gT 0,-1,1,1,0,-0.5,0,0,1 --inertia 1,0.1,0,0.1,1,0,0,0,0.5\n"
+      "  cartan solve --group se3 --T 1 --N 100 --gT 1,0,0,0.5,0,0,-1,0.2,0,1,0,-0.3,0,0,0,1\n"
       "  cartan solve --problem problem.json --output result.json\n"
       "Exit codes: 0 converged, 1 solver failed (JSON still written), 2 bad input, 130 interrupted (SIGINT;\n"
       "no output written).");

@@ -1,27 +1,14 @@
 #include "solve_command.hpp"
 
-#include "cartan/mechanics/heisenberg_oscillator.hpp"
-#include "cartan/mechanics/rigid_body.hpp"
 #include "cartan/transported/solve.hpp"
+#include "model_table.hpp"
 #include "solution_json.hpp"
 
 namespace cartan::cli {
 
 namespace {
 
-/// Input rotation matrices are accepted within this tolerance and projected onto SO(3), so that
-/// matrices printed with 7 or more digits can be passed back in.
-constexpr double kRotationInputTolerance = 1e-6;
-
-groups::SO3::Element rotation(const std::vector<double>& rowmajor, const std::string& name) {
-  Eigen::Matrix3d m;
-  for (int i = 0; i < 9; ++i) m(i / 3, i % 3) = rowmajor[static_cast<std::size_t>(i)];
-  try {
-    return groups::SO3::from_matrix(m, kRotationInputTolerance);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(std::string(e.what()).replace(0, std::string("SO3: matrix").size(), "cartan solve: " + name));
-  }
-}
+constexpr std::string_view kWhere = "cartan solve";
 
 template <groups::LieGroup G>
 transported::SolveGuess<G> guess_of(const ProblemSpec& spec) {
@@ -31,11 +18,12 @@ transported::SolveGuess<G> guess_of(const ProblemSpec& spec) {
   return guess;
 }
 
-template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-nlohmann::json run(const ProblemSpec& spec, const transported::TransportedProblem<G, L>& problem, const SolveMonitor& monitor) {
-  transported::SolveOptions options = solve_options(spec);
-  options.monitor = monitor;
-  return solution_json(spec, transported::solve(problem, options, guess_of<G>(spec)));
+/// Throws std::invalid_argument ("cartan solve: g0 = ... is not ...") unless g0 and gT are
+/// elements of the spec's group (ModelInfo::check_element).
+void check_endpoints(const ProblemSpec& spec) {
+  const ModelInfo& model = find_model(spec.group, spec.model, kWhere);
+  model.check_element(spec.g0, kWhere, "g0");
+  if (spec.a0.empty()) model.check_element(spec.gT, kWhere, "gT");
 }
 
 }  // namespace
@@ -53,29 +41,21 @@ transported::SolveOptions solve_options(const ProblemSpec& spec) {
 }
 
 SO3Endpoints so3_endpoints(const ProblemSpec& spec) {
-  SO3Endpoints ends{rotation(spec.g0, "g0"), {}};
-  ends.gT = spec.a0.empty() ? rotation(spec.gT, "gT")
-                            : groups::SO3::minimal_rotation(Eigen::Vector3d(spec.a0.data()), Eigen::Vector3d(spec.aT.data()));
-  return ends;
+  check_endpoints(spec);
+  return {element_of<groups::SO3>(spec.g0), element_of<groups::SO3>(final_element(spec))};
 }
 
 nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor) {
-  const Eigen::Vector3d inertia(spec.inertia[0], spec.inertia[1], spec.inertia[2]);
-  if (spec.group == "heisenberg") {
-    const groups::Heisenberg::Element g0(spec.g0[0], spec.g0[1], spec.g0[2]);
-    const groups::Heisenberg::Element gT(spec.gT[0], spec.gT[1], spec.gT[2]);
-    const transported::TransportedProblem<groups::Heisenberg, mechanics::H3Oscillator> problem{mechanics::H3Oscillator(inertia.asDiagonal().toDenseMatrix()),
-                                                               spec.lambda, spec.T, spec.N, g0, gT};
-    return run(spec, problem, monitor);
-  }
-  const auto [g0, gT] = so3_endpoints(spec);
-  const Eigen::Matrix3d inertia_matrix = inertia.asDiagonal();
-  if (spec.model == "oscillator") {
-    return run(spec, transported::TransportedProblem<groups::SO3, mechanics::SO3Oscillator>{mechanics::SO3Oscillator(inertia_matrix), spec.lambda, spec.T, spec.N, g0, gT},
-               monitor);
-  }
-  return run(spec, transported::TransportedProblem<groups::SO3, mechanics::RigidBody>{mechanics::RigidBody(inertia_matrix), spec.lambda, spec.T, spec.N, g0, gT},
-             monitor);
+  check_endpoints(spec);
+  return visit_model(spec.group, spec.model, kWhere, [&]<class Entry>(const Entry&) {
+    using G = typename Entry::Table::Group;
+    const transported::TransportedProblem<G, typename Entry::Lagrangian> problem{
+        make_lagrangian<Entry>(spec.inertia, kWhere), spec.lambda, spec.T, spec.N, element_of<G>(spec.g0),
+        element_of<G>(final_element(spec))};
+    transported::SolveOptions options = solve_options(spec);
+    options.monitor = monitor;
+    return solution_json(spec, transported::solve(problem, options, guess_of<G>(spec)));
+  });
 }
 
 }  // namespace cartan::cli

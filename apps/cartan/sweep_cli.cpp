@@ -103,7 +103,7 @@ Command add_sweep_command(CLI::App& tool) {
                     "grid: START:STOP:COUNT, COUNT evenly spaced lambdas from START to STOP (after --lambdas)");
   sweep->add_option("--aT-list", grid.aT_list, "grid (so3, with --a0): final directions \"x,y,z;x,y,z;...\"");
   sweep->add_option("--gT-list", grid.gT_list,
-                    "grid: final elements \"a,b,c;a,b,c;...\" (heisenberg) or 9 numbers row-major each (so3)");
+                    "grid: final elements separated by \";\", each written as --gT (heisenberg: \"a,b,c;a,b,c\"; so3, se2: 9 numbers row-major; se3: 16)");
   sweep->add_option("--grid", grid.grid_file,
                     "JSON file: an array of objects of problem keys, each overriding the base problem (instead of the "
                     "grid flags)");

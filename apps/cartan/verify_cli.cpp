@@ -48,7 +48,7 @@ int run_verify(const VerifyFlags& flags) {
     std::cout << flags.file << ": status " << quote_input(status) << " (not converged)\n" << report.text();
   } else {
     const ResultFile result = read_result(j);
-    std::cout << flags.file << ": " << result.group << " " << result.model << ", lambda = " << result.lambda
+    std::cout << flags.file << ": " << result.problem.group << " " << result.problem.model << ", lambda = " << result.problem.lambda
               << ", method " << result.method << " (order " << result.order << "), " << result.t.size()
               << " samples, status " << result.status << "\n"
               << report.text();

@@ -1,21 +1,27 @@
 #include "verify_command.hpp"
 
-#include "cartan/mechanics/heisenberg_oscillator.hpp"
-#include "cartan/mechanics/rigid_body.hpp"
+#include "model_table.hpp"
 
 namespace cartan::cli {
 
 namespace {
 
+constexpr std::string_view kWhere = "cartan verify";
+
+/// A row of numbers as the group element it writes (not projected: the checks see the file's data).
 template <groups::LieGroup G>
 groups::ElementOf<G> element(const Eigen::VectorXd& x) {
-  if constexpr (std::is_same_v<G, groups::SO3>) {
-    Eigen::Matrix3d m;
-    for (int i = 0; i < 9; ++i) m(i / 3, i % 3) = x[i];
-    return m;
-  } else {
+  if constexpr (std::is_same_v<G, groups::Heisenberg>) {
     return groups::ElementOf<G>(x);
+  } else {
+    constexpr int size = groups::ElementOf<G>::RowsAtCompileTime;
+    return Eigen::Map<const Eigen::Matrix<double, size, size, Eigen::RowMajor>>(x.data());
   }
+}
+
+template <groups::LieGroup G>
+groups::ElementOf<G> element(const std::vector<double>& x) {
+  return element<G>(Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()))));
 }
 
 template <groups::LieGroup G>
@@ -24,18 +30,12 @@ transported::TransportedTrajectory<G> trajectory(const ResultFile& r) {
   x.reserve(static_cast<std::size_t>(r.t.size()));
   for (Eigen::Index k = 0; k < r.t.size(); ++k) {
     x.t.push_back(r.t[k]);
-    x.g.push_back(element<G>(r.g.row(k).transpose()));
+    x.g.push_back(element<G>(Eigen::VectorXd(r.g.row(k).transpose())));
     x.v.push_back(r.v.row(k).transpose());
     x.mu.push_back(r.mu.row(k).transpose());
     x.xi.push_back(r.xi.row(k).transpose());
   }
   return x;
-}
-
-template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-verify::Report run_checks(const ResultFile& r, const L& lagrangian) {
-  const transported::TransportedProblem<G, L> problem{lagrangian, r.lambda, r.T, r.N, element<G>(r.g0), element<G>(r.gT)};
-  return verify::verify_trajectory(problem, trajectory<G>(r), r.order, r.tol, parse_enum<Status>(r.status));
 }
 
 }  // namespace
@@ -51,10 +51,13 @@ nlohmann::json report_json(const verify::Report& report) {
 }
 
 verify::Report verify(const ResultFile& r) {
-  const Eigen::Matrix3d inertia = r.inertia.asDiagonal();
-  if (r.group == "heisenberg") return run_checks<groups::Heisenberg>(r, mechanics::H3Oscillator(inertia));
-  if (r.model == "oscillator") return run_checks<groups::SO3>(r, mechanics::SO3Oscillator(inertia));
-  return run_checks<groups::SO3>(r, mechanics::RigidBody(inertia));
+  const ProblemSpec& p = r.problem;
+  return visit_model(p.group, p.model, kWhere, [&]<class Entry>(const Entry&) {
+    using G = typename Entry::Table::Group;
+    const transported::TransportedProblem<G, typename Entry::Lagrangian> problem{
+        make_lagrangian<Entry>(p.inertia, kWhere), p.lambda, p.T, p.N, element<G>(p.g0), element<G>(p.gT)};
+    return verify::verify_trajectory(problem, trajectory<G>(r), r.order, p.tol, parse_enum<Status>(r.status));
+  });
 }
 
 }  // namespace cartan::cli

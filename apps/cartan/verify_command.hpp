@@ -9,9 +9,9 @@
 
 namespace cartan::cli {
 
-/// Runs every check on a validated result (a status other than converged adds the failing
-/// `converged` check). Throws std::invalid_argument when the file's boundary data or inertia are
-/// rejected by the models.
+/// Runs every check on a validated result for its model (visit_model, model_table.hpp); a status
+/// other than converged adds the failing `converged` check. Throws std::invalid_argument when the
+/// file's boundary data or inertia are rejected by the models.
 verify::Report verify(const ResultFile& result);
 
 /// {"verdict", "resolution", "order", "amplification", "checks": [{name, figure, threshold,

@@ -225,7 +225,8 @@ def test_bad_files_exit_2(tmp_path, content, needle):
     (lambda d: d["v"].pop(), "v = (an array of 200 entries) must have 201 rows"),
     (lambda d: d["t"].__setitem__(5, d["t"][4]), "t[5]"),
     (lambda d: d.update(inertia=[2, -3, 4]), "inertia"),
-    (lambda d: d.update(group="se3"), "group = \"se3\" is not one of"),
+    (lambda d: d.update(group="se9"), "group = \"se9\" is not one of: so3, heisenberg, se2, se3"),
+    (lambda d: d.update(group="se3"), "model = \"free-rigid-body\" is not one of: free-body"),
     (lambda d: d.update(T=-1), "T = -1 must be positive"),
     (lambda d: d.update(status="done"), "status = \"done\" is not one of"),
 ])

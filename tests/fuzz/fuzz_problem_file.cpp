@@ -1,5 +1,6 @@
 // libFuzzer target: the bytes of a `cartan solve --problem` file through the CLI's own path,
-// parse_json -> apply_json -> validate -> the boundary data (so3_endpoints), without the solver.
+// parse_json -> apply_json -> validate -> the model and the boundary data (visit_model,
+// so3_endpoints), without the solver.
 // Expected rejections are std::invalid_argument; any other exception escapes and is reported by
 // libFuzzer as a crash, as are sanitizer findings, leaks, timeouts and huge allocations.
 // A validated spec must satisfy the invariants checked below (oracle for silent wrong answers).
@@ -11,6 +12,7 @@
 #include <string>
 
 #include "json_io.hpp"
+#include "model_table.hpp"
 #include "problem_spec.hpp"
 #include "solve_command.hpp"
 
@@ -26,11 +28,24 @@ void require(bool condition, const char* what) {
 /// What validate() promises and the boundary data must deliver for a spec it accepted.
 void check_accepted(cartan::cli::ProblemSpec& spec) {
   require(spec.N >= 1 && std::isfinite(spec.T) && spec.T > 0 && spec.tol > 0, "validated sizes");
-  require(spec.inertia.size() == 3, "inertia has 3 entries");
-  if (spec.group != "so3") {
-    require(spec.g0.size() == 3 && spec.gT.size() == 3, "heisenberg endpoints have 3 coordinates");
-    return;
-  }
+  const cartan::cli::ModelInfo& model = cartan::cli::find_model(spec.group, spec.model, "fuzz");
+  const auto n = static_cast<std::size_t>(model.dim);
+  require(spec.inertia.size() == n || spec.inertia.size() == n * n, "inertia has n or n^2 entries");
+  require(spec.g0.size() == model.element_size, "g0 has the element's size");
+  require(!spec.a0.empty() || spec.gT.size() == model.element_size, "gT has the element's size");
+  // Group membership is checked by solve (as it does here; a rejection is expected), then the
+  // model accepts the validated inertia and the elements are finite.
+  model.check_element(spec.g0, "fuzz", "g0");
+  model.check_element(cartan::cli::final_element(spec), "fuzz", "gT");
+  cartan::cli::visit_model(spec.group, spec.model, "fuzz", [&]<class Entry>(const Entry&) {
+    using G = typename Entry::Table::Group;
+    (void)cartan::cli::make_lagrangian<Entry>(spec.inertia, "fuzz");
+    for (const auto& x : {spec.g0, cartan::cli::final_element(spec)}) {
+      require(cartan::cli::element_of<G>(x).allFinite(), "element is finite");
+    }
+    return 0;
+  });
+  if (spec.group != "so3") return;
   const auto ends = cartan::cli::so3_endpoints(spec);
   for (const auto* g : {&ends.g0, &ends.gT}) {
     require(g->allFinite(), "rotation is finite");

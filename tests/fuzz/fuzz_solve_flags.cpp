@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "json_io.hpp"
 #include "problem_spec.hpp"
 
 namespace {

@@ -27,12 +27,12 @@ json valid_result() {
 
 TEST(ResultReader, ReadsAValidDocument) {
   const ResultFile r = read_result(valid_result());
-  EXPECT_EQ(r.group, "so3");
+  EXPECT_EQ(r.problem.group, "so3");
   EXPECT_EQ(r.t.size(), 3);
   EXPECT_EQ(r.g.rows(), 3);
   EXPECT_EQ(r.g.cols(), 9);
   EXPECT_EQ(r.mu(2, 2), 4);
-  EXPECT_EQ(r.gT[1], -1);
+  EXPECT_EQ(r.problem.gT[1], -1);
 }
 
 struct BadCase {
@@ -58,7 +58,7 @@ const BadCase kBadCases[] = {
     {"missing tol", [] { return without("tol"); }, "tol = (missing)"},
     {"missing xi", [] { return without("xi"); }, "xi = (missing)"},
     {"status not a string", [] { return with("status", 3); }, "status = 3 must be a string"},
-    {"unknown group", [] { return with("group", "se3"); }, "group = \"se3\" is not one of"},
+    {"unknown group", [] { return with("group", "se4"); }, "group = \"se4\" is not one of: so3, heisenberg, se2, se3"},
     {"model of another group", [] { json j = with("group", "heisenberg"); return j; }, "model = \"free-rigid-body\""},
     {"unknown method", [] { return with("method", "magic"); }, "method = \"magic\""},
     {"order 3", [] { return with("order", 3); }, "order = 3 must be 1, 2 or 4"},
@@ -68,9 +68,11 @@ const BadCase kBadCases[] = {
     {"N zero", [] { return with("N", 0); }, "N = 0 must be at least 1"},
     {"N huge", [] { return with("N", 1e300); }, "is out of range"},
     {"tol zero", [] { return with("tol", 0); }, "tol = 0 must be positive"},
-    {"inertia short", [] { return with("inertia", {2, 3}); }, "inertia = (an array of 2 entries)"},
+    {"inertia short", [] { return with("inertia", {2, 3}); }, "inertia = 2,3 must have 3 or 9 numbers"},
     {"inertia negative", [] { return with("inertia", {2, -3, 4}); }, "is not positive definite"},
-    {"inertia nested", [] { return with("inertia", {{2}, 3, 4}); }, "inertia[0] = (an array of 1 entries)"},
+    {"inertia ragged", [] { return with("inertia", {{2}, 3, 4}); }, "inertia[1] = 3 must be a row of 1 numbers"},
+    {"inertia asymmetric", [] { return with("inertia", {{2, 0, 0}, {0.5, 3, 0}, {0, 0, 4}}); }, "is not symmetric"},
+    {"inertia an object", [] { return with("inertia", json::object({{"a", 1}})); }, "inertia = (an object with 1 keys)"},
     {"g0 not a rotation", [] { return with("g0", {1, 0, 0, 0, 1, 0, 0, 0, 2}); }, "g0 ="},
     {"gT a reflection", [] { return with("gT", {-1, 0, 0, 0, 1, 0, 0, 0, 1}); }, "gT ="},
     {"t too short", [] { return with("t", {0.0}); }, "t = (an array of 1 entries) must be a list of at least 2"},
@@ -82,7 +84,7 @@ const BadCase kBadCases[] = {
     {"g row not a rotation", [] { json j = valid_result(); j["g"][1][8] = 2; return j; }, "g[1] ="},
     {"g row short", [] { json j = valid_result(); j["g"][2] = {1, 0, 0}; return j; }, "g[2] = (an array of 3 entries)"},
     {"v row null", [] { json j = valid_result(); j["v"][1][2] = nullptr; return j; }, "v[1][2] = (null) must be a number"},
-    {"mu an object", [] { return with("mu", json::object()); }, "mu = (an object)"},
+    {"mu an object", [] { return with("mu", json::object()); }, "mu = (an object with 0 keys)"},
     {"xi row bool", [] { json j = valid_result(); j["xi"][0] = true; return j; }, "xi[0] = (boolean)"},
     {"long string", [] { return with("group", std::string(1000, 'x')); }, "group = \"xxxxxxxxxx"},
 };
@@ -113,6 +115,34 @@ TEST(ResultReader, ReadsHeisenbergResults) {
   EXPECT_EQ(r.g.cols(), 3);
   j["g"][1] = {0, 0, 0, 0, 0, 0, 0, 0, 0};  // so3 width in a heisenberg file
   expect_invalid([&] { read_result(j); }, "g[1] = (an array of 9 entries) must be a list of 3 numbers");
+}
+
+TEST(ResultReader, ReadsSE2AndSE3ResultsWithAFullInertia) {
+  json j = valid_result();
+  j["group"] = "se2";
+  j["model"] = "free-body";
+  j["inertia"] = {{1, 0.1, 0}, {0.1, 1, 0}, {0, 0, 0.5}};
+  const json motion = {0, -1, 2, 1, 0, 3, 0, 0, 1};
+  j["gT"] = motion;
+  j["g"][2] = motion;
+  EXPECT_EQ(read_result(j).problem.inertia.size(), 9u);
+  j["g"][1] = {1, 0, 0, 0, 1, 0, 0, 0.5, 1};  // bottom row not [0 0 1]
+  expect_invalid([&] { read_result(j); }, "g[1] = 1,0,0,0,1,0,0,0.5,1 has bottom row 0,0.5,1");
+
+  json k = valid_result();
+  k["group"] = "se3";
+  k["model"] = "free-body";
+  k["inertia"] = {1, 1, 1, 2, 3, 4};
+  const json identity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  k["g0"] = k["gT"] = identity;
+  k["g"] = {identity, identity, identity};
+  const json zero6 = {0, 0, 0, 0, 0, 0};
+  k["v"] = k["mu"] = k["xi"] = {zero6, zero6, zero6};
+  const ResultFile r = read_result(k);
+  EXPECT_EQ(r.g.cols(), 16);
+  EXPECT_EQ(r.v.cols(), 6);
+  k["v"][0] = {0, 0, 0};  // so3 width in an se3 file
+  expect_invalid([&] { read_result(k); }, "v[0] = (an array of 3 entries) must be a list of 6 numbers");
 }
 
 // A deeply nested value where a number belongs is described, not dumped (no recursion).

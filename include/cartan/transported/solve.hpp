@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "cartan/transported/collocation_solution.hpp"
+#include "cartan/mechanics/free_body.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
 #include "cartan/mechanics/natural_system.hpp"
 #include "cartan/mechanics/rigid_body.hpp"
@@ -327,5 +328,9 @@ extern template TransportedSolution<groups::SO3> solve(const TransportedProblem<
                                                const SolveGuess<groups::SO3>&);
 extern template TransportedSolution<groups::Heisenberg> solve(const TransportedProblem<groups::Heisenberg, mechanics::H3Oscillator>&,
                                                       const SolveOptions&, const SolveGuess<groups::Heisenberg>&);
+extern template TransportedSolution<groups::SE2> solve(const TransportedProblem<groups::SE2, mechanics::SE2FreeBody>&, const SolveOptions&,
+                                               const SolveGuess<groups::SE2>&);
+extern template TransportedSolution<groups::SE3> solve(const TransportedProblem<groups::SE3, mechanics::SE3FreeBody>&, const SolveOptions&,
+                                               const SolveGuess<groups::SE3>&);
 
 }  // namespace cartan::transported
