@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """The default solver (`method="auto"`, include/cartan/transported/solve.hpp) on a varied set of
 transported-velocity problems: inertias, horizons from 1e-4 to 100, lambda from -1 to 2,
-near-antipodal endpoints, SO(3), H3, SE(2) and SE(3) (the last two with Lagrangians written in
-Python). For every problem the default strategy is run; where it fails, every single method is
-tried, so that the table says whether *some* cartan method solves it. Prints a Markdown table and
+near-antipodal endpoints, full inertias, SO(3), H3, SE(2) and SE(3) (built-in free bodies, and
+two kinetic energies written in Python). For every problem the default strategy is run and its
+result checked by cartan.verify (a converged result that verify fails counts as a failure); where
+it fails, every single method is tried, so that the table says whether *some* cartan method
+solves it. CPU s is the process's CPU time of the default solve (time.process_time). Prints a Markdown table and
 the success rates (README "Default solver").
 
     PYTHONPATH=build/python /usr/bin/python3 bench/strategy.py [--only NAME]
@@ -49,6 +51,10 @@ def rotation(axis, angle):
 FREE_BODY_GT = cartan.SO3.minimal_rotation([-1, -1, -1], [0.9, 1, 1])
 OSCILLATOR_GT = cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1])
 I234 = [2.0, 3.0, 4.0]
+_R = cartan.SO3.exp([0.3, -0.4, 0.5])
+FULL_INERTIA = _R @ np.diag([1.0, 2.0, 4.0]) @ _R.T
+SE2_INERTIA, SE2_GT = [1.0, 2.0, 0.5], cartan.SE2.exp([1.0, 0.5, 2.0])
+SE3_INERTIA, SE3_GT = [1.0, 2.0, 3.0, 1.0, 1.0, 1.0], cartan.SE3.exp([0.5, 0.2, 1.0, 1.0, 0.0, 0.5])
 
 # name, lagrangian, lambda, T, N, gT, tol
 PROBLEMS = [
@@ -73,16 +79,29 @@ PROBLEMS = [
     ("h3 oscillator, lambda 0.7, T = 3", cartan.H3Oscillator(), 0.7, 3, 300, [1, 0.5, 0.8], 1e-8),
     ("h3 oscillator, lambda -1, T = 1", cartan.H3Oscillator(), -1.0, 1, 200, [0.5, -1, 2], 1e-10),
     ("h3 oscillator, lambda 2, T = 2", cartan.H3Oscillator(), 2.0, 2, 400, [1, 0.5, 0.8], 1e-8),
-    ("se2 kinetic, lambda -1/2", PyKinetic(cartan.SE2, [1.0, 2.0, 0.5]), -0.5, 2, 200,
-     cartan.SE2.exp([1.0, 0.5, 2.0]), 1e-10),
-    ("se2 kinetic, lambda 2", PyKinetic(cartan.SE2, [1.0, 2.0, 0.5]), 2.0, 2, 200, cartan.SE2.exp([1.0, 0.5, 2.0]),
+    ("h3 oscillator, lambda 1/2, T = 5", cartan.H3Oscillator(), 0.5, 5, 500, [1, 0.5, 0.8], 1e-8),
+    ("so3 free body, full inertia R diag(1,2,4) R^T, T = 3", cartan.RigidBody(FULL_INERTIA), 0.5, 3, 300,
+     FREE_BODY_GT, 1e-10),
+    ("so3 free body, inertia 1,1,1.01, T = 10", cartan.RigidBody([1.0, 1.0, 1.01]), 0.5, 10, 500, FREE_BODY_GT,
      1e-10),
-    ("se2 kinetic, lambda 1/2, T = 10", PyKinetic(cartan.SE2, [1.0, 2.0, 0.5]), 0.5, 10, 500,
+    ("so3 free body, inertia 0.1,1,10, T = 5", cartan.RigidBody([0.1, 1.0, 10.0]), 0.5, 5, 500, FREE_BODY_GT,
+     1e-10),
+    ("so3 oscillator, T = 30", cartan.SO3Oscillator(I234), 0.5, 30, 2000, OSCILLATOR_GT, 1e-8),
+    ("se2 free body, lambda 0", cartan.SE2FreeBody(SE2_INERTIA), 0.0, 2, 200, SE2_GT, 1e-10),
+    ("se2 free body, lambda -1/2", cartan.SE2FreeBody(SE2_INERTIA), -0.5, 2, 200, SE2_GT, 1e-10),
+    ("se2 free body, lambda 2", cartan.SE2FreeBody(SE2_INERTIA), 2.0, 2, 200, SE2_GT, 1e-10),
+    ("se2 free body, lambda 1/2, T = 10", cartan.SE2FreeBody(SE2_INERTIA), 0.5, 10, 500,
      cartan.SE2.exp([3.0, -1.0, 3.0]), 1e-10),
-    ("se3 kinetic, lambda 1/2", PyKinetic(cartan.SE3, [1.0, 2.0, 3.0, 1.0, 1.0, 1.0]), 0.5, 2, 200,
-     cartan.SE3.exp([0.5, 0.2, 1.0, 1.0, 0.0, 0.5]), 1e-10),
-    ("se3 kinetic, lambda 3/2, T = 5", PyKinetic(cartan.SE3, [1.0, 2.0, 3.0, 1.0, 1.0, 1.0]), 1.5, 5, 500,
-     cartan.SE3.exp([0.5, 0.2, 1.0, 1.0, 0.0, 0.5]), 1e-10),
+    ("se2 free body, T = 1e-3", cartan.SE2FreeBody(SE2_INERTIA), 0.5, 1e-3, 100, cartan.SE2.exp([1e-3, 5e-4, 2e-3]),
+     1e-10),
+    ("se2 kinetic in Python, lambda 2", PyKinetic(cartan.SE2, SE2_INERTIA), 2.0, 2, 200, SE2_GT, 1e-10),
+    ("se3 free body, lambda 1/2", cartan.SE3FreeBody(SE3_INERTIA), 0.5, 2, 200, SE3_GT, 1e-10),
+    ("se3 free body, lambda 0", cartan.SE3FreeBody([1.0, 1.0, 1.0, 2.0, 3.0, 4.0]), 0.0, 2, 200,
+     cartan.SE3.exp([0.5, -0.3, 0.8, 0.9, -0.7, 0.4]), 1e-10),
+    ("se3 free body, lambda 3/2, T = 5", cartan.SE3FreeBody(SE3_INERTIA), 1.5, 5, 500, SE3_GT, 1e-10),
+    ("se3 free body, lambda 2, T = 10", cartan.SE3FreeBody([1.0, 1.0, 1.0, 2.0, 3.0, 4.0]), 2.0, 10, 500,
+     cartan.SE3.exp([0.5, -0.3, 0.8, 0.9, -0.7, 0.4]), 1e-10),
+    ("se3 kinetic in Python, lambda 3/2, T = 5", PyKinetic(cartan.SE3, SE3_INERTIA), 1.5, 5, 500, SE3_GT, 1e-10),
 ]
 
 ALTERNATIVES = [
@@ -91,6 +110,7 @@ ALTERNATIVES = [
     dict(method="shooting", continuation="lambda"),
     dict(method="multiple-shooting"),
     dict(method="two-level"),
+    dict(method="collocation"),
     dict(method="collocation", continuation="T"),
 ]
 
@@ -118,6 +138,9 @@ def main():
             continue
         r, status, cpu = run(lagrangian, lam, T, N, gT, tol)
         others = []
+        if r is not None and r.success and not cartan.verify(r, lagrangian).passed:
+            status = "converged, but cartan.verify fails it"
+            r = None
         if r is not None and r.success:
             solved_default += 1
             solvable += 1

@@ -14,9 +14,10 @@ Connections (paper §3, §5)
     ``G.cartan_schouten(lam, side="left")`` and ``G.Connection(side, table)``, with ``nabla,
     torsion, curvature, transport, transport_sampled``; ``G.cartan_schouten_transport``.
 Models
-    Built in: ``RigidBody, SO3Oscillator, SpatialRigidBody, H3Oscillator`` and Hamiltonians
-    ``RigidBodyHamiltonian, SO3OscillatorHamiltonian, SpatialRigidBodyHamiltonian,
-    H3OscillatorHamiltonian``. Any Python object with the methods ``value(t, g, v),
+    Built in: ``RigidBody, SO3Oscillator, SpatialRigidBody, H3Oscillator, SE2FreeBody,
+    SE3FreeBody`` and Hamiltonians ``RigidBodyHamiltonian, SO3OscillatorHamiltonian,
+    SpatialRigidBodyHamiltonian, H3OscillatorHamiltonian, SE2FreeBodyHamiltonian,
+    SE3FreeBodyHamiltonian``. Any Python object with the methods ``value(t, g, v),
     momentum(t, g, v), group_gradient(t, g, v), velocity(t, g, mu)`` (and a ``group``
     attribute, or pass ``group=``) is a Lagrangian; see :func:`solve`.
 Integrators
@@ -49,6 +50,10 @@ from ._cartan import (  # noqa: F401  (re-exported)
     Heisenberg,
     RigidBody,
     RigidBodyHamiltonian,
+    SE2FreeBody,
+    SE2FreeBodyHamiltonian,
+    SE3FreeBody,
+    SE3FreeBodyHamiltonian,
     SO3Oscillator,
     SO3OscillatorHamiltonian,
     SpatialRigidBody,
@@ -63,8 +68,9 @@ STATUSES = tuple(_cartan.statuses)
 
 __all__ = [
     "SO3", "Heisenberg", "SE3", "SE2", "GROUPS", "METHODS", "STATUSES",
-    "RigidBody", "SO3Oscillator", "SpatialRigidBody", "H3Oscillator",
+    "RigidBody", "SO3Oscillator", "SpatialRigidBody", "H3Oscillator", "SE2FreeBody", "SE3FreeBody",
     "RigidBodyHamiltonian", "SO3OscillatorHamiltonian", "SpatialRigidBodyHamiltonian", "H3OscillatorHamiltonian",
+    "SE2FreeBodyHamiltonian", "SE3FreeBodyHamiltonian",
     "Trajectory", "SolveResult", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve",
     "VerifyReport", "verify",
     "BvpResult", "BvpSolution", "solve_bvp",

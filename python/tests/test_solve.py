@@ -285,6 +285,29 @@ def test_python_lagrangian_on_other_groups_reproduces_the_classical_limit(group)
     assert errors[1] < 1e-2 and 1.8 < order < 2.3
 
 
+@pytest.mark.parametrize("group, model", [(cartan.SE2, cartan.SE2FreeBody), (cartan.SE3, cartan.SE3FreeBody)],
+                         ids=["SE2", "SE3"])
+def test_built_in_free_bodies_match_a_python_kinetic_energy(group, model):
+    # The C++ free body and the same kinetic energy written in Python solve the same discrete
+    # problem: both stop at |r| <= 1e-12, so v0 agrees to the problem's conditioning times that.
+    inertia = np.linspace(1.0, 2.5, group.dim)
+    gT = group.exp(np.linspace(0.9, -0.7, group.dim))
+    for lam in (0.0, 0.5, 1.5):
+        built_in = cartan.solve(model(inertia), lam=lam, T=1.5, N=60, gT=gT, order=2, tol=1e-12)
+        written = cartan.solve(PyKineticEnergy(group, inertia), lam=lam, T=1.5, N=60, gT=gT, order=2, tol=1e-12)
+        assert built_in.success and written.success, (built_in.message, written.message)
+        assert np.abs(built_in.v0 - written.v0).max() < 1e-8, lam
+        assert cartan.verify(built_in, model(inertia)).passed
+    # A full symmetric inertia (a rotated diagonal) is accepted; asymmetric ones are refused.
+    q, _ = np.linalg.qr(np.arange(group.dim ** 2, dtype=float).reshape(group.dim, group.dim) + np.eye(group.dim))
+    full = q @ np.diag(inertia) @ q.T
+    assert cartan.solve(model(full), lam=0.5, T=1.5, N=60, gT=gT, order=2).success
+    asymmetric = full.copy()
+    asymmetric[0, 1] += 1e-3
+    with pytest.raises(ValueError, match="symmetric"):
+        model(asymmetric)
+
+
 def test_failed_strategy_never_returns_another_problems_trajectory():
     # Every method capped at 2 iterations fails the T = 12 oscillator; whatever comes back is of T = 12.
     gT = cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1])

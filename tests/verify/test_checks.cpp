@@ -148,6 +148,26 @@ TEST(VerifyReport, ExactSolutionPassesForEveryLambda) {
   }
 }
 
+// The boundary check measures xi_N in the unit the solvers stop on: shooting accepts
+// |xi_N| / xi_scale <= tol, so a converged result may have |xi_N| > tol where xi_scale > 1 (here
+// xi_scale = T |v| |I v| = 2 * 0.7 * 1.4 = 1.96). Never looser than absolute (unit max(1, .)).
+TEST(VerifyReport, BoundaryCheckMeasuresXiInTheSolversUnit) {
+  const Eigen::Matrix3d inertia = 2 * Eigen::Matrix3d::Identity();
+  auto x = rotation_about(kAxis, 2.0, 50, [](double t) { return 0.7 * t; }, [](double) { return 0.7; }, inertia);
+  const transported::TransportedProblem<groups::SO3, mechanics::RigidBody> problem{
+      mechanics::RigidBody(inertia), 0.5, 2.0, 50, groups::SO3::identity(), groups::SO3::exp(groups::SO3::Tangent(1.4 * kAxis))};
+  const double scale = transported::xi_scale(problem);
+  ASSERT_NEAR(scale, 1.96, 1e-12);
+  auto boundary = [&](double xi_n) {
+    x.xi.back() = xi_n * kAxis;
+    const verify::Report report = verify::verify_trajectory(problem, x, 1, 1e-10);
+    return report.checks.front();
+  };
+  EXPECT_NEAR(boundary(1.5e-10).figure, 1.5e-10 / scale, 1e-24);
+  EXPECT_TRUE(boundary(1.5e-10).passed());   // 1.5e-10 / 1.96 = 7.7e-11 <= 1e-10
+  EXPECT_FALSE(boundary(2.5e-10).passed());  // 1.3e-10 > 1e-10
+}
+
 // A result that did not converge fails with a `converged` check whatever its data; without data
 // the report says they were not checked.
 TEST(VerifyReport, FailedResultsNeverPass) {

@@ -87,11 +87,11 @@ class TrajectoryChecks {
   std::size_t size() const { return x_.t.size(); }
   const transported::TransportedTrajectory<G>& trajectory() const { return x_; }
 
-  /// max(|log(g0^{-1} g_0)|, |log(gT^{-1} g_N)|, |xi_N|): the boundary conditions, absolute
-  /// (as the solvers' tolerances are).
-  double boundary_error(const groups::ElementOf<G>& g0, const groups::ElementOf<G>& gT) const {
+  /// max(|log(g0^{-1} g_0)|, |log(gT^{-1} g_N)|, |xi_N| / xi_unit): the boundary conditions in
+  /// the units of the solvers' tolerances (radians; xi relative to xi_unit, see verify_trajectory).
+  double boundary_error(const groups::ElementOf<G>& g0, const groups::ElementOf<G>& gT, double xi_unit = 1.0) const {
     return std::max({groups::log_between<G>(g0, x_.g.front()).norm(),
-                     groups::log_between<G>(gT, x_.g.back()).norm(), x_.xi.back().norm()});
+                     groups::log_between<G>(gT, x_.g.back()).norm(), x_.xi.back().norm() / xi_unit});
   }
 
   /// max_k |mu_k - dl/dv(g_k, v_k)| / max_k (|mu_k| + |dl/dv|): the Legendre relation, which
