@@ -173,6 +173,12 @@ TEST(TransportedScheme, NonFiniteCallbackValuesAreNamedAtOnce) {
     expect_invalid([&] { transported::solve_shooting(problem); }, "lagrangian." + name + " returned a non-finite value at t = ");
     expect_invalid([&] { transported::solve_continuation_in_T(problem); }, "lagrangian." + name + " returned a non-finite");
   }
+  // Overflow on a diverging iterate (arguments beyond 1e100) is no defect of the model.
+  const Eigen::Vector3d huge(1e200, 0, 0), finite(1, 2, 3), overflowed(std::numeric_limits<double>::infinity(), 0, 0);
+  const Eigen::Matrix3d g = Eigen::Matrix3d::Identity();
+  EXPECT_EQ(mechanics::require_finite_result(overflowed, "lagrangian.momentum", 0.0, g, huge), overflowed);
+  EXPECT_THROW(mechanics::require_finite_result(overflowed, "lagrangian.momentum", 0.0, g, finite), ModelError);
+  EXPECT_EQ(mechanics::require_finite_result(finite, "lagrangian.momentum", 0.0, g, finite), finite);
 }
 
 TEST(TransportedScheme, RejectsBadProblems) {
