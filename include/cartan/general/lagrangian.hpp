@@ -1,0 +1,86 @@
+#pragma once
+// Lagrangians l(t, q, v) of the general transported-velocity problem (paper eq:action-conn-dep):
+// q a point of a manifold with a connection, v in R^m the components of the transported velocity
+// in the frame chosen at q0. The interface mirrors mechanics::ReducedLagrangian:
+//   value(t, q, v)           l
+//   momentum(t, q, v)        mu = dl/dv in R^m (the paper's delta_{v^i} l)
+//   velocity(t, q, mu)       the inverse Legendre map
+//   point_gradient(t, q, v)  an ambient covector zeta in R^d with zeta . x = d/de l(t, step(q, e x), v)
+//                            for tangent x (v held fixed): delta_{q^i} l = zeta . e_i(t).
+// Built in: KineticPotential, l = 1/2 v^T A v - V(q).
+
+#include <Eigen/Cholesky>
+#include <concepts>
+#include <functional>
+
+#include "cartan/errors.hpp"
+#include "cartan/manifolds/manifold.hpp"
+
+namespace cartan::general {
+
+template <class L, class M>
+concept ManifoldLagrangian =
+    manifolds::ManifoldWithConnection<M> &&
+    requires(const L& l, double t, const manifolds::PointOf<M>& q, const manifolds::ComponentsOf<M>& v) {
+      { l.value(t, q, v) } -> std::convertible_to<double>;
+      { l.momentum(t, q, v) } -> std::convertible_to<manifolds::ComponentsOf<M>>;
+      { l.velocity(t, q, v) } -> std::convertible_to<manifolds::ComponentsOf<M>>;
+      { l.point_gradient(t, q, v) } -> std::convertible_to<manifolds::VectorOf<M>>;
+    };
+
+/// l = 1/2 v^T A v - V(q) with a constant symmetric positive definite A (the "inertia" or "mass"
+/// in frame components) and an optional potential V with its ambient gradient. Its energy
+/// 1/2 v^T A v + V(q) is conserved along solutions for every connection
+/// (docs/general-connections.md#energy).
+template <manifolds::ManifoldWithConnection M>
+class KineticPotential {
+ public:
+  using Point = manifolds::PointOf<M>;
+  using Vector = manifolds::VectorOf<M>;
+  using Components = manifolds::ComponentsOf<M>;
+  using Inertia = manifolds::ComponentMatrixOf<M>;
+  using Potential = std::function<double(const Point&)>;
+  using PotentialGradient = std::function<Vector(const Point&)>;
+
+  /// Throws std::invalid_argument naming A unless it is finite, symmetric and positive definite,
+  /// or if exactly one of V and its gradient is given.
+  explicit KineticPotential(const Inertia& inertia, Potential potential = {}, PotentialGradient gradient = {})
+      : inertia_(inertia), factor_(inertia), potential_(std::move(potential)), gradient_(std::move(gradient)) {
+    require_finite(inertia, "KineticPotential", "inertia");
+    const double scale = inertia.cwiseAbs().maxCoeff();
+    if (!((inertia - inertia.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale) || factor_.info() != Eigen::Success ||
+        !(factor_.vectorD().minCoeff() > 1e-14 * scale)) {
+      throw_invalid("KineticPotential", "inertia", format_value(inertia), "must be symmetric positive definite");
+    }
+    if (static_cast<bool>(potential_) != static_cast<bool>(gradient_)) {
+      throw_invalid("KineticPotential", "potential", potential_ ? "given" : "absent",
+                    "and its gradient must be given together");
+    }
+  }
+
+  /// V(q) = c . q for points that are vectors (a uniform field: gravity G z on S^2 is c = (0, 0, G)).
+  static KineticPotential with_linear_potential(const Inertia& inertia, const Vector& c) {
+    require_finite(c, "KineticPotential::with_linear_potential", "c");
+    return KineticPotential(inertia, [c](const Point& q) { return c.dot(q); }, [c](const Point&) { return c; });
+  }
+
+  const Inertia& inertia() const { return inertia_; }
+  double potential(const Point& q) const { return potential_ ? potential_(q) : 0.0; }
+
+  double value(double, const Point& q, const Components& v) const { return 0.5 * v.dot(inertia_ * v) - potential(q); }
+  Components momentum(double, const Point&, const Components& v) const { return inertia_ * v; }
+  Components velocity(double, const Point&, const Components& mu) const { return factor_.solve(mu); }
+  Vector point_gradient(double, const Point& q, const Components&) const {
+    return gradient_ ? Vector(-gradient_(q)) : Vector::Zero();
+  }
+  /// 1/2 v^T A v + V(q).
+  double energy(const Point& q, const Components& v) const { return 0.5 * v.dot(inertia_ * v) + potential(q); }
+
+ private:
+  Inertia inertia_;
+  Eigen::LDLT<Inertia> factor_;
+  Potential potential_;
+  PotentialGradient gradient_;
+};
+
+}  // namespace cartan::general

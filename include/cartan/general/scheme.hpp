@@ -1,0 +1,176 @@
+#pragma once
+// The discrete scheme of the general transported-velocity problem (problem.hpp), order 1 and 2.
+// State at node k: q_k, the parallel frame E_k (d x m, columns e_i(t_k)), mu_k, Xi_k, v_k.
+// Rates (problem.hpp, docs/general-connections.md#scheme), with u = E v the represented velocity:
+//   zeta_i = point_gradient . e_i
+//   mu'_i  = zeta_i + mu(T(e_i, u)) + tr(Xi E^+ R(e_i, u) E)       (E^+ the dual frame)
+//   Xi'    = -v mu^T
+// Order 1: explicit Euler in (mu, Xi) and the exact piece for (q, E):
+//   q_{k+1} = step(q_k, h u_k),  E_{k+1} = transport_along_step(q_k, h u_k) E_k.
+// Order 2: Heun's method in Runge–Kutta–Munthe-Kaas form (as transported/scheme.hpp): a predictor
+// Euler step, then the same update with the mean of the rates at the node and the predictor.
+// On a Lie group with the Cartan–Schouten connection these are exactly the paper's equations
+// (disc-grp ... disc-mmt-eqn) with E_k = P_k = Ad(h_k) and xi = C(Xi) (docs/general-connections.md#reduction).
+// Fast path: where nabla T = nabla R = 0, the frame components T_ij^k, R_ijk^l are the same at
+// every node and are computed once at (q0, E0).
+
+#include <array>
+#include <vector>
+
+#include "cartan/general/problem.hpp"
+#include "cartan/mechanics/lagrangian.hpp"
+#include "cartan/transported/scheme.hpp"
+
+namespace cartan::general {
+
+using transported::SchemeOrder;
+
+template <manifolds::ManifoldWithConnection M>
+struct GeneralNode {
+  double t = 0;
+  manifolds::PointOf<M> q;
+  manifolds::FrameOf<M> frame;
+  manifolds::ComponentsOf<M> mu;
+  manifolds::ComponentMatrixOf<M> Xi;
+  manifolds::ComponentsOf<M> v;
+};
+
+/// Every node k = 0..N of a discrete solution.
+template <manifolds::ManifoldWithConnection M>
+struct GeneralTrajectory {
+  std::vector<double> t;
+  std::vector<manifolds::PointOf<M>> q;
+  std::vector<manifolds::FrameOf<M>> frame;
+  std::vector<manifolds::ComponentsOf<M>> v, mu;
+  std::vector<manifolds::ComponentMatrixOf<M>> Xi;
+
+  void push(const GeneralNode<M>& node) {
+    t.push_back(node.t), q.push_back(node.q), frame.push_back(node.frame), v.push_back(node.v);
+    mu.push_back(node.mu), Xi.push_back(node.Xi);
+  }
+};
+
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+class GeneralScheme {
+ public:
+  static constexpr int m = M::kDim;
+  using Node = GeneralNode<M>;
+  using Point = manifolds::PointOf<M>;
+  using Vector = manifolds::VectorOf<M>;
+  using Frame = manifolds::FrameOf<M>;
+  using Components = manifolds::ComponentsOf<M>;
+  using ComponentMatrix = manifolds::ComponentMatrixOf<M>;
+
+  /// Throws std::invalid_argument for an invalid problem or order.
+  GeneralScheme(const GeneralProblem<M, L>& problem, SchemeOrder order)
+      : problem_(problem), order_(order), dt_(problem.step()), frame0_(problem.initial_frame()) {
+    problem.validate();
+    if (order != SchemeOrder::First && order != SchemeOrder::Second) {
+      throw_invalid("GeneralScheme", "order", std::to_string(static_cast<int>(order)), "must be 1 or 2");
+    }
+    if constexpr (manifolds::ParallelTorsionCurvature<M>) {
+      if (problem.manifold.has_parallel_torsion_and_curvature()) {
+        torsion_ = manifolds::torsion_components(problem.manifold, problem.q0, frame0_);
+        curvature_ = manifolds::curvature_components(problem.manifold, problem.q0, frame0_);
+      }
+    }
+  }
+
+  const GeneralProblem<M, L>& problem() const { return problem_; }
+  SchemeOrder order() const { return order_; }
+  bool uses_constant_components() const { return torsion_.has_value(); }
+
+  Components velocity(double t, const Point& q, const Components& mu) const {
+    return mechanics::require_finite_result(Components(problem_.lagrangian.velocity(t, q, mu)), "lagrangian.velocity",
+                                            t, point_coordinates(q), mu);
+  }
+
+  Node initial(const Components& v0, const ComponentMatrix& Xi0) const {
+    Node node;
+    node.q = problem_.q0;
+    node.frame = frame0_;
+    node.v = v0;
+    node.mu = mechanics::require_finite_result(Components(problem_.lagrangian.momentum(0.0, node.q, v0)),
+                                               "lagrangian.momentum", 0.0, point_coordinates(node.q), v0);
+    node.Xi = Xi0;
+    return node;
+  }
+
+  void step(const Node& node, Node& out) const {
+    const Rates r1 = rates(node);
+    if (order_ == SchemeOrder::First) return advance(node, r1, out);
+    Node predictor;
+    advance(node, r1, predictor);
+    const Rates r2 = rates(predictor);
+    advance(node, Rates{Vector((r1.u + r2.u) / 2), Components((r1.dmu + r2.dmu) / 2), ComponentMatrix((r1.dXi + r2.dXi) / 2)},
+            out);
+  }
+
+  /// The terminal residual in the components of tangent_basis(qT): difference(qT, q_N).
+  Components terminal_residual(const Node& last) const {
+    const Frame basis = problem_.manifold.tangent_basis(problem_.qT);
+    return manifolds::dual_frame<M>(basis) * problem_.manifold.difference(problem_.qT, last.q);
+  }
+
+  /// The rate of mu at a node (mu' of problem.hpp), for the checks of the equations.
+  Components momentum_rate(const Node& node) const { return rates(node).dmu; }
+
+ private:
+  struct Rates {
+    Vector u;
+    Components dmu;
+    ComponentMatrix dXi;
+  };
+
+  template <class P>
+  static auto point_coordinates(const P& q) {
+    return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 1>>(q.data(), q.size());
+  }
+
+  Rates rates(const Node& node) const {
+    const M& manifold = problem_.manifold;
+    Rates r;
+    r.u = node.frame * node.v;
+    const Vector gradient = mechanics::require_finite_result(
+        Vector(problem_.lagrangian.point_gradient(node.t, node.q, node.v)), "lagrangian.point_gradient", node.t,
+        point_coordinates(node.q), node.v);
+    r.dmu = node.frame.transpose() * gradient;
+    if (torsion_) {
+      for (int i = 0; i < m; ++i) {
+        double curvature_term = 0;
+        for (int j = 0; j < m; ++j) curvature_term += node.v[j] * ((*curvature_)[i][j] * node.Xi).trace();
+        r.dmu[i] += node.mu.dot((*torsion_)[i] * node.v) + curvature_term;
+      }
+    } else {
+      const auto dual = manifolds::dual_frame<M>(node.frame);
+      const Vector mu_ambient = dual.transpose() * node.mu;
+      const Eigen::Matrix<double, M::kAmbientDim, M::kAmbientDim> xi_ambient = node.frame * node.Xi * dual;
+      for (int i = 0; i < m; ++i) {
+        const Vector e = node.frame.col(i);
+        r.dmu[i] += mu_ambient.dot(manifolds::torsion(manifold, node.q, e, r.u)) +
+                    (xi_ambient * manifolds::curvature_operator(manifold, node.q, e, r.u)).trace();
+      }
+    }
+    r.dXi = -node.v * node.mu.transpose();
+    return r;
+  }
+
+  void advance(const Node& node, const Rates& r, Node& out) const {
+    const Vector hu = dt_ * r.u;
+    out.t = node.t + dt_;
+    out.q = problem_.manifold.step(node.q, hu);
+    out.frame = problem_.manifold.transport_along_step(node.q, hu) * node.frame;
+    out.mu = node.mu + dt_ * r.dmu;
+    out.Xi = node.Xi + dt_ * r.dXi;
+    out.v = velocity(out.t, out.q, out.mu);
+  }
+
+  GeneralProblem<M, L> problem_;
+  SchemeOrder order_;
+  double dt_;
+  Frame frame0_;
+  std::optional<std::array<ComponentMatrix, m>> torsion_;
+  std::optional<std::array<std::array<ComponentMatrix, m>, m>> curvature_;
+};
+
+}  // namespace cartan::general

@@ -1,0 +1,166 @@
+#pragma once
+// Shooting for the general problem (problem.hpp): solve for (v0, Xi0) with the terminal conditions
+// (difference(qT, q_N), Xi_N) = 0 by the library's Levenberg–Marquardt solver, with the
+// dimensionless scaling of transported/shooting.hpp: unknowns (T v0, Xi0 / s), residual
+// (r_q, Xi_N / s), s = T |v_ref| |mu_ref| with v_ref the geodesic-guess velocity. The Jacobian is
+// by forward differences (1 + m + m^2 sweeps).
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+#include "cartan/general/scheme.hpp"
+#include "cartan/numerics/nonlinear_solve.hpp"
+#include "cartan/status.hpp"
+#include "cartan/transported/method.hpp"
+
+namespace cartan::general {
+
+template <manifolds::ManifoldWithConnection M>
+struct GeneralSolution {
+  Status status = Status::NotConverged;
+  std::string message;
+  transported::Method method = transported::Method::Shooting;
+  std::string branch;
+  int order = 1;
+  /// Every node of the requested problem's discrete solution (at a failure: of the best iterate).
+  GeneralTrajectory<M> trajectory;
+  manifolds::ComponentsOf<M> v0 = manifolds::ComponentsOf<M>::Zero();
+  manifolds::ComponentMatrixOf<M> Xi0 = manifolds::ComponentMatrixOf<M>::Zero();
+  double terminal_error = 0;  ///< |difference(qT, q_N)|
+  double xi_terminal = 0;     ///< |Xi_N|
+  int iterations = 0;
+  int sweeps = 0;
+  std::vector<double> residual_history;
+  double solve_time_s = 0;
+
+  bool converged() const { return status == Status::Converged; }
+};
+
+struct GeneralShootingOptions {
+  SchemeOrder order = SchemeOrder::First;
+  double tolerance = 1e-10;  ///< on |(r_q, Xi_N / s)| (dimensionless, as transported shooting)
+  int max_iterations = 100;
+
+  void validate() const {
+    require_finite(tolerance, "GeneralShootingOptions", "tolerance");
+    if (!(tolerance > 0)) throw_invalid("GeneralShootingOptions", "tolerance", format_value(tolerance), "must be positive");
+    if (max_iterations < 1) {
+      throw_invalid("GeneralShootingOptions", "max_iterations", std::to_string(max_iterations), "must be at least 1");
+    }
+  }
+};
+
+/// The geodesic guess: difference(q0, qT) / T in the components of the initial frame.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+manifolds::ComponentsOf<M> geodesic_guess(const GeneralProblem<M, L>& problem) {
+  return manifolds::dual_frame<M>(problem.initial_frame()) * problem.manifold.difference(problem.q0, problem.qT) /
+         problem.T;
+}
+
+/// The size of Xi on this problem: T |v_ref| |mu_ref| (transported/shooting.hpp's xi_scale).
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+double xi_scale(const GeneralProblem<M, L>& problem) {
+  manifolds::ComponentsOf<M> v = geodesic_guess(problem);
+  if (!(v.norm() > 0)) v = manifolds::ComponentsOf<M>::Unit(0) / problem.T;
+  const double scale = problem.T * v.norm() * problem.lagrangian.momentum(0, problem.q0, v).norm();
+  return std::isfinite(scale) && scale > std::numeric_limits<double>::min() ? scale : 1.0;
+}
+
+/// Runs the N steps from (v0, Xi0); returns the last node, or nothing (with `failure` set) when
+/// the state became non-finite or a callback failed. ModelError passes through.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+std::optional<GeneralNode<M>> general_sweep(const GeneralScheme<M, L>& scheme, const manifolds::ComponentsOf<M>& v0,
+                                            const manifolds::ComponentMatrixOf<M>& Xi0, std::string& failure,
+                                            GeneralTrajectory<M>* trajectory = nullptr) {
+  try {
+    GeneralNode<M> node = scheme.initial(v0, Xi0), next;
+    if (trajectory) *trajectory = {}, trajectory->push(node);
+    for (int k = 0; k < scheme.problem().N; ++k) {
+      scheme.step(node, next);
+      if (!next.q.allFinite() || !next.frame.allFinite() || !next.mu.allFinite() || !next.Xi.allFinite() ||
+          !next.v.allFinite()) {
+        failure = "non-finite state at step " + std::to_string(k + 1);
+        return std::nullopt;
+      }
+      node = next;
+      if (trajectory) trajectory->push(node);
+    }
+    return node;
+  } catch (const ModelError&) {
+    throw;
+  } catch (const std::exception& e) {
+    failure = e.what();
+    return std::nullopt;
+  }
+}
+
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, const GeneralShootingOptions& options,
+                                          const manifolds::ComponentsOf<M>& v0_guess,
+                                          const manifolds::ComponentMatrixOf<M>& Xi0_guess) {
+  problem.validate();
+  options.validate();
+  require_finite(v0_guess, "solve_general_shooting", "v0_guess");
+  require_finite(Xi0_guess, "solve_general_shooting", "Xi0_guess");
+  constexpr int m = M::kDim;
+  const auto start = std::chrono::steady_clock::now();
+  const GeneralScheme<M, L> scheme(problem, options.order);
+  GeneralSolution<M> solution;
+  solution.order = static_cast<int>(options.order);
+  const double T = problem.T, s = xi_scale(problem);
+  std::string failure;
+  using Xi = manifolds::ComponentMatrixOf<M>;
+  auto unpack = [&](const Eigen::VectorXd& x) {
+    return std::pair<manifolds::ComponentsOf<M>, Xi>(x.head<m>() / T, Xi(x.tail<m * m>().reshaped(m, m) * s));
+  };
+  auto residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+    const auto [v0, Xi0] = unpack(x);
+    ++solution.sweeps;
+    const auto last = general_sweep(scheme, v0, Xi0, failure);
+    if (!last) return false;
+    r.resize(m + m * m);
+    r << scheme.terminal_residual(*last), last->Xi.reshaped() / s;
+    return true;
+  };
+  Eigen::VectorXd x0(m + m * m);
+  x0 << v0_guess * T, Xi0_guess.reshaped() / s;
+  numerics::NonlinearSolveOptions lm{.tolerance = options.tolerance, .max_iterations = options.max_iterations};
+  const numerics::NonlinearSolveReport report =
+      numerics::levenberg_marquardt(numerics::with_forward_difference_jacobian(residual, lm.fd_step), x0, lm);
+  solution.iterations = report.iterations;
+  solution.residual_history = report.residual_history;
+  const auto [v0, Xi0] = unpack(report.x);
+  ++solution.sweeps;
+  std::string record_failure;
+  const auto last = general_sweep(scheme, v0, Xi0, record_failure, &solution.trajectory);
+  if (last) {
+    solution.v0 = v0;
+    solution.Xi0 = Xi0;
+    solution.terminal_error = scheme.terminal_residual(*last).norm();
+    solution.xi_terminal = last->Xi.norm();
+    solution.status = report.status;
+  } else {
+    solution.trajectory = {};
+    solution.status = Status::NonFinite;
+  }
+  std::ostringstream message;
+  message << "general shooting (finite-difference Jacobian, Xi scale " << format_value(s)
+          << (scheme.uses_constant_components() ? ", constant frame components" : "") << "): " << report.message
+          << ", " << solution.sweeps << " sweeps";
+  if (!failure.empty()) message << "; last failed sweep: " << failure;
+  solution.message = message.str();
+  solution.branch = "shooting (from the geodesic guess)";
+  solution.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return solution;
+}
+
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, const GeneralShootingOptions& options = {}) {
+  problem.validate();
+  return solve_general_shooting(problem, options, geodesic_guess(problem), manifolds::ComponentMatrixOf<M>::Zero());
+}
+
+}  // namespace cartan::general

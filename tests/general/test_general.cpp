@@ -1,0 +1,230 @@
+// The general transported-velocity solver (include/cartan/general) against independent results:
+// the Lie-group Cartan–Schouten solver on the same discrete equations, the same problem without
+// the constant-components fast path, Newton's equations in flat R^m (closed form), the classical
+// spherical pendulum (an independent Runge–Kutta integration), the classical free rigid body
+// under the Levi-Civita connection of its inertia, and energy conservation for any connection.
+
+#include <cmath>
+#include <numbers>
+
+#include "cartan/general/shooting.hpp"
+#include "cartan/manifolds/euclidean.hpp"
+#include "cartan/manifolds/group_manifold.hpp"
+#include "cartan/manifolds/quadric.hpp"
+#include "cartan/mechanics/rigid_body.hpp"
+#include "cartan/transported/solve.hpp"  // the Lie-group solve, instantiated in the library
+#include "../transported/paper_cases.hpp"
+#include "test_support.hpp"
+
+namespace cartan::testing {
+namespace {
+
+using namespace cartan::general;
+using manifolds::GroupManifold;
+using SO3Manifold = GroupManifold<groups::SO3>;
+
+/// The same manifold with every member forwarded except has_parallel_torsion_and_curvature, so
+/// that the scheme recomputes the frame components at every node (the general path).
+template <class M>
+struct WithoutFastPath {
+  static constexpr int kDim = M::kDim, kAmbientDim = M::kAmbientDim;
+  using Point = typename M::Point;
+  using Vector = typename M::Vector;
+  using Frame = typename M::Frame;
+  using Operator = typename M::Operator;
+  M inner;
+  std::string_view name() const { return inner.name(); }
+  Vector christoffel(const Point& q, const Vector& x, const Vector& y) const { return inner.christoffel(q, x, y); }
+  Vector frame_bracket(const Vector& x, const Vector& y) const { return inner.frame_bracket(x, y); }
+  Point step(const Point& q, const Vector& x) const { return inner.step(q, x); }
+  Vector difference(const Point& a, const Point& b) const { return inner.difference(a, b); }
+  Operator transport_along_step(const Point& q, const Vector& x) const { return inner.transport_along_step(q, x); }
+  Frame tangent_basis(const Point& q) const { return inner.tangent_basis(q); }
+  void validate(const Point& q, std::string_view where) const { inner.validate(q, where); }
+};
+
+/// The Lie-group Cartan–Schouten solver's shooting (the reference).
+transported::TransportedSolution<groups::SO3> reference_solve(
+    const transported::TransportedProblem<groups::SO3, mechanics::RigidBody>& problem, SchemeOrder order) {
+  transported::SolveOptions options;
+  options.method = transported::Method::Shooting;
+  options.order = order;
+  options.tol = 1e-12;
+  return transported::solve(problem, options);
+}
+
+template <class M>
+GeneralProblem<M, KineticPotential<M>> free_body_on(const M& manifold, const transported::TransportedProblem<groups::SO3, mechanics::RigidBody>& p) {
+  return {manifold, KineticPotential<M>(paper_inertia()), p.T, p.N, p.g0, p.gT, std::nullopt};
+}
+
+// A Lie group with alpha = lambda ad given as a general connection solves the same discrete
+// equations as the Cartan–Schouten solver (E_k = Ad(h_k), xi = C(Xi)): both converge to
+// |r| <= 1e-12, so the curves agree to ~1e-10 (the roots' sensitivity is O(1) here).
+TEST(GeneralSolver, CartanSchoutenAsAGeneralConnectionReproducesTheLambdaSolver) {
+  for (const auto order : {SchemeOrder::First, SchemeOrder::Second}) {
+    const double lambda = 0.3;
+    const auto reference_problem = paper_free_body(lambda, 200, 5);
+    const auto reference = reference_solve(reference_problem, order);
+    ASSERT_TRUE(reference.converged()) << reference.message;
+    const auto general = solve_general_shooting(free_body_on(SO3Manifold::cartan_schouten(lambda), reference_problem),
+                                                {.order = order, .tolerance = 1e-12});
+    ASSERT_TRUE(general.converged()) << general.message;
+    EXPECT_NE(general.message.find("constant frame components"), std::string::npos);
+    EXPECT_NEAR_MATRIX(general.v0, reference.v0, 1e-9);
+    for (std::size_t k = 0; k < reference.trajectory.g.size(); k += 20) {
+      EXPECT_NEAR_MATRIX(general.trajectory.q[k], reference.trajectory.g[k], 1e-9);
+      EXPECT_NEAR_MATRIX(general.trajectory.mu[k], reference.trajectory.mu[k], 1e-9);
+    }
+  }
+}
+
+// The general path (frame components recomputed at every node from Gamma) gives the fast path's
+// solution where the components are constant.
+TEST(GeneralSolver, RecomputedFrameComponentsAgreeWithTheFastPath) {
+  const auto p = paper_free_body(0.3, 100, 5);
+  const auto fast = solve_general_shooting(free_body_on(SO3Manifold::cartan_schouten(0.3), p), {.tolerance = 1e-12});
+  const auto slow = solve_general_shooting(
+      free_body_on(WithoutFastPath<SO3Manifold>{SO3Manifold::cartan_schouten(0.3)}, p), {.tolerance = 1e-12});
+  ASSERT_TRUE(fast.converged() && slow.converged()) << fast.message << " / " << slow.message;
+  EXPECT_EQ(slow.message.find("constant frame components"), std::string::npos);
+  EXPECT_NEAR_MATRIX(fast.v0, slow.v0, 1e-10);
+  EXPECT_NEAR_MATRIX(fast.Xi0, slow.Xi0, 1e-9);
+}
+
+// Flat, torsion-free R^2 with l = 1/2 |v|^2 - k/2 |q|^2: Newton's equations, whose solution through
+// q0, qT is q(t) = q0 cos wt + c sin wt. v0 = w c, reached at the scheme's order.
+TEST(GeneralSolver, FlatEuclideanSpaceGivesNewtonsEquationsAtTheSchemesOrder) {
+  using R2 = manifolds::Euclidean<2>;
+  const double k = 2.0, w = std::sqrt(k), T = 1.3;
+  const Eigen::Vector2d q0(0.4, -0.2), qT(-0.3, 0.5);
+  const Eigen::Vector2d exact_v0 = w * (qT - q0 * std::cos(w * T)) / std::sin(w * T);
+  const KineticPotential<R2> lagrangian(
+      Eigen::Matrix2d::Identity(), [k](const Eigen::Vector2d& q) { return k / 2 * q.squaredNorm(); },
+      [k](const Eigen::Vector2d& q) { return Eigen::Vector2d(k * q); });
+  for (const auto order : {SchemeOrder::First, SchemeOrder::Second}) {
+    double errors[2];
+    for (int refinement = 0; refinement < 2; ++refinement) {
+      const int N = 200 << refinement;
+      const auto s = solve_general_shooting(GeneralProblem<R2, KineticPotential<R2>>{R2(), lagrangian, T, N, q0, qT, std::nullopt},
+                                            {.order = order, .tolerance = 1e-13});
+      ASSERT_TRUE(s.converged()) << s.message;
+      errors[refinement] = (s.v0 - exact_v0).norm();
+    }
+    const double expected_ratio = order == SchemeOrder::First ? 2.0 : 4.0;
+    EXPECT_NEAR(errors[0] / errors[1], expected_ratio, 0.15 * expected_ratio) << "order " << static_cast<int>(order);
+  }
+}
+
+/// Energy drift max_k |E_k - E_0| of a converged solution for l = 1/2 v^T A v - V.
+template <class M>
+double energy_drift(const GeneralSolution<M>& s, const KineticPotential<M>& l) {
+  double drift = 0;
+  for (std::size_t k = 0; k < s.trajectory.q.size(); ++k) {
+    drift = std::max(drift, std::abs(l.energy(s.trajectory.q[k], s.trajectory.v[k]) -
+                                     l.energy(s.trajectory.q[0], s.trajectory.v[0])));
+  }
+  return drift;
+}
+
+// For l = 1/2 v^T A v - V(q), 1/2 v^T A v + V is conserved for every connection: the torsion and
+// curvature terms of mu' vanish against v by antisymmetry (docs/general-connections.md#energy).
+// Checked on R^3 with random constant Christoffel symbols (torsion, curvature, nabla R != 0) and
+// an anisotropic A: the drift falls at the scheme's order.
+TEST(GeneralSolver, EnergyIsConservedForAnyConnectionAtTheSchemesOrder) {
+  using R3 = manifolds::Euclidean<3>;
+  std::mt19937 rng(kSeed);
+  R3::Coefficients c;
+  for (auto& g : c) g = random_vector<Eigen::Matrix<double, 9, 1>>(rng, 0.4).reshaped(3, 3);
+  const R3 manifold(c);
+  ASSERT_FALSE(manifold.has_parallel_torsion_and_curvature());
+  const KineticPotential<R3> lagrangian(
+      Eigen::Vector3d(1, 2, 3).asDiagonal(), [](const Eigen::Vector3d& q) { return 0.5 * q.squaredNorm() + q[0]; },
+      [](const Eigen::Vector3d& q) { return Eigen::Vector3d(q + Eigen::Vector3d::UnitX()); });
+  for (const auto order : {SchemeOrder::First, SchemeOrder::Second}) {
+    double drift[2];
+    for (int refinement = 0; refinement < 2; ++refinement) {
+      const GeneralProblem<R3, KineticPotential<R3>> problem{manifold, lagrangian, 1.5, 200 << refinement,
+                                                             Eigen::Vector3d(0.2, 0.1, -0.3), Eigen::Vector3d(1.0, -0.5, 0.4),
+                                                             std::nullopt};
+      const auto s = solve_general_shooting(problem, {.order = order, .tolerance = 1e-13});
+      ASSERT_TRUE(s.converged()) << s.message;
+      drift[refinement] = energy_drift(s, lagrangian);
+    }
+    // At least the scheme's order (measured: 2.0 at order 1; 8.0 at order 2, the drift of the
+    // Heun scheme is O(h^3) on this problem).
+    const double expected_ratio = order == SchemeOrder::First ? 2.0 : 4.0;
+    EXPECT_GT(drift[0] / drift[1], 0.85 * expected_ratio) << "order " << static_cast<int>(order);
+  }
+}
+
+// The spherical pendulum: on S^2 with its Levi-Civita connection and l = 1/2 |v|^2 - G z the
+// transported action is the classical one, so the solution is the classical pendulum. From the
+// solver's q0 and q'(0) = E0 v0, an independent RK4 integration of q'' = -G (e_z - z q) - |q'|^2 q
+// reaches qT, up to the scheme's error in v0 (order 2 at N = 400: ~1e-5).
+TEST(GeneralSolver, SphericalPendulumIsTheClassicalOne) {
+  using S2 = manifolds::Sphere;
+  const double G = 9.81, T = 1.0;
+  const Eigen::Vector3d q0 = manifolds::sphere_point({1, 0, -0.3}), qT = manifolds::sphere_point({0, 1, -0.5});
+  const auto lagrangian = KineticPotential<S2>::with_linear_potential(Eigen::Matrix2d::Identity(), Eigen::Vector3d(0, 0, G));
+  const auto reach = [&](const Eigen::Vector3d& velocity) {
+    using State = Eigen::Matrix<double, 6, 1>;
+    const auto f = [&](const State& y) {
+      const Eigen::Vector3d q = y.head<3>(), p = y.tail<3>();
+      State dy;
+      dy << p, -G * (Eigen::Vector3d::UnitZ() - q.z() * q) - p.squaredNorm() * q;
+      return dy;
+    };
+    State y;
+    y << q0, velocity;
+    const int steps = 20000;
+    const double h = T / steps;
+    for (int k = 0; k < steps; ++k) {
+      const State k1 = f(y), k2 = f(y + h / 2 * k1), k3 = f(y + h / 2 * k2), k4 = f(y + h * k3);
+      y += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+    }
+    return Eigen::Vector3d(y.head<3>());
+  };
+  double miss[2];
+  for (int refinement = 0; refinement < 2; ++refinement) {
+    const GeneralProblem<S2, KineticPotential<S2>> problem{S2{}, lagrangian, T, 200 << refinement, q0, qT, std::nullopt};
+    const auto s = solve_general_shooting(problem, {.order = SchemeOrder::Second, .tolerance = 1e-12});
+    ASSERT_TRUE(s.converged()) << s.message;
+    miss[refinement] = (reach(problem.initial_frame() * s.v0) - qT).norm();
+  }
+  EXPECT_LT(miss[1], 1e-4);
+  EXPECT_NEAR(miss[0] / miss[1], 4.0, 0.8);
+}
+
+// SO(3) with the Levi-Civita connection of the metric I and l = 1/2 v . I v: transport is an
+// isometry of I, the action is the classical one, and the curve is the classical free rigid
+// body, the lambda = 0 solution (at t = 0 both transported velocities are the body velocity).
+// Order 2: the two v0 differ by O(h^2), falling 4x with h.
+TEST(GeneralSolver, LeviCivitaOfTheInertiaGivesTheClassicalFreeRigidBody) {
+  double gap[2];
+  for (int refinement = 0; refinement < 2; ++refinement) {
+    const auto p = paper_free_body(0.0, 100 << refinement, 5);
+    const auto classical = reference_solve(p, SchemeOrder::Second);
+    const auto lc = solve_general_shooting(free_body_on(SO3Manifold::levi_civita(paper_inertia()), p),
+                                           {.order = SchemeOrder::Second, .tolerance = 1e-12});
+    ASSERT_TRUE(classical.converged() && lc.converged()) << classical.message << " / " << lc.message;
+    gap[refinement] = (lc.v0 - classical.v0).norm();
+  }
+  EXPECT_LT(gap[1], 1e-3);
+  EXPECT_NEAR(gap[0] / gap[1], 4.0, 0.8);
+}
+
+TEST(GeneralSolver, BadInputIsRejectedWithTheValue) {
+  using S2 = manifolds::Sphere;
+  const auto l = KineticPotential<S2>(Eigen::Matrix2d::Identity());
+  const Eigen::Vector3d q = Eigen::Vector3d::UnitZ();
+  expect_invalid([&] { solve_general_shooting(GeneralProblem<S2, KineticPotential<S2>>{S2{}, l, -1, 10, q, q, std::nullopt}); }, "T = -1");
+  expect_invalid([&] { solve_general_shooting(GeneralProblem<S2, KineticPotential<S2>>{S2{}, l, 1, 10, Eigen::Vector3d(1, 1, 1), q, std::nullopt}); }, "q0");
+  Eigen::Matrix<double, 3, 2> off;
+  off << 1, 0, 0, 1, 0.5, 0;  // not tangent at the north pole
+  expect_invalid([&] { solve_general_shooting(GeneralProblem<S2, KineticPotential<S2>>{S2{}, l, 1, 10, q, q, off}); }, "frame0");
+  expect_invalid([] { KineticPotential<S2>(Eigen::Vector2d(1, -1).asDiagonal()); }, {"inertia", "positive definite"});
+}
+
+}  // namespace
+}  // namespace cartan::testing
