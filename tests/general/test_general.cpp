@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "cartan/general/shooting.hpp"
+#include "cartan/general/solve.hpp"
 #include "cartan/manifolds/euclidean.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"
@@ -212,6 +212,36 @@ TEST(GeneralSolver, LeviCivitaOfTheInertiaGivesTheClassicalFreeRigidBody) {
   }
   EXPECT_LT(gap[1], 1e-3);
   EXPECT_NEAR(gap[0] / gap[1], 4.0, 0.8);
+}
+
+// general::solve: the default strategy starts with shooting; continuation in T reaches the same
+// solution through shorter horizons (same step h), naming its path; methods of the Lie-group
+// solver only are refused by name.
+TEST(GeneralSolve, DefaultShootingAndContinuationInTAgree) {
+  using S2 = manifolds::Sphere;
+  const auto lagrangian = KineticPotential<S2>::with_linear_potential(Eigen::Vector2d(1, 3).asDiagonal(), Eigen::Vector3d(0, 0, 2));
+  const GeneralProblem<S2, KineticPotential<S2>> problem{S2{}, lagrangian, 1.5, 300, manifolds::sphere_point({1, 0, 0.2}),
+                                                         manifolds::sphere_point({0, 1, -0.3}), std::nullopt};
+  const auto direct = solve(problem);
+  ASSERT_TRUE(direct.converged()) << direct.message;
+  EXPECT_EQ(direct.branch, "shooting (from the geodesic guess)");
+  transported::SolveOptions options;
+  options.method = transported::Method::Shooting;
+  options.continuation = transported::Continuation::None;
+  const auto from_guess = solve(problem, options, GeneralGuess<S2>{direct.v0, direct.Xi0});
+  EXPECT_EQ(from_guess.branch, "shooting (from the given guess)");
+  EXPECT_LE(from_guess.iterations, 2);
+  options.continuation = transported::Continuation::T;
+  const auto continued = detail::continue_in_T(problem, {.tolerance = 1e-10}, direct);
+  ASSERT_TRUE(continued.converged()) << continued.message;
+  EXPECT_EQ(continued.branch.rfind("continuation in T (continued in T from T = 0.75", 0), 0u) << continued.branch;
+  EXPECT_NEAR_MATRIX(continued.v0, direct.v0, 1e-8);
+  options.method = transported::Method::MultipleShooting;
+  options.continuation = transported::Continuation::None;
+  expect_invalid([&] { solve(problem, options); }, {"multiple-shooting", "not available for a general connection"});
+  options.method = transported::Method::Shooting;
+  options.continuation = transported::Continuation::Lambda;
+  expect_invalid([&] { solve(problem, options); }, "continuation = lambda");
 }
 
 TEST(GeneralSolver, BadInputIsRejectedWithTheValue) {

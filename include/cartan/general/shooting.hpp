@@ -43,6 +43,8 @@ struct GeneralShootingOptions {
   SchemeOrder order = SchemeOrder::First;
   double tolerance = 1e-10;  ///< on |(r_q, Xi_N / s)| (dimensionless, as transported shooting)
   int max_iterations = 100;
+  int no_progress_window = 0;             ///< > 0: abandon when |r| has not halved in this many iterations
+  const SolveMonitor* monitor = nullptr;  ///< progress and stop requests; may be null
 
   void validate() const {
     require_finite(tolerance, "GeneralShootingOptions", "tolerance");
@@ -127,7 +129,11 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   };
   Eigen::VectorXd x0(m + m * m);
   x0 << v0_guess * T, Xi0_guess.reshaped() / s;
-  numerics::NonlinearSolveOptions lm{.tolerance = options.tolerance, .max_iterations = options.max_iterations};
+  numerics::NonlinearSolveOptions lm;
+  lm.tolerance = options.tolerance;
+  lm.max_iterations = options.max_iterations;
+  lm.no_progress_window = options.no_progress_window;
+  lm.monitor = options.monitor;
   const numerics::NonlinearSolveReport report =
       numerics::levenberg_marquardt(numerics::with_forward_difference_jacobian(residual, lm.fd_step), x0, lm);
   solution.iterations = report.iterations;
@@ -152,7 +158,6 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
           << ", " << solution.sweeps << " sweeps";
   if (!failure.empty()) message << "; last failed sweep: " << failure;
   solution.message = message.str();
-  solution.branch = "shooting (from the geodesic guess)";
   solution.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return solution;
 }

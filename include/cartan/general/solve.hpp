@@ -1,0 +1,141 @@
+#pragma once
+// One entry point for the general transported-velocity problem (problem.hpp), with the vocabulary
+// of the Lie-group solve (transported/solve.hpp: SolveOptions, Method, Continuation, Status):
+//   * Method::Shooting: shooting from the guess (default: the geodesic guess), or with
+//     Continuation::T by continuation in the horizon;
+//   * Method::Auto (default): shooting from the guess, then continuation in T.
+// Continuation in T halves the horizon (same step h, so N scales with T) until shooting from the
+// geodesic guess converges, then lengthens it, each stage starting from the previous (v0, Xi0);
+// a failed stage halves the increment. A failure returns the best iterate of the requested
+// problem (never a stage at another T), and `branch` names the path.
+// Other methods (multiple shooting, two-level, collocation) and continuation in lambda belong to
+// the Lie-group Cartan–Schouten solver; asking for them here is an error naming them.
+
+#include <optional>
+#include <sstream>
+
+#include "cartan/general/shooting.hpp"
+#include "cartan/transported/solve_options.hpp"
+
+namespace cartan::general {
+
+template <manifolds::ManifoldWithConnection M>
+struct GeneralGuess {
+  std::optional<manifolds::ComponentsOf<M>> v0;
+  std::optional<manifolds::ComponentMatrixOf<M>> Xi0;
+};
+
+namespace detail {
+
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralProblem<M, L> with_horizon(const GeneralProblem<M, L>& problem, double T) {
+  GeneralProblem<M, L> p = problem;
+  p.N = std::max(1, static_cast<int>(std::lround(problem.N * T / problem.T)));
+  p.T = T;
+  return p;
+}
+
+/// Continuation in T (header comment). `direct` is the failed attempt at the full horizon, the
+/// best iterate to return if the path fails.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralSolution<M> continue_in_T(const GeneralProblem<M, L>& problem, GeneralShootingOptions shooting,
+                                 GeneralSolution<M> direct) {
+  shooting.no_progress_window = 6;
+  int sweeps = direct.sweeps;
+  std::optional<GeneralSolution<M>> stage;
+  double reached = problem.T;
+  for (int halving = 1; halving <= 8 && !stage; ++halving) {
+    reached = problem.T / std::pow(2.0, halving);
+    auto start = solve_general_shooting(with_horizon(problem, reached), shooting);
+    sweeps += start.sweeps;
+    if (start.converged()) stage = std::move(start);
+  }
+  if (!stage) {
+    direct.status = Status::ContinuationFailed;
+    direct.sweeps = sweeps;
+    direct.message = "continuation in T: no horizon down to T / 256 converged from the geodesic guess; " + direct.message;
+    return direct;
+  }
+  const double start_T = reached;
+  double increment = (problem.T - start_T) / 8;
+  int stages = 1;
+  while (reached < problem.T && increment > 1e-6 * (problem.T - start_T) && stages < 200) {
+    if (shooting.monitor && shooting.monitor->stop_requested()) break;
+    const double next = std::min(problem.T, reached + increment);
+    auto attempt = solve_general_shooting(with_horizon(problem, next), shooting, stage->v0 * (reached / next), stage->Xi0);
+    sweeps += attempt.sweeps;
+    ++stages;
+    if (attempt.converged()) {
+      reached = next;
+      stage = std::move(attempt);
+      increment *= 1.5;
+    } else {
+      increment /= 2;
+    }
+  }
+  std::ostringstream path;
+  path << "continued in T from T = " << format_value(start_T) << " (" << stages << " stages)";
+  if (reached >= problem.T) {
+    stage->sweeps = sweeps;
+    stage->branch = "continuation in T (" + path.str() + ")";
+    return std::move(*stage);
+  }
+  // The best iterate of the requested problem: shooting at T from the last stage reached.
+  auto best = solve_general_shooting(problem, shooting, stage->v0 * (reached / problem.T), stage->Xi0);
+  best.sweeps += sweeps;
+  if (!best.converged()) {
+    best.status = Status::ContinuationFailed;
+    best.message = "continuation in T stopped at T = " + format_value(reached) + " (" + path.str() + "); " + best.message;
+  }
+  best.branch = "continuation in T (" + path.str() + ", then shooting at T)";
+  return best;
+}
+
+}  // namespace detail
+
+/// Solves the general problem. Throws std::invalid_argument for an invalid problem or options,
+/// or a method this problem family does not have; numerical failure is a status.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options = {},
+                         const GeneralGuess<M>& guess = {}) {
+  problem.validate();
+  options.validate();
+  using transported::Continuation;
+  using transported::Method;
+  if (options.method != Method::Auto && options.method != Method::Shooting) {
+    throw_invalid("general::solve", "method", std::string(to_string(options.method)),
+                  "is not available for a general connection (methods: auto, shooting)");
+  }
+  if (options.continuation == Continuation::Lambda) {
+    throw_invalid("general::solve", "continuation", "lambda",
+                  "needs a Cartan–Schouten connection on a Lie group (general connections: none, T)");
+  }
+  if (guess.v0) require_finite(*guess.v0, "general::solve", "guess.v0");
+  if (guess.Xi0) require_finite(*guess.Xi0, "general::solve", "guess.Xi0");
+  GeneralShootingOptions shooting{.order = options.order, .tolerance = options.tol,
+                                  .max_iterations = options.max_iterations, .no_progress_window = 0,
+                                  .monitor = &options.monitor};
+  const bool auto_strategy = options.method == Method::Auto;
+  if (auto_strategy) shooting.no_progress_window = 8;
+  const std::string from = guess.v0 || guess.Xi0 ? "from the given guess" : "from the geodesic guess";
+  GeneralSolution<M> direct =
+      solve_general_shooting(problem, shooting, guess.v0.value_or(geodesic_guess(problem)),
+                             guess.Xi0.value_or(manifolds::ComponentMatrixOf<M>::Zero()));
+  direct.branch = "shooting (" + from + ")";
+  if (direct.converged() || direct.status == Status::Interrupted ||
+      (!auto_strategy && options.continuation == Continuation::None)) {
+    return direct;
+  }
+  GeneralSolution<M> continued = detail::continue_in_T(problem, shooting, direct);
+  if (auto_strategy) {
+    continued.branch += continued.converged() ? ", after shooting failed" : "";
+    if (!continued.converged()) {
+      continued.status = Status::StrategyFailed;
+      continued.message = "every method of the default strategy failed (shooting " + from +
+                          ", continuation in T): " + continued.message;
+    }
+  }
+  return continued;
+}
+
+}  // namespace cartan::general
