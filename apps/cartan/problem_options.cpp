@@ -42,6 +42,7 @@ ProblemSpec problem_from(const CLI::App& command, ProblemFlags& flags) {
   }
   for (const auto* field : given) {  // flags override the file
     std::visit([&](auto member) { spec.*member = flags.spec.*member; }, field->member);
+    spec.given.push_back(field->key);
   }
   return spec;
 }

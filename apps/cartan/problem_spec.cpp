@@ -64,42 +64,53 @@ std::vector<ProblemField> make_fields() {
     }
   }
   return {
-      {"group", &S::group, "the group: " + groups + " (default so3)", true, nullptr},
-      {"model", &S::model, "the model (default the group's first): " + models, true, nullptr},
+      {"group", &S::group, "the group: " + groups + " (default so3)", true, nullptr, ProblemField::Scope::Group},
+      {"model", &S::model, "the model (default the group's first; sphere: particle): " + models, true, nullptr,
+       ProblemField::Scope::Any},
       {"inertia", &S::inertia,
        "n numbers (the diagonal) or n*n (a symmetric positive-definite matrix, row-major), n = the algebra's dimension "
        "(default: " + inertias + ")",
-       true, nullptr},
-      {"lambda", &S::lambda, "Cartan-Schouten parameter (any real; default 0.5)", true, finite_value},
-      {"T", &S::T, "final time (default 1)", true, positive_finite},
-      {"N", &S::N, "number of steps (default 100)", true, at_least_one},
-      {"g0", &S::g0, "initial element (default the identity): " + elements, true, nullptr},
-      {"gT", &S::gT, "final element, as --g0", false, nullptr},  // echoed as final_element
-      {"a0", &S::a0, "so3: initial direction; gT = minimal rotation taking a0 to aT", false, nullptr},
-      {"aT", &S::aT, "so3: final direction", false, nullptr},
+       true, nullptr, ProblemField::Scope::Group},
+      {"lambda", &S::lambda, "Cartan-Schouten parameter (any real; default 0.5)", true, finite_value, ProblemField::Scope::Group},
+      {"T", &S::T, "final time (default 1)", true, positive_finite, ProblemField::Scope::Any},
+      {"N", &S::N, "number of steps (default 100)", true, at_least_one, ProblemField::Scope::Any},
+      {"g0", &S::g0, "initial element (default the identity): " + elements, true, nullptr, ProblemField::Scope::Group},
+      {"gT", &S::gT, "final element, as --g0", false, nullptr, ProblemField::Scope::Group},  // echoed as final_element
+      {"a0", &S::a0, "so3: initial direction; gT = minimal rotation taking a0 to aT", false, nullptr, ProblemField::Scope::Group},
+      {"aT", &S::aT, "so3: final direction", false, nullptr, ProblemField::Scope::Group},
       {"method", &S::method,
        enum_choices<transported::Method>() +
            " (default auto: a strategy that tries shooting, continuation in T and in lambda, "
            "collocation and multiple shooting in turn and stops at the first success; shooting: "
            "augmented shooting with an analytic Jacobian; multiple-shooting: lifted LM over --segments "
            "segments; two-level: the paper's scheme; collocation: fourth-order adaptive collocation)",
-       false, nullptr},
+       false, nullptr, ProblemField::Scope::Any},
       {"continuation", &S::continuation,
        enum_choices<transported::Continuation>() +
            " (default none). shooting: how to reach a problem that fails from the guess (T: from a "
            "shorter horizon; lambda: from the lambda = 0 solution); so3 collocation: where to start "
            "when Newton from the geodesic guess fails (from that order-2 shooting solution)",
-       false, nullptr},
-      {"v0", &S::v0, "guess of v(0), n numbers (shooting methods; default the geodesic velocity)", false, nullptr},
-      {"xi0", &S::xi0, "guess of xi(0), n numbers (shooting, multiple-shooting; default 0)", false, nullptr},
+       false, nullptr, ProblemField::Scope::Any},
+      {"v0", &S::v0, "guess of v(0), n numbers (shooting methods; default the geodesic velocity)", false, nullptr, ProblemField::Scope::Any},
+      {"xi0", &S::xi0, "guess of xi(0), n numbers (shooting, multiple-shooting; default 0)", false, nullptr, ProblemField::Scope::Group},
       {"segments", &S::segments, "multiple-shooting only: number of segments (default about 100 steps each, at most 16)",
-       false, non_negative},
-      {"order", &S::order, "1 (the paper's scheme) | 2 (second order) (default 1)", false, one_or_two},
-      {"tol", &S::tol, "tolerance (default 1e-10)", true, positive_finite},
+       false, non_negative, ProblemField::Scope::Group},
+      {"order", &S::order, "1 (the paper's scheme) | 2 (second order) (default 1)", false, one_or_two, ProblemField::Scope::Any},
+      {"tol", &S::tol, "tolerance (default 1e-10)", true, positive_finite, ProblemField::Scope::Any},
       {"samples", &S::samples, "collocation only: output at this many uniform times on [0, T] (0: the final mesh)",
-       false, non_negative},
-      {"max_iterations", &S::max_iterations, "iteration limit of each loop (default 200)", false, at_least_one},
-      {"output", &S::output, "output file (default stdout)", false, nullptr},
+       false, non_negative, ProblemField::Scope::Group},
+      {"max_iterations", &S::max_iterations, "iteration limit of each loop (default 200)", false, at_least_one, ProblemField::Scope::Any},
+      {"output", &S::output, "output file (default stdout)", false, nullptr, ProblemField::Scope::Any},
+      {"manifold", &S::manifold,
+       "a manifold instead of a group: sphere (S^2 with its Levi-Civita connection; model particle)", true, nullptr,
+       ProblemField::Scope::Sphere},
+      {"mass", &S::mass, "sphere: a1,a2 in l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1,1)", true, nullptr,
+       ProblemField::Scope::Sphere},
+      {"gravity", &S::gravity, "sphere: G in l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 0)", true, finite_value,
+       ProblemField::Scope::Sphere},
+      {"q0", &S::q0, "sphere: initial point x,y,z (normalised)", true, nullptr, ProblemField::Scope::Sphere},
+      {"qT", &S::qT, "sphere: final point x,y,z (normalised; not equal or antipodal to q0)", true, nullptr,
+       ProblemField::Scope::Sphere},
   };
 }
 
@@ -170,13 +181,15 @@ std::vector<double> final_element(const ProblemSpec& spec) {
 nlohmann::json result_header(const ProblemSpec& spec, const std::string& status, const std::string& message,
                              const std::string& method, int order, const std::string& branch) {
   nlohmann::json out = {{"status", status}, {"message", message}, {"method", method},
-                        {"order", order},   {"branch", branch},   {"gT", final_element(spec)}};
+                        {"order", order},   {"branch", branch}};
+  const auto scope = is_manifold_problem(spec) ? ProblemField::Scope::Sphere : ProblemField::Scope::Group;
+  if (!is_manifold_problem(spec)) out["gT"] = final_element(spec);
   for (const auto& field : problem_fields()) {
-    if (!field.echoed) continue;
+    if (!field.echoed || (field.scope != ProblemField::Scope::Any && field.scope != scope)) continue;
     std::visit([&](auto member) { out[field.key] = spec.*member; }, field.member);
   }
   const auto n = static_cast<std::size_t>(std::lround(std::sqrt(static_cast<double>(spec.inertia.size()))));
-  if (n > 1 && n * n == spec.inertia.size()) {  // n x n: as rows (n numbers, the diagonal, stay a list)
+  if (!is_manifold_problem(spec) && n > 1 && n * n == spec.inertia.size()) {  // n x n: as rows (n numbers, the diagonal, stay a list)
     nlohmann::json rows = nlohmann::json::array();
     for (std::size_t i = 0; i < n; ++i) {
       rows.push_back(std::vector<double>(spec.inertia.begin() + static_cast<std::ptrdiff_t>(i * n),
@@ -193,10 +206,73 @@ void apply_json(ProblemSpec& spec, const nlohmann::json& file) {
     const ProblemField* field = find_field(key);
     if (field == nullptr) bad("key " + quote_input(key), describe(value), "is not a problem-file key");
     read_field(spec, *field, value, kWhere);
+    spec.given.push_back(field->key);
   }
 }
 
+namespace {
+
+void check_scope(const ProblemSpec& spec, ProblemField::Scope scope, const std::string& kind) {
+  for (const auto& key : spec.given) {
+    const ProblemField* field = find_field(key);
+    if (field && field->scope != ProblemField::Scope::Any && field->scope != scope) {
+      bad(key, shown(spec, *field), "is not an option of " + kind);
+    }
+  }
+}
+
+/// A point of S^2 from 3 numbers: finite, nonzero, normalised.
+std::vector<double> sphere_point(const std::vector<double>& x, const std::string& name) {
+  require_size(name, x, 3, "a point x,y,z of the sphere, normalised");
+  const Eigen::Vector3d p(x.data());
+  if (!(p.stableNorm() > 0)) bad(name, excerpt(x), "has zero length");
+  const Eigen::Vector3d unit = p.stableNormalized();
+  return {unit[0], unit[1], unit[2]};
+}
+
+/// --manifold sphere: model particle, mass (2 positive numbers), gravity, q0 and qT (normalised,
+/// neither equal nor antipodal), the general solver's methods (auto, shooting).
+void validate_manifold_problem(ProblemSpec& spec) {
+  if (spec.manifold != "sphere") bad("manifold", quote_input(spec.manifold), "is not one of: sphere");
+  check_scope(spec, ProblemField::Scope::Sphere, "--manifold sphere (it belongs to problems on a group)");
+  if (spec.model.empty()) spec.model = "particle";
+  if (spec.model != "particle") bad("model", quote_input(spec.model), "is not a model of --manifold sphere (models: particle)");
+  const transported::Method method = parse_enum<transported::Method>(spec.method, "cartan solve");
+  if (method != transported::Method::Auto && method != transported::Method::Shooting) {
+    bad("method", quote_input(spec.method), "is not a method of --manifold sphere (methods: auto, shooting)");
+  }
+  const transported::Continuation continuation = parse_enum<transported::Continuation>(spec.continuation, "cartan solve");
+  if (continuation == transported::Continuation::Lambda) {
+    bad("continuation", quote_input(spec.continuation), "is not an option of --manifold sphere (none, T)");
+  }
+  if (continuation != transported::Continuation::None && method != transported::Method::Shooting) {
+    bad("continuation", quote_input(spec.continuation), "is an option of --method shooting only");
+  }
+  for (const auto& field : problem_fields()) check_field(spec, field, kWhere);
+  require_memory("N", spec.N, kBytesPerNode * spec.N, "the trajectory and its JSON output, ~1 KiB per step");
+  if (spec.mass.empty()) spec.mass = {1, 1};
+  require_size("mass", spec.mass, 2, "a1,a2");
+  for (double a : spec.mass) {
+    if (!(a > 0)) bad("mass", excerpt(spec.mass), "must be positive");
+  }
+  if (spec.q0.empty()) bad("q0", "(missing)", "is required for --manifold sphere");
+  if (spec.qT.empty()) bad("qT", "(missing)", "is required for --manifold sphere");
+  spec.q0 = sphere_point(spec.q0, "q0");
+  spec.qT = sphere_point(spec.qT, "qT");
+  const Eigen::Vector3d a(spec.q0.data()), b(spec.qT.data());
+  if (a.cross(b).norm() < 1e-12) {
+    bad("q0/qT", excerpt(spec.q0) + " / " + excerpt(spec.qT),
+        a.dot(b) > 0 ? "are equal: the frame's e1 (towards qT along the minimal great circle) is undefined"
+                     : "are antipodal: the minimal great circle is not unique");
+  }
+  if (!spec.v0.empty()) require_size("v0", spec.v0, 2, "a guess of v(0) in the frame (e1, e2)");
+}
+
+}  // namespace
+
 void validate(ProblemSpec& spec) {
+  if (is_manifold_problem(spec)) return validate_manifold_problem(spec);
+  check_scope(spec, ProblemField::Scope::Group, "a problem on a group (it belongs to --manifold sphere)");
   const ModelInfo& model = find_model(spec.group, spec.model, kWhere);
   spec.model = model.model;
   const std::size_t n = static_cast<std::size_t>(model.dim);

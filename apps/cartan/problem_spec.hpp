@@ -13,6 +13,9 @@
 namespace cartan::cli {
 
 struct ProblemSpec {
+  /// Empty: a problem on a group (group, model, inertia, lambda, g0, gT); "sphere": the general
+  /// problem on S^2 (manifold_command.hpp: model particle, mass, gravity, q0, qT).
+  std::string manifold;
   std::string group = "so3";            ///< a group of the model table (model_table.hpp)
   std::string model;                    ///< a model of the group; empty: the group's first (validate fills it)
   std::vector<double> inertia;          ///< n numbers (diagonal) or n^2 (row-major); default: the model's
@@ -31,6 +34,10 @@ struct ProblemSpec {
   int segments = 0;                     ///< multiple shooting: number of segments (0: default_segments(N))
   int max_iterations = 200;
   std::string output;                   ///< empty: stdout
+  std::vector<double> mass;             ///< sphere: a1, a2 of l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1, 1)
+  double gravity = 0;                   ///< sphere: G
+  std::vector<double> q0, qT;           ///< sphere: endpoints (3 numbers each, normalised by validate)
+  std::vector<std::string> given;       ///< the keys set by the problem file or flags (validate's scope check)
 };
 
 /// One field of a problem: its JSON key (the flag is --key with '_' written '-'), the ProblemSpec
@@ -39,6 +46,8 @@ struct ProblemSpec {
 /// numbers the check of its value. The one list of the problem's fields: parsed from problem
 /// files and flags, checked by validate, echoed by result_header, read back by read_result.
 struct ProblemField {
+  /// Which problems the field belongs to: every problem, those on a group, or --manifold sphere.
+  enum class Scope { Any, Group, Sphere };
   using Member = std::variant<std::string ProblemSpec::*, double ProblemSpec::*, int ProblemSpec::*,
                               std::vector<double> ProblemSpec::*>;
   std::string key;
@@ -47,6 +56,7 @@ struct ProblemField {
   bool echoed = false;
   /// A number's problem ("must be positive and finite"), or nullptr when the value is fine.
   const char* (*check)(double) = nullptr;
+  Scope scope = Scope::Any;
 
   std::string flag() const;  ///< "--max-iterations" for max_iterations
 };
@@ -75,6 +85,9 @@ inline constexpr double kBytesPerSegmentSquared = 4 * 144 * 8;
 /// Overwrites fields of `spec` with the keys present in `file` (a JSON object). Unknown keys and
 /// wrong types throw std::invalid_argument naming the key.
 void apply_json(ProblemSpec& spec, const nlohmann::json& file);
+
+/// True for a problem on a manifold (spec.manifold set) rather than on a group.
+inline bool is_manifold_problem(const ProblemSpec& spec) { return !spec.manifold.empty(); }
 
 /// Checks every field and fills defaults (model: the group's first; inertia: the model's;
 /// g0 = identity). The inertia is checked by building the library's model; that g0 and gT are

@@ -143,6 +143,10 @@ std::vector<GridPoint> build_grid(const ProblemSpec& base, const GridFlags& flag
     throw retitled(e, kWhere);
   }
   for (std::size_t i = 0; i < points.size(); ++i) {
+    if (is_manifold_problem(points[i].spec)) {
+      throw_invalid(kWhere, "manifold", quote_input(points[i].spec.manifold),
+                    "problems are solved one at a time (cartan solve --manifold); sweeps cover problems on a group");
+    }
     try {
       validate(points[i].spec);
     } catch (const std::invalid_argument& e) {

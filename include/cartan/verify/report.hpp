@@ -124,9 +124,13 @@ Report verify_trajectory(const transported::TransportedProblem<G, L>& problem, t
   report.order = std::min(order, 2);
   report.resolution = checks.max_step() * checks.frequency();
   report.amplification = checks.amplification();
+  // At most 1: every figure is relative, and a threshold above 100 % says nothing. It also keeps
+  // thresholds finite when absurd data (found by fuzzing: an xi of 1e215) make a overflow.
   auto threshold = [&](double constant, int extra_power) {
     const double lambda_factor = std::pow(report.amplification, report.order + extra_power);
-    return discretisation_threshold(constant * lambda_factor, report.resolution, report.order) + threshold_floor(tol);
+    const double value =
+        discretisation_threshold(constant * lambda_factor, report.resolution, report.order) + threshold_floor(tol);
+    return std::isfinite(value) ? std::min(value, 1.0) : 1.0;
   };
   if (status != Status::Converged) report.checks.push_back(convergence_check(status));
   // Shooting stops at |xi_N| / xi_scale <= tol (shooting.hpp), so xi_N may exceed tol where
