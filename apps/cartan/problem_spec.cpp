@@ -101,6 +101,15 @@ std::vector<ProblemField> make_fields() {
        false, non_negative, ProblemField::Scope::Group},
       {"max_iterations", &S::max_iterations, "iteration limit of each loop (default 200)", false, at_least_one, ProblemField::Scope::Any},
       {"output", &S::output, "output file (default stdout)", false, nullptr, ProblemField::Scope::Any},
+      {"connection", &S::connection,
+       "groups: cartan-schouten (default, with --lambda) | levi-civita (of the left-invariant metric --metric) | "
+       "coefficients (the bilinear map of --alpha); the last two are solved by the general solver (methods auto, shooting)",
+       false, nullptr, ProblemField::Scope::Group},
+      {"metric", &S::metric, "levi-civita: the metric, n numbers (diagonal) or n*n (default: the inertia)", false, nullptr,
+       ProblemField::Scope::Group},
+      {"alpha", &S::alpha,
+       "coefficients: a JSON file, an n x n x n array alpha with alpha(e_i, e_j) = sum_k alpha[i][j][k] e_k", false,
+       nullptr, ProblemField::Scope::Group},
       {"manifold", &S::manifold,
        "a manifold instead of a group: sphere (S^2 with its Levi-Civita connection; model particle)", true, nullptr,
        ProblemField::Scope::Sphere},
@@ -221,6 +230,79 @@ void check_scope(const ProblemSpec& spec, ProblemField::Scope scope, const std::
   }
 }
 
+bool given(const ProblemSpec& spec, std::string_view key) {
+  return std::find(spec.given.begin(), spec.given.end(), key) != spec.given.end();
+}
+
+/// The alpha file's n x n x n finite numbers, in (i, j, k) order.
+std::vector<double> read_alpha(const std::string& path, std::size_t n) {
+  const nlohmann::json file = read_json_file(path, "cartan solve: --alpha");
+  const std::string shape = std::to_string(n) + " x " + std::to_string(n) + " x " + std::to_string(n);
+  std::vector<double> out;
+  const auto wrong = [&] { bad("alpha", quote_input(path), "must hold a " + shape + " array of numbers"); };
+  if (!file.is_array() || file.size() != n) wrong();
+  for (const auto& plane : file) {
+    if (!plane.is_array() || plane.size() != n) wrong();
+    for (const auto& row : plane) {
+      const std::vector<double> numbers = json_numbers(row, kWhere, "alpha");
+      if (numbers.size() != n) wrong();
+      for (double x : numbers) {
+        if (!std::isfinite(x)) bad("alpha", quote_input(path), "contains a non-finite number");
+      }
+      out.insert(out.end(), numbers.begin(), numbers.end());
+    }
+  }
+  return out;
+}
+
+/// --connection: its name, the options that belong to it, the general solver's methods, and the
+/// metric (levi-civita: symmetric positive definite, default the inertia) or the alpha file.
+void validate_connection(ProblemSpec& spec, std::size_t n) {
+  const std::string& c = spec.connection;
+  if (c != "cartan-schouten" && c != "levi-civita" && c != "coefficients") {
+    bad("connection", quote_input(c), "is not one of: cartan-schouten, levi-civita, coefficients");
+  }
+  if (c != "cartan-schouten" && given(spec, "lambda")) {
+    bad("lambda", format_value(spec.lambda), "is an option of --connection cartan-schouten only");
+  }
+  if (c != "levi-civita" && given(spec, "metric")) {
+    bad("metric", excerpt(spec.metric), "is an option of --connection levi-civita only");
+  }
+  if (c != "coefficients" && given(spec, "alpha")) {
+    bad("alpha", quote_input(spec.alpha), "is an option of --connection coefficients only");
+  }
+  if (c == "cartan-schouten") return;
+  const transported::Method method = parse_enum<transported::Method>(spec.method, "cartan solve");
+  if (method != transported::Method::Auto && method != transported::Method::Shooting) {
+    bad("method", quote_input(spec.method), "is not a method of --connection " + c + " (methods: auto, shooting)");
+  }
+  if (spec.continuation == "lambda") {
+    bad("continuation", quote_input(spec.continuation), "is not an option of --connection " + c + " (none, T)");
+  }
+  if (!spec.xi0.empty()) bad("xi0", excerpt(spec.xi0), "is a guess of the Cartan-Schouten solver's xi, not of --connection " + c);
+  if (c == "levi-civita") {
+    if (spec.metric.empty()) spec.metric = spec.inertia;
+    if (spec.metric.size() != n && spec.metric.size() != n * n) {
+      bad("metric", excerpt(spec.metric), "must have " + std::to_string(n) + " or " + std::to_string(n * n) + " numbers");
+    }
+    require_size("metric", spec.metric, spec.metric.size(), "");
+    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = 0; j < n; ++j) {
+        if (spec.metric.size() == n * n) m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = spec.metric[i * n + j];
+      }
+      if (spec.metric.size() == n) m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i)) = spec.metric[i];
+    }
+    const double scale = m.cwiseAbs().maxCoeff();
+    if (!((m - m.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale) || Eigen::LLT<Eigen::MatrixXd>(m).info() != Eigen::Success) {
+      bad("metric", excerpt(spec.metric), "must be symmetric positive definite");
+    }
+  } else {
+    if (spec.alpha.empty()) bad("alpha", "(missing)", "is required by --connection coefficients");
+    spec.alpha_values = read_alpha(spec.alpha, n);
+  }
+}
+
 /// A point of S^2 from 3 numbers: finite, nonzero, normalised.
 std::vector<double> sphere_point(const std::vector<double>& x, const std::string& name) {
   require_size(name, x, 3, "a point x,y,z of the sphere, normalised");
@@ -314,6 +396,7 @@ void validate(ProblemSpec& spec) {
   }
   require_size("inertia", spec.inertia, spec.inertia.size(), "");
   check_inertia(model, spec.inertia, kWhere);
+  validate_connection(spec, n);
   const std::string element_what = std::string(model.element_what);
   if (spec.g0.empty()) spec.g0 = model.identity;
   require_size("g0", spec.g0, model.element_size, element_what);  // group membership: solve (solve_command.hpp)

@@ -37,6 +37,10 @@ struct ProblemSpec {
   std::vector<double> mass;             ///< sphere: a1, a2 of l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1, 1)
   double gravity = 0;                   ///< sphere: G
   std::vector<double> q0, qT;           ///< sphere: endpoints (3 numbers each, normalised by validate)
+  std::string connection = "cartan-schouten";  ///< groups: cartan-schouten (with lambda) | levi-civita | coefficients
+  std::vector<double> metric;           ///< levi-civita: n or n^2 numbers (default: the inertia)
+  std::string alpha;                    ///< coefficients: a JSON file alpha[i][j][k], alpha(e_i, e_j) = sum_k alpha[i][j][k] e_k
+  std::vector<double> alpha_values;     ///< the file's n^3 numbers in (i, j, k) order (filled by validate)
   std::vector<std::string> given;       ///< the keys set by the problem file or flags (validate's scope check)
 };
 
@@ -85,6 +89,9 @@ inline constexpr double kBytesPerSegmentSquared = 4 * 144 * 8;
 /// Overwrites fields of `spec` with the keys present in `file` (a JSON object). Unknown keys and
 /// wrong types throw std::invalid_argument naming the key.
 void apply_json(ProblemSpec& spec, const nlohmann::json& file);
+
+/// True for a problem on a group with a connection other than Cartan–Schouten (the general solver).
+inline bool is_general_connection(const ProblemSpec& spec) { return spec.connection != "cartan-schouten"; }
 
 /// True for a problem on a manifold (spec.manifold set) rather than on a group.
 inline bool is_manifold_problem(const ProblemSpec& spec) { return !spec.manifold.empty(); }

@@ -105,6 +105,9 @@ ResultFile read(const nlohmann::json& j) {
   if (j.contains("manifold")) {
     bad("manifold", describe(j["manifold"]), "results (cartan solve --manifold) are not checked by verify yet");
   }
+  if (j.contains("connection") && j["connection"] != "cartan-schouten") {
+    bad("connection", describe(j["connection"]), "results are not checked by verify yet");
+  }
   r.problem = problem_of(j);
   const ModelInfo& model = find_model(r.problem.group, r.problem.model, kWhere);
   r.method = one_of(require_key(j, "method", kWhere, kResultFile), "method", enum_words<transported::Method>());

@@ -1,6 +1,7 @@
 #include "solve_command.hpp"
 
 #include "cartan/transported/solve.hpp"
+#include "connection_command.hpp"
 #include "manifold_command.hpp"
 #include "model_table.hpp"
 #include "solution_json.hpp"
@@ -48,6 +49,7 @@ SO3Endpoints so3_endpoints(const ProblemSpec& spec) {
 
 nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor) {
   if (is_manifold_problem(spec)) return solve_manifold(spec, monitor);
+  if (is_general_connection(spec)) return solve_with_connection(spec, monitor);
   check_endpoints(spec);
   return visit_model(spec.group, spec.model, kWhere, [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;

@@ -147,6 +147,10 @@ std::vector<GridPoint> build_grid(const ProblemSpec& base, const GridFlags& flag
       throw_invalid(kWhere, "manifold", quote_input(points[i].spec.manifold),
                     "problems are solved one at a time (cartan solve --manifold); sweeps cover problems on a group");
     }
+    if (is_general_connection(points[i].spec)) {
+      throw_invalid(kWhere, "connection", quote_input(points[i].spec.connection),
+                    "problems are solved one at a time (cartan solve); sweeps cover Cartan-Schouten connections");
+    }
     try {
       validate(points[i].spec);
     } catch (const std::invalid_argument& e) {

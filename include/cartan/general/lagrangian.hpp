@@ -14,7 +14,9 @@
 #include <functional>
 
 #include "cartan/errors.hpp"
+#include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/manifold.hpp"
+#include "cartan/mechanics/lagrangian.hpp"
 
 namespace cartan::general {
 
@@ -81,6 +83,29 @@ class KineticPotential {
   Eigen::LDLT<Inertia> factor_;
   Potential potential_;
   PotentialGradient gradient_;
+};
+
+/// A left-reduced Lagrangian l(t, g, v) (mechanics::ReducedLagrangian) as a Lagrangian of the
+/// general problem on GroupManifold<G>: with the algebra basis as the frame at g0 = the identity of
+/// the trivialisation, v is the same transported velocity and the left-trivialised group gradient
+/// zeta is the point gradient (delta_{q^i} l = zeta . e_i(t), e_i(t) left-trivialised). Every model
+/// of the Lie-group solvers then runs under any left-invariant connection.
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+struct OnGroupManifold {
+  L lagrangian;
+
+  double value(double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) const {
+    return lagrangian.value(t, g, v);
+  }
+  groups::CovectorOf<G> momentum(double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) const {
+    return lagrangian.momentum(t, g, v);
+  }
+  groups::TangentOf<G> velocity(double t, const groups::ElementOf<G>& g, const groups::CovectorOf<G>& mu) const {
+    return lagrangian.velocity(t, g, mu);
+  }
+  groups::CovectorOf<G> point_gradient(double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) const {
+    return lagrangian.group_gradient(t, g, v);
+  }
 };
 
 }  // namespace cartan::general
