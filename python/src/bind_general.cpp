@@ -81,6 +81,16 @@ PointOf<M> point_arg(const M& manifold, const py::handle& q, const std::string& 
   return p;
 }
 
+/// A Python number as T (double or int); throws std::invalid_argument naming it otherwise.
+template <class T>
+T number_arg(const py::handle& x, const std::string& where, const char* name) {
+  try {
+    return x.cast<T>();
+  } catch (const py::cast_error&) {
+    throw_invalid(where, name, repr_of(x), std::is_integral_v<T> ? "is not an integer" : "is not a number");
+  }
+}
+
 template <class T>
 T finite_arg(const py::handle& x, const std::string& where, const char* name) {
   const T value = to_eigen<T>(x, where, name);
@@ -312,7 +322,7 @@ manifolds::GroupManifold<G> make_group_manifold(const py::object& connection, co
   const std::string kind = py::isinstance<py::str>(connection) ? connection.cast<std::string>() : std::string();
   if (kind == "cartan-schouten") {
     only("cartan-schouten", {{"lam", &lam}});
-    const double l = lam.cast<double>();
+    const double l = number_arg<double>(lam, where, "lam");
     require_finite(l, where, "lam");
     return GM::cartan_schouten(l);
   }
@@ -414,7 +424,7 @@ void bind_euclidean(py::module_& m) {
               }
             }
             if (!dim.is_none()) {
-              const int d = dim.cast<int>();
+              const int d = number_arg<int>(dim, "Euclidean", "dim");
               if ((d != 2 && d != 3) || (n != 0 && d != n)) {
                 throw_invalid("Euclidean", "dim", std::to_string(d),
                               n != 0 ? "does not match christoffel (of dimension " + std::to_string(n) + ")"
@@ -551,7 +561,7 @@ AnyLagrangian<M> request_lagrangian(const M&, const GeneralRequest& r, std::shar
   const Square<m> inertia = r.inertia.is_none() ? Square<m>::Identity().eval()
                                                 : matrix_or_diagonal<m>(r.inertia, kWhere, "inertia");
   if (!r.gravity.is_none()) {
-    const double G = r.gravity.cast<double>();
+    const double G = number_arg<double>(r.gravity, kWhere, "gravity");
     require_finite(G, kWhere, "gravity");
     if constexpr (!std::is_same_v<M, Sphere>) {
       throw_invalid(kWhere, "gravity", format_value(G),
