@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <variant>
@@ -300,38 +301,34 @@ manifolds::GroupManifold<G> make_group_manifold(const py::object& connection, co
   using GM = manifolds::GroupManifold<G>;
   constexpr int n = G::kDim;
   const std::string where = "GroupManifold";
-  // Each connection takes exactly its own parameter.
-  const auto only = [&](const char* kind, std::initializer_list<std::pair<const char*, const py::object*>> allowed) {
-    for (const auto& [arg, value] : std::initializer_list<std::pair<const char*, const py::object*>>{
-             {"lam", &lam}, {"metric", &metric}, {"alpha", &alpha}}) {
-      bool ok = false;
-      for (const auto& a : allowed) ok = ok || std::string(a.first) == arg;
-      if (!ok && !value->is_none()) {
-        throw_invalid(where, arg, repr_of(*value),
-                      std::string("does not apply to connection ") + kind);
+  // Each connection takes exactly its own parameter (`needed`), or none.
+  const auto takes = [&](const std::string& kind, std::string_view needed) {
+    const std::pair<const char*, const py::object*> parameters[] = {{"lam", &lam}, {"metric", &metric}, {"alpha", &alpha}};
+    for (const auto& [parameter, value] : parameters) {
+      const bool is_needed = parameter == needed;
+      if (is_needed && value->is_none()) throw_invalid(where, parameter, "None", "must be given for connection " + kind);
+      if (!is_needed && !value->is_none()) {
+        throw_invalid(where, parameter, repr_of(*value), "does not apply to connection " + kind);
       }
-    }
-    for (const auto& a : allowed) {
-      if (a.second->is_none()) throw_invalid(where, a.first, "None", std::string("must be given for connection ") + kind);
     }
   };
   if (py::isinstance<connections::InvariantConnection<G>>(connection)) {
-    only("<Group>.Connection", {});
+    takes("<Group>.Connection", "");
     return GM(connection.cast<const connections::InvariantConnection<G>&>());
   }
   const std::string kind = py::isinstance<py::str>(connection) ? connection.cast<std::string>() : std::string();
   if (kind == "cartan-schouten") {
-    only("cartan-schouten", {{"lam", &lam}});
+    takes(kind, "lam");
     const double l = number_arg<double>(lam, where, "lam");
     require_finite(l, where, "lam");
     return GM::cartan_schouten(l);
   }
   if (kind == "levi-civita") {
-    only("levi-civita", {{"metric", &metric}});
+    takes(kind, "metric");
     return GM::levi_civita(matrix_or_diagonal<n>(metric, where, "metric"));
   }
   if (kind == "coefficients") {
-    only("coefficients", {{"alpha", &alpha}});
+    takes(kind, "alpha");
     const auto a = tensor_arg<n>(alpha, where, "alpha");  // a[i](j, k) = alpha[i][j][k]
     typename connections::InvariantConnection<G>::Coefficients c;  // c[i](k, j): column j is alpha(e_i, e_j)
     for (int i = 0; i < n; ++i) c[i] = a[i].transpose();

@@ -62,7 +62,8 @@ def test_sphere_geometry_closed_forms():
     P = s.transport_along_step(q, x)
     np.testing.assert_allclose(P.T @ P, E3, atol=1e-13)  # a rotation
     a = np.linalg.norm(x)
-    np.testing.assert_allclose(P @ x, np.cos(a) * x - a * np.sin(a) * q, atol=1e-12)  # the geodesic's velocity is parallel
+    # The velocity of the geodesic is parallel along it.
+    np.testing.assert_allclose(P @ x, np.cos(a) * x - a * np.sin(a) * q, atol=1e-12)
     np.testing.assert_allclose(P @ q, p, atol=1e-12)  # the rotation moves q to p
     R = s.curvature_components(q)
     assert R.shape == (2, 2, 2, 2)
