@@ -26,6 +26,14 @@ The transported-velocity boundary-value problem (eq:reduced-system)
     :func:`solve` with ``method`` one of :data:`METHODS` (shooting solvers of the discrete scheme,
     or "collocation" of the continuous problem); returns a :class:`SolveResult`, which
     :func:`verify` checks independently of the solver (a :class:`VerifyReport`).
+Manifolds with a connection (docs/general-connections.md)
+    ``Sphere(), HyperbolicPlane(), Euclidean(christoffel, dim=), GroupManifold(group, connection,
+    lam=, metric=, alpha=)``, with ``christoffel, torsion, curvature, frame_bracket, step,
+    difference, transport_along_step, tangent_basis, metric, torsion_components,
+    curvature_components, has_parallel_torsion_and_curvature, validate``.
+The transported-velocity problem on any of them (general/solve.hpp)
+    :func:`solve_general` with l = 1/2 v.A v - V(q) or a Python Lagrangian; returns a
+    :class:`GeneralSolveResult`.
 General two-point boundary-value problems
     :func:`solve_bvp`, fourth-order adaptive collocation with scipy.integrate.solve_bvp's
     arguments (fun, bc, x, y, p, fun_jac, bc_jac, tol, max_nodes, bc_tol); returns a
@@ -43,6 +51,9 @@ from . import _cartan
 from ._cartan import (  # noqa: F401  (re-exported)
     SE2,
     BvpSolution,
+    Euclidean,
+    GroupManifold,
+    HyperbolicPlane,
     SE3,
     SO3,
     H3Oscillator,
@@ -58,6 +69,7 @@ from ._cartan import (  # noqa: F401  (re-exported)
     SO3OscillatorHamiltonian,
     SpatialRigidBody,
     SpatialRigidBodyHamiltonian,
+    Sphere,
 )
 
 GROUPS = (SO3, Heisenberg, SE3, SE2)
@@ -65,6 +77,8 @@ GROUPS = (SO3, Heisenberg, SE3, SE2)
 METHODS = tuple(SO3.methods)
 #: Every status word a solver reports (the same as the CLI's JSON).
 STATUSES = tuple(_cartan.statuses)
+#: The manifold classes :func:`solve_general` accepts.
+MANIFOLDS = (Sphere, HyperbolicPlane, Euclidean, GroupManifold)
 
 __all__ = [
     "SO3", "Heisenberg", "SE3", "SE2", "GROUPS", "METHODS", "STATUSES",
@@ -74,6 +88,7 @@ __all__ = [
     "Trajectory", "SolveResult", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve",
     "VerifyReport", "verify",
     "BvpResult", "BvpSolution", "solve_bvp",
+    "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "MANIFOLDS", "GeneralSolveResult", "solve_general",
 ]
 
 
@@ -174,6 +189,11 @@ class SolveResult:
     max_residual: Optional[float] = None
     group_defect: Optional[float] = None
 
+    @property
+    def converged(self):
+        """The same as `success` (the C++ result's converged())."""
+        return self.success
+
     def __repr__(self):
         return (f"SolveResult(status={self.status!r}, success={self.success}, method={self.method!r}, "
                 f"group={self.group!r}, lam={self.lam:g}, T={self.T:g}, N={self.N}, "
@@ -232,6 +252,99 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="no
     request.samples, request.max_nodes = samples, max_nodes
     d = grp._solve(lagrangian, lam, T, N, g0, gT, request, v0, xi0, guess, progress)
     return SolveResult(**d)
+
+
+@dataclass
+class GeneralSolveResult:
+    """The result of :func:`solve_general`, with the vocabulary of :class:`SolveResult`.
+
+    status: one of :data:`STATUSES`; success (also `converged`): status == "converged"; message,
+    method ("shooting"), order, branch: as in SolveResult; manifold: the manifold's name; T, N, q0,
+    qT, tol: the problem and the requested tolerance.
+    t (N+1,), q (N+1, *point_shape): the nodes and points; frame (N+1, d, m): the parallel frame
+    e_i(t_k) (frame[0] = frame0); v, mu (N+1, m): the transported velocity and the momentum in
+    components of frame0 (q' = frame @ v); Xi (N+1, m, m): the auxiliary Xi^k_n = int_t^T v^k mu_n.
+    A failed result carries the best iterate of the requested problem, or no rows at all.
+    v0, Xi0: the initial values; terminal_error = |difference(qT, q_N)|, xi_terminal = |Xi_N|;
+    iterations (Levenberg-Marquardt), sweeps (runs of the scheme); residual_history; solve_time:
+    seconds in the solver.
+    """
+    status: str
+    message: str
+    success: bool
+    method: str
+    order: int
+    branch: str
+    manifold: str
+    T: float
+    N: int
+    q0: np.ndarray = field(repr=False)
+    qT: np.ndarray = field(repr=False)
+    tol: float
+    t: np.ndarray
+    q: np.ndarray
+    frame: np.ndarray
+    v: np.ndarray
+    mu: np.ndarray
+    Xi: np.ndarray
+    v0: np.ndarray
+    Xi0: np.ndarray
+    terminal_error: float
+    xi_terminal: float
+    iterations: int
+    sweeps: int
+    residual_history: np.ndarray = field(repr=False)
+    solve_time: float
+
+    @property
+    def converged(self):
+        """The same as `success` (the C++ result's converged())."""
+        return self.success
+
+    def __repr__(self):
+        return (f"GeneralSolveResult(status={self.status!r}, success={self.success}, manifold={self.manifold!r}, "
+                f"T={self.T:g}, N={self.N}, order={self.order}, terminal_error={self.terminal_error:.3e}, "
+                f"iterations={self.iterations}, sweeps={self.sweeps}, branch={self.branch!r}, "
+                f"solve_time={self.solve_time:.4f})")
+
+
+def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, potential_gradient=None, gravity=None,
+                  lagrangian=None, frame0=None, method="auto", continuation="none", order=1, tol=1e-10,
+                  max_iterations=200, v0=None, Xi0=None, progress=None):
+    """Solves the transported-velocity boundary-value problem on a manifold with any linear connection
+    (docs/general-connections.md; the library's general::solve): on [0, T] with N steps, q(0) = q0,
+    q(T) = qT, for l(q, v) with v the components of the transported velocity in the frame `frame0`
+    of T_{q0}Q ((d, m); default manifold.tangent_basis(q0)), with the scheme of order 1 or 2.
+
+    manifold: a :class:`Sphere`, :class:`HyperbolicPlane`, :class:`Euclidean` or :class:`GroupManifold`
+    (any of :data:`MANIFOLDS`). Points q0, qT have the manifold's `point_shape` and must be valid
+    points (on the sphere, on the upper sheet of the hyperboloid, group elements).
+
+    The Lagrangian, either
+      l = 1/2 v.A v - V(q): inertia A, a symmetric positive-definite (m, m) matrix or its (m,)
+        diagonal (default identity); potential V(q) -> float with potential_gradient(q) -> an ambient
+        (d,) covector zeta with zeta . x = d/de V(step(q, e x)) for tangent x (both or neither; on a
+        group, the left-trivialised gradient); or gravity G, on the Sphere only: V = G q[2];
+      or lagrangian: an object with methods value(t, q, v), momentum(t, q, v) (= dl/dv, (m,)),
+        velocity(t, q, mu) (the inverse Legendre map) and point_gradient(t, q, v) (an ambient (d,)
+        covector with zeta . x = d/de l(t, step(q, e x), v)), taking and returning NumPy arrays.
+    method: "auto" (shooting from the guess, then continuation in T) or "shooting" (with continuation
+    "none" or "T"); the Lie-group solver's other methods need cartan.solve. tol: on the dimensionless
+    terminal residual |(difference(qT, q_N), Xi_N / s)|; max_iterations: Levenberg-Marquardt iterations
+    per stage. v0 (m,), Xi0 (m, m): guesses (default: the geodesic guess and 0). progress: a callable
+    (stage, iteration, residual) called once per iteration.
+
+    Solves without Python callbacks run without the GIL. Ctrl-C raises KeyboardInterrupt within one
+    iteration; invalid arguments raise ValueError naming the value; an exception raised in a Python
+    callback is re-raised unchanged. Returns a :class:`GeneralSolveResult`.
+    """
+    request = _cartan._GeneralRequest()
+    request.T, request.N, request.q0, request.qT = T, N, q0, qT
+    request.inertia, request.potential, request.potential_gradient = inertia, potential, potential_gradient
+    request.gravity, request.lagrangian, request.frame0 = gravity, lagrangian, frame0
+    request.method, request.continuation, request.order, request.tol = method, continuation, order, tol
+    request.max_iterations, request.v0, request.Xi0, request.progress = max_iterations, v0, Xi0, progress
+    return GeneralSolveResult(**_cartan._solve_general(manifold, request))
 
 
 @dataclass

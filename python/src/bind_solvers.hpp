@@ -50,10 +50,6 @@ struct SolveRequest {
   }
 };
 
-/// The monitor of a Python solve: Ctrl-C and exceptions of `progress` stop it by raising the
-/// Python error through the solver (error_already_set).
-SolveMonitor python_monitor(const py::object& progress);
-
 /// A trajectory from any object with t, g, v, xi (and mu when `with_mu`) as attributes or keys,
 /// e.g. a SolveResult: a guess for `solve` (mu is then not needed) or the data of `verify`.
 template <groups::LieGroup G>

@@ -9,4 +9,5 @@ void bind_heisenberg(pybind11::module_& m);
 void bind_se3(pybind11::module_& m);
 void bind_se2(pybind11::module_& m);
 void bind_bvp(pybind11::module_& m);  ///< solve_bvp and its dense output
+void bind_general(pybind11::module_& m);  ///< manifolds with a connection and solve_general
 }  // namespace cartan::python

@@ -102,4 +102,5 @@ PYBIND11_MODULE(_cartan, m) {
   cartan::python::bind_se3(m);
   cartan::python::bind_se2(m);
   cartan::python::bind_bvp(m);
+  cartan::python::bind_general(m);
 }

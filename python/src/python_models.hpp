@@ -26,6 +26,7 @@
 #include "cartan/groups/group.hpp"
 #include "cartan/mechanics/lagrangian.hpp"
 #include "cartan/mechanics/lagrangian_hessian.hpp"
+#include "cartan/monitor.hpp"
 #include "convert.hpp"
 
 namespace cartan::python {
@@ -67,6 +68,10 @@ auto run_with_callbacks(const CallbackState& state, F&& f) {
   rethrow_callback_error(state);
   return std::move(*result);
 }
+
+/// The monitor of a Python solve (cartan.solve, cartan.solve_general): Ctrl-C and exceptions of
+/// `progress` stop it by raising the Python error through the solver (error_already_set).
+SolveMonitor python_monitor(const py::object& progress);
 
 /// Converts a callback's return value; `where` names the method ("Lagrangian.momentum").
 template <class R>

@@ -1,0 +1,432 @@
+"""Manifolds with a connection and cartan.solve_general (include/cartan/manifolds, general/) from Python:
+geometry against closed forms, solutions against independent results, and errors.
+
+Tolerances (theory):
+* Geometry: closed forms evaluated in floating point: 1e-12 (finite-difference derivatives of the
+  Christoffel map do not occur: every built-in manifold has them analytically).
+* Spherical pendulum: with A = I and V = G z on S^2 the transported action is the classical one, so
+  the discrete solution converges to the classical pendulum at the scheme's order; integrating the
+  classical equation from q0 with the solver's q'(0) = frame0 @ v0 (solve_ivp, rtol 1e-12) misses qT
+  by the scheme's error in v0: O(h^2) at order 2 (measured 3.9e-4 at N = 200, 9.6e-5 at N = 400: ratio
+  4.00); the whole curve differs by as much (8.6e-5 at N = 400).
+* SO(3), Cartan-Schouten lambda: the general solver and the Lie-group lambda solver solve the same
+  discrete equations (docs/general-connections.md#reduction); both stop at |r| <= 1e-12 on a problem
+  whose root has O(1) sensitivity, so they agree to ~1e-10 (measured 6e-15: both converge past tol);
+  asserted 1e-10.
+* Energy 1/2 v.A v + V is conserved by the exact flow for every connection; the scheme's drift is
+  O(h^p): the ratio at N and 2N is 2 at order 1 and 4 at order 2 (measured 2.00 and 4.00 on the
+  anisotropic sphere A = diag(1, 3) from N = 150 to 1200; asserted within 15%).
+* A Python potential computes the same numbers as the built-in gravity (G q[2] and its gradient),
+  so the solutions agree to rounding: 1e-12.
+"""
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+from scipy.linalg import expm
+
+import cartan
+from cartan import Euclidean, GroupManifold, HyperbolicPlane, Sphere
+
+SO3 = cartan.SO3
+A0, AT = np.array([-1.0, -1, -1]), np.array([0.9, 1.0, 1.0])
+GT = SO3.minimal_rotation(A0, AT)
+E3 = np.eye(3)
+
+
+def minkowski(a, b):
+    return a[0] * b[0] + a[1] * b[1] - a[2] * b[2]
+
+
+# ---- geometry ----------------------------------------------------------------------------------
+
+def test_sphere_geometry_closed_forms():
+    s = Sphere()
+    q = Sphere.point([0.3, -0.4, 0.8])
+    e = s.tangent_basis(q)
+    assert e.shape == (3, 2) and s.dim == 2 and s.ambient_dim == 3 and s.point_shape == (3,)
+    np.testing.assert_allclose(e.T @ e, np.eye(2), atol=1e-14)
+    np.testing.assert_allclose(q @ e, 0, atol=1e-14)
+    x, y, z = e @ [0.7, -0.2], e @ [0.1, 0.5], e @ [-0.3, 0.4]
+    np.testing.assert_allclose(s.christoffel(q, x, y), q * (x @ y), atol=1e-14)
+    np.testing.assert_allclose(s.torsion(q, x, y), 0, atol=1e-14)
+    np.testing.assert_allclose(s.curvature(q, x, y, z), (y @ z) * x - (x @ z) * y, atol=1e-14)  # K = 1
+    p = s.step(q, x)
+    assert np.linalg.norm(p) == pytest.approx(1, abs=1e-14)
+    assert np.arccos(p @ q) == pytest.approx(np.linalg.norm(x), abs=1e-12)  # a great circle of length |x|
+    np.testing.assert_allclose(s.difference(q, p), x, atol=1e-12)
+    P = s.transport_along_step(q, x)
+    np.testing.assert_allclose(P.T @ P, E3, atol=1e-13)  # a rotation
+    a = np.linalg.norm(x)
+    # The velocity of the geodesic is parallel along it.
+    np.testing.assert_allclose(P @ x, np.cos(a) * x - a * np.sin(a) * q, atol=1e-12)
+    np.testing.assert_allclose(P @ q, p, atol=1e-12)  # the rotation moves q to p
+    R = s.curvature_components(q)
+    assert R.shape == (2, 2, 2, 2)
+    assert R[0, 1, 1, 0] == pytest.approx(1) and R[0, 1, 0, 1] == pytest.approx(-1)
+    np.testing.assert_allclose(s.torsion_components(q), 0, atol=1e-14)
+    np.testing.assert_allclose(s.metric(q), E3)
+    assert s.has_parallel_torsion_and_curvature()
+
+
+def test_hyperbolic_plane_geometry_closed_forms():
+    h = HyperbolicPlane()
+    q = HyperbolicPlane.point(0.3, -0.5)
+    assert minkowski(q, q) == pytest.approx(-1, abs=1e-14)
+    e = h.tangent_basis(q)
+    gram = np.array([[minkowski(a, b) for b in e.T] for a in e.T])
+    np.testing.assert_allclose(gram, np.eye(2), atol=1e-13)
+    x, y, z = e @ [0.7, -0.2], e @ [0.1, 0.5], e @ [-0.3, 0.4]
+    np.testing.assert_allclose(h.christoffel(q, x, y), -q * minkowski(x, y), atol=1e-14)
+    np.testing.assert_allclose(h.curvature(q, x, y, z), -(minkowski(y, z) * x - minkowski(x, z) * y), atol=1e-13)
+    p = h.step(q, x)
+    assert minkowski(p, p) == pytest.approx(-1, abs=1e-12) and p[2] > 0
+    assert np.arccosh(-minkowski(p, q)) == pytest.approx(np.sqrt(minkowski(x, x)), abs=1e-12)
+    np.testing.assert_allclose(h.difference(q, p), x, atol=1e-12)
+    assert h.curvature_components(q)[0, 1, 1, 0] == pytest.approx(-1)
+
+
+def test_euclidean_christoffel_index_convention():
+    rng = np.random.default_rng(3)
+    gamma = rng.normal(scale=0.5, size=(3, 3, 3))  # gamma[k, i, j] = Gamma^k_ij
+    r3 = Euclidean(gamma)
+    assert r3.dim == 3 and r3.point_shape == (3,)
+    np.testing.assert_array_equal(r3.christoffel_symbols, gamma)
+    q = np.array([0.1, 0.2, 0.3])
+    for i in range(3):
+        for j in range(3):
+            # nabla_{e_i} e_j = Gamma^k_ij e_k
+            np.testing.assert_allclose(r3.christoffel(q, E3[i], E3[j]), gamma[:, i, j], atol=1e-15)
+            np.testing.assert_allclose(r3.torsion(q, E3[i], E3[j]), gamma[:, i, j] - gamma[:, j, i], atol=1e-15)
+    x = np.array([0.3, -0.1, 0.4])
+    np.testing.assert_allclose(r3.transport_along_step(q, x), expm(-np.einsum("i,kij->kj", x, gamma)), atol=1e-13)
+    np.testing.assert_allclose(r3.step(q, x), q + x)
+    # R(x, y) z = Gamma(x, Gamma(y, z)) - Gamma(y, Gamma(x, z)) for constant symbols.
+    G = lambda a, b: np.einsum("kij,i,j->k", gamma, a, b)  # noqa: E731
+    y, z = np.array([1.0, 0, -1]), np.array([0.5, 2, 0])
+    np.testing.assert_allclose(r3.curvature(q, x, y, z), G(x, G(y, z)) - G(y, G(x, z)), atol=1e-13)
+    T = r3.torsion_components(q)  # T[i, j, k] = T_ij^k in the standard basis
+    np.testing.assert_allclose(T, np.transpose(gamma - np.transpose(gamma, (0, 2, 1)), (1, 2, 0)), atol=1e-15)
+    flat = Euclidean(dim=2)
+    assert flat.dim == 2 and flat.has_parallel_torsion_and_curvature() and flat.metric([0, 0]) is None
+    np.testing.assert_array_equal(flat.christoffel_symbols, np.zeros((2, 2, 2)))
+
+
+def test_group_manifold_alpha_index_convention_and_cartan_schouten():
+    lam = 0.3
+    cs = GroupManifold("so3", "cartan-schouten", lam=lam)
+    assert cs.lam == lam and cs.group is SO3 and cs.point_shape == (3, 3) and cs.dim == 3
+    g = SO3.exp([0.2, -0.4, 0.5])
+    x, y, z = np.array([0.3, 0.1, -0.2]), np.array([-0.5, 0.4, 0.2]), np.array([0.1, 0.9, 0.3])
+    np.testing.assert_allclose(cs.christoffel(g, x, y), lam * SO3.bracket(x, y), atol=1e-15)
+    np.testing.assert_allclose(cs.torsion(g, x, y), (2 * lam - 1) * SO3.bracket(x, y), atol=1e-15)  # tor-cur-lie-alg
+    np.testing.assert_allclose(cs.curvature(g, x, y, z), -lam * (1 - lam) * SO3.bracket(SO3.bracket(x, y), z),
+                               atol=1e-15)
+    np.testing.assert_allclose(cs.step(g, x), g @ SO3.exp(x), atol=1e-15)
+    np.testing.assert_allclose(cs.difference(g, cs.step(g, x)), x, atol=1e-14)
+    np.testing.assert_allclose(cs.transport_along_step(g, x), expm(-lam * SO3.ad(x)), atol=1e-14)
+    assert cs.has_parallel_torsion_and_curvature()
+    # alpha(e_i, e_j) = sum_k alpha[i, j, k] e_k: alpha[i, j, :] = lam [e_i, e_j].
+    alpha = np.array([[lam * SO3.bracket(E3[i], E3[j]) for j in range(3)] for i in range(3)])
+    np.testing.assert_allclose(cs.alpha, alpha, atol=1e-15)
+    rng = np.random.default_rng(5)
+    generic = rng.normal(size=(3, 3, 3))
+    c = GroupManifold("so3", "coefficients", alpha=generic)
+    np.testing.assert_array_equal(c.alpha, generic)
+    for i in range(3):
+        for j in range(3):
+            np.testing.assert_allclose(c.christoffel(g, E3[i], E3[j]), generic[i, j], atol=1e-15)
+    assert c.lam is None and not c.has_parallel_torsion_and_curvature()
+    # The same connection given by its Connection object, or by the group class.
+    via_object = GroupManifold(SO3, SO3.cartan_schouten(lam))
+    np.testing.assert_allclose(via_object.alpha, alpha, atol=1e-15)
+    np.testing.assert_allclose(via_object.connection.nabla(x, y), lam * SO3.bracket(x, y), atol=1e-15)
+
+
+def test_levi_civita_of_a_bi_invariant_metric_is_cartan_schouten_one_half():
+    lc = GroupManifold("so3", "levi-civita", metric=[1.0, 1.0, 1.0])
+    np.testing.assert_allclose(lc.alpha, GroupManifold("so3", lam=0.5).alpha, atol=1e-15)
+    np.testing.assert_allclose(lc.metric(E3), E3)
+    anisotropic = GroupManifold("so3", "levi-civita", metric=np.diag([2.0, 3.0, 4.0]))
+    assert not anisotropic.has_parallel_torsion_and_curvature()
+    np.testing.assert_allclose(anisotropic.torsion(E3, [1, 0, 0], [0, 1, 0]), 0, atol=1e-15)  # Levi-Civita
+
+
+@pytest.mark.parametrize("group", [cartan.Heisenberg, cartan.SE2, cartan.SE3])
+def test_other_group_manifolds(group):
+    gm = GroupManifold(group.name, "cartan-schouten", lam=0.5)
+    assert gm.point_shape == group.element_shape and gm.dim == group.dim and gm.group is group
+    rng = np.random.default_rng(1)
+    g, x, y = group.exp(rng.normal(size=group.dim)), rng.normal(size=group.dim), rng.normal(size=group.dim)
+    np.testing.assert_allclose(gm.step(g, x), group.compose(g, group.exp(x)), atol=1e-13)
+    np.testing.assert_allclose(gm.torsion(g, x, y), 0, atol=1e-13)  # lam = 1/2
+    np.testing.assert_allclose(gm.frame_bracket(x, y), group.bracket(x, y), atol=1e-14)
+
+
+# ---- solve_general -----------------------------------------------------------------------------
+
+def classical_pendulum_end(q0, velocity, G, T, t_eval=None):
+    def f(_, y):
+        q, p = y[:3], y[3:]
+        return np.concatenate([p, -G * (np.array([0, 0, 1.0]) - q[2] * q) - (p @ p) * q])
+    sol = solve_ivp(f, (0, T), np.concatenate([q0, velocity]), method="DOP853", rtol=1e-12, atol=1e-12,
+                    t_eval=t_eval)
+    assert sol.success
+    return sol.y[:3].T
+
+
+def test_spherical_pendulum_is_the_classical_one():
+    G, T = 9.81, 1.0
+    q0, qT = Sphere.point([1, 0, -0.3]), Sphere.point([0, 1, -0.5])
+    miss, curve_gap = [], []
+    for N in (200, 400):
+        r = cartan.solve_general(Sphere(), T=T, N=N, q0=q0, qT=qT, gravity=G, order=2, tol=1e-12)
+        assert r.converged and r.status == "converged", r.message
+        assert r.q.shape == (N + 1, 3) and r.v.shape == (N + 1, 2) and r.frame.shape == (N + 1, 3, 2)
+        assert r.Xi.shape == (N + 1, 2, 2) and r.terminal_error < 1e-10
+        np.testing.assert_allclose(r.frame[0], Sphere().tangent_basis(q0))
+        np.testing.assert_allclose(r.t, np.linspace(0, T, N + 1), atol=1e-12)
+        curve = classical_pendulum_end(q0, r.frame[0] @ r.v0, G, T, t_eval=np.linspace(0, T, N + 1))
+        miss.append(np.linalg.norm(curve[-1] - qT))
+        curve_gap.append(np.abs(curve - r.q).max())
+    assert miss[1] < 2e-4 and curve_gap[1] < 2e-4
+    assert miss[0] / miss[1] == pytest.approx(4.0, abs=0.8)
+    assert curve_gap[0] / curve_gap[1] == pytest.approx(4.0, abs=0.8)
+
+
+@pytest.mark.parametrize("order", [1, 2])
+def test_so3_cartan_schouten_equals_the_lambda_solver(order):
+    kwargs = dict(T=5.0, N=200, order=order, tol=1e-12, method="shooting")
+    lie = cartan.solve(cartan.RigidBody([2.0, 3.0, 4.0]), lam=0.3, gT=GT, **kwargs)
+    gen = cartan.solve_general(GroupManifold("so3", "cartan-schouten", lam=0.3), q0=np.eye(3), qT=GT,
+                               inertia=[2.0, 3.0, 4.0], **kwargs)
+    assert lie.converged and gen.converged, (lie.message, gen.message)
+    assert "constant frame components" in gen.message and gen.method == "shooting"
+    np.testing.assert_allclose(gen.v0, lie.v0, atol=1e-10)
+    np.testing.assert_allclose(gen.q, lie.g, atol=1e-10)
+    np.testing.assert_allclose(gen.v, lie.v, atol=1e-10)
+    np.testing.assert_allclose(gen.mu, lie.mu, atol=1e-10)
+    np.testing.assert_allclose(gen.t, lie.t, atol=1e-14)
+
+
+def sphere_energy(r, A, G):
+    return 0.5 * np.einsum("ki,ij,kj->k", r.v, A, r.v) + G * r.q[:, 2]
+
+
+@pytest.mark.parametrize("order", [1, 2])
+def test_energy_is_conserved_at_the_schemes_order(order):
+    A, G = np.diag([1.0, 3.0]), 2.0
+    q0, qT = Sphere.point([1, 0, 0.2]), Sphere.point([0, 1, -0.3])
+    drift = []
+    for N in (300, 600):
+        r = cartan.solve_general(Sphere(), T=1.5, N=N, q0=q0, qT=qT, inertia=A, gravity=G, order=order, tol=1e-12)
+        assert r.converged, r.message
+        e = sphere_energy(r, A, G)
+        drift.append(np.abs(e - e[0]).max())
+    assert drift[1] < 1e-2
+    assert drift[0] / drift[1] == pytest.approx(2.0 ** order, rel=0.15), drift
+
+
+def test_python_potential_equals_builtin_gravity():
+    A, G = [1.0, 2.5], 3.0
+    kwargs = dict(T=1.2, N=200, q0=Sphere.point([1, 0.2, 0.1]), qT=Sphere.point([-0.2, 1, -0.4]), inertia=A,
+                  order=2, tol=1e-12)
+    builtin = cartan.solve_general(Sphere(), gravity=G, **kwargs)
+    python = cartan.solve_general(Sphere(), potential=lambda q: G * q[2],
+                                  potential_gradient=lambda q: np.array([0, 0, G]), **kwargs)
+    assert builtin.converged and python.converged
+    np.testing.assert_allclose(python.v0, builtin.v0, atol=1e-12)
+    np.testing.assert_allclose(python.q, builtin.q, atol=1e-12)
+    # Without gravity the solution differs: the potential is really used.
+    free = cartan.solve_general(Sphere(), **kwargs)
+    assert np.abs(free.v0 - builtin.v0).max() > 1e-2
+
+
+class SphereKinetic:
+    """l = 1/2 v.A v - G q[2] on S^2 written in Python (the lagrangian= interface)."""
+
+    def __init__(self, A, G):
+        self.A, self.G = np.asarray(A, float), G
+
+    def value(self, t, q, v):
+        return 0.5 * v @ self.A @ v - self.G * q[2]
+
+    def momentum(self, t, q, v):
+        return self.A @ v
+
+    def velocity(self, t, q, mu):
+        return np.linalg.solve(self.A, mu)
+
+    def point_gradient(self, t, q, v):
+        return np.array([0.0, 0.0, -self.G])
+
+
+def test_python_lagrangian_object_equals_kinetic_potential():
+    A, G = np.diag([1.0, 2.5]), 3.0
+    kwargs = dict(T=1.2, N=150, q0=Sphere.point([1, 0.2, 0.1]), qT=Sphere.point([-0.2, 1, -0.4]), tol=1e-12)
+    builtin = cartan.solve_general(Sphere(), inertia=A, gravity=G, **kwargs)
+    python = cartan.solve_general(Sphere(), lagrangian=SphereKinetic(A, G), **kwargs)
+    assert builtin.converged and python.converged
+    np.testing.assert_allclose(python.v0, builtin.v0, atol=1e-12)
+    np.testing.assert_allclose(python.Xi0, builtin.Xi0, atol=1e-10)
+
+
+def test_flat_plane_gives_newtons_equations():
+    """R^2, Gamma = 0, l = 1/2 |v|^2 - k/2 |q|^2: q(t) = q0 cos wt + c sin wt, v0 = w c exactly;
+    the scheme of order 2 reaches it at O(h^2)."""
+    k, T = 2.0, 1.3
+    w = np.sqrt(k)
+    q0, qT = np.array([0.4, -0.2]), np.array([-0.3, 0.5])
+    exact = w * (qT - q0 * np.cos(w * T)) / np.sin(w * T)
+    errors = []
+    for N in (200, 400):
+        r = cartan.solve_general(Euclidean(dim=2), T=T, N=N, q0=q0, qT=qT, potential=lambda q: 0.5 * k * q @ q,
+                                 potential_gradient=lambda q: k * q, order=2, tol=1e-13)
+        assert r.converged, r.message
+        errors.append(np.linalg.norm(r.v0 - exact))
+    assert errors[1] < 1e-4 and errors[0] / errors[1] == pytest.approx(4.0, rel=0.15)
+
+
+def test_geodesic_of_the_hyperbolic_plane():
+    """A = I, V = 0 on H^2: the solution is the geodesic (the curvature term vanishes on Xi ~ v v^T),
+    so v is constant and equals the geodesic guess."""
+    h = HyperbolicPlane()
+    q0, qT = HyperbolicPlane.point(0.2, -0.1), HyperbolicPlane.point(-0.8, 0.6)
+    r = cartan.solve_general(h, T=2.0, N=100, q0=q0, qT=qT, tol=1e-12)
+    assert r.converged, r.message
+    np.testing.assert_allclose(r.v, np.broadcast_to(r.v0, r.v.shape), atol=1e-10)
+    u = r.frame[0] @ r.v0
+    assert np.sqrt(minkowski(u, u)) * 2.0 == pytest.approx(np.arccosh(-minkowski(q0, qT)), abs=1e-10)
+    np.testing.assert_allclose(r.q[50], h.step(q0, u), atol=1e-10)  # the midpoint of the geodesic
+
+
+def test_guess_frame_and_progress():
+    q0, qT = Sphere.point([1, 0, -0.3]), Sphere.point([0, 1, -0.5])
+    seen = []
+    r = cartan.solve_general(Sphere(), T=1.0, N=100, q0=q0, qT=qT, gravity=9.81, tol=1e-12,
+                             progress=lambda stage, it, res: seen.append((stage, it, res)))
+    assert r.converged and seen and seen[0][0] == "general shooting"
+    again = cartan.solve_general(Sphere(), T=1.0, N=100, q0=q0, qT=qT, gravity=9.81, tol=1e-12, method="shooting",
+                                 v0=r.v0, Xi0=r.Xi0)
+    assert again.converged and again.iterations <= 2 and again.branch == "shooting (from the given guess)"
+    # Another frame: v0 are components in it, the curve is the same.
+    e = Sphere().tangent_basis(q0)
+    frame0 = e @ np.array([[0.0, 2.0], [1.0, 0.0]])
+    # With inertia F^T F = diag(1, 4) in these components, l is the same function of q' (transport is an
+    # isometry), so the curve is the same.
+    other = cartan.solve_general(Sphere(), T=1.0, N=100, q0=q0, qT=qT, gravity=9.81, tol=1e-12, frame0=frame0,
+                                 inertia=[1.0, 4.0])
+    assert other.converged
+    np.testing.assert_allclose(other.q, r.q, atol=1e-9)
+    np.testing.assert_allclose(frame0 @ other.v0, e @ r.v0, atol=1e-9)
+
+
+def test_failed_solve_reports_its_status():
+    r = cartan.solve_general(Sphere(), T=1.0, N=100, q0=Sphere.point([1, 0, -0.3]), qT=Sphere.point([0, 1, -0.5]),
+                             gravity=9.81, tol=1e-12, method="shooting", max_iterations=1)
+    assert not r.converged and not r.success
+    assert r.status != "converged" and r.status in cartan.STATUSES
+    assert r.terminal_error > 1e-12
+
+
+# ---- errors ------------------------------------------------------------------------------------
+
+SPHERE_ARGS = dict(T=1.0, N=20, q0=[0, 0, 1.0], qT=Sphere.point([1, 0, 1]))
+
+
+@pytest.mark.parametrize("make, words", [
+    (lambda: cartan.solve_general(Sphere(), **{**SPHERE_ARGS, "q0": [1.0, 1, 1]}), ["q0", "not on the unit sphere"]),
+    (lambda: cartan.solve_general(Sphere(), potential=lambda q: q[2], **SPHERE_ARGS),
+     ["potential_gradient", "both or neither"]),
+    (lambda: cartan.solve_general(Sphere(), potential_gradient=lambda q: q, **SPHERE_ARGS), ["potential = None"]),
+    (lambda: cartan.solve_general(Sphere(), potential=1.0, potential_gradient=lambda q: q, **SPHERE_ARGS),
+     ["potential = \"1.0\"", "not callable"]),
+    (lambda: cartan.solve_general(Sphere(), inertia=[1.0, 2, 3], **SPHERE_ARGS), ["inertia", "(3,)", "(2, 2) or (2,)"]),
+    (lambda: cartan.solve_general(Sphere(), inertia=[1.0, -1], **SPHERE_ARGS), ["inertia", "positive definite"]),
+    (lambda: cartan.solve_general(Sphere(), gravity=1.0, lagrangian=SphereKinetic(np.eye(2), 1), **SPHERE_ARGS),
+     ["gravity", "lagrangian"]),
+    (lambda: cartan.solve_general(Sphere(), lagrangian=object(), **SPHERE_ARGS), ["has no method value"]),
+    (lambda: cartan.solve_general(Sphere(), gravity="strong", **SPHERE_ARGS), ["gravity", "not a number"]),
+    (lambda: cartan.solve_general(Sphere(), gravity=np.inf, **SPHERE_ARGS), ["gravity = inf"]),
+    (lambda: cartan.solve_general(Sphere(), v0=[0.0, 0, 0], **SPHERE_ARGS), ["v0", "(2,)"]),
+    (lambda: cartan.solve_general(Sphere(), Xi0=np.full((2, 2), np.nan), **SPHERE_ARGS), ["Xi0"]),
+    (lambda: cartan.solve_general(Sphere(), method="collocation", **SPHERE_ARGS),
+     ["collocation", "not available for a general connection"]),
+    (lambda: cartan.solve_general(Sphere(), method="nope", **SPHERE_ARGS), ["method", "nope"]),
+    (lambda: cartan.solve_general(Sphere(), order=3, **SPHERE_ARGS), ["order = 3"]),
+    (lambda: cartan.solve_general(Sphere(), frame0=[[1.0, 0], [0, 0], [0, 1]], **SPHERE_ARGS), ["frame0", "tangent"]),
+    (lambda: cartan.solve_general(Sphere(), **{**SPHERE_ARGS, "T": -1.0}), ["T = -1"]),
+    (lambda: cartan.solve_general(HyperbolicPlane(), gravity=1.0, T=1.0, N=10, q0=[0, 0, 1.0], qT=[0, 0, 1.0]),
+     ["gravity", "Sphere only"]),
+    (lambda: cartan.solve_general("sphere", **SPHERE_ARGS), ["manifold", "is not a manifold"]),
+    (lambda: cartan.solve_general(GroupManifold("so3", lam=0.5), T=1.0, N=10, q0=np.ones((3, 3)), qT=np.eye(3)),
+     ["q0", "orthogonal"]),
+    (lambda: GroupManifold("so3", "affine"), ["connection", "affine", "cartan-schouten"]),
+    (lambda: GroupManifold("so4", lam=0.5), ["group", "so4"]),
+    (lambda: GroupManifold("so3"), ["lam = None", "must be given"]),
+    (lambda: GroupManifold("so3", lam="half"), ["lam", "not a number"]),
+    (lambda: GroupManifold("so3", lam=np.nan), ["lam = nan"]),
+    (lambda: GroupManifold("so3", lam=0.5, metric=[1, 1, 1]), ["metric", "does not apply"]),
+    (lambda: GroupManifold("so3", "levi-civita", metric=[1.0, -1, 1]), ["metric", "positive definite"]),
+    (lambda: GroupManifold("so3", "coefficients", alpha=np.zeros((3, 3))), ["alpha", "(3, 3, 3)"]),
+    (lambda: GroupManifold("so3", SO3.cartan_schouten(0.5, side="right")), ["right"]),
+    (lambda: Euclidean(np.zeros((4, 4, 4))), ["christoffel", "(2, 2, 2) or (3, 3, 3)"]),
+    (lambda: Euclidean(), ["dim = None"]),
+    (lambda: Euclidean(dim=2.5), ["dim", "not an integer"]),
+    (lambda: Euclidean(np.zeros((2, 2, 2)), dim=3), ["dim = 3", "does not match"]),
+    (lambda: Sphere().torsion([1.0, 1, 0], [0, 0, 1], [0, 1, 0]), ["not on the unit sphere"]),
+    (lambda: Sphere().step([1.0, 0, 0], [0, np.nan, 1]), ["x", "finite"]),
+])
+def test_bad_input_raises_value_error_naming_the_value(make, words):
+    with pytest.raises(ValueError) as error:
+        make()
+    for word in words:
+        assert word in str(error.value), str(error.value)
+
+
+def test_callback_errors_are_reraised_unchanged():
+    class Boom(Exception):
+        pass
+
+    def V(q):
+        return q[2]
+
+    def gradient(q):
+        raise Boom("from the gradient")
+
+    with pytest.raises(Boom, match="from the gradient"):
+        cartan.solve_general(Sphere(), potential=V, potential_gradient=gradient, **SPHERE_ARGS)
+
+    class BadMomentum(SphereKinetic):
+        def momentum(self, t, q, v):
+            return np.zeros(3)  # wrong shape
+
+    with pytest.raises(ValueError, match=r"Lagrangian.momentum: return value .* must have shape \(2,\)"):
+        cartan.solve_general(Sphere(), lagrangian=BadMomentum(np.eye(2), 1.0), **SPHERE_ARGS)
+
+    def progress(stage, iteration, residual):
+        raise Boom("from progress")
+
+    with pytest.raises(Boom, match="from progress"):
+        cartan.solve_general(Sphere(), gravity=1.0, progress=progress, **SPHERE_ARGS)
+
+
+def test_ctrl_c_interrupts_a_solve_that_runs_without_the_gil():
+    """A built-in model runs without the GIL, so the timer thread can send SIGINT during the solve, and
+    the monitor's stop check raises KeyboardInterrupt within one iteration. (This solve runs ~6 s to
+    "stalled" uninterrupted; were the GIL held, the timer could only fire after it.)"""
+    timer = threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT))
+    start = time.perf_counter()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            cartan.solve_general(Sphere(), T=1.0, N=200000, q0=Sphere.point([1, 0, -0.3]),
+                                 qT=Sphere.point([0, 1, -0.5]), gravity=9.81, tol=1e-300, method="shooting",
+                                 max_iterations=100000)
+    finally:
+        timer.cancel()
+    assert time.perf_counter() - start < 3
