@@ -11,19 +11,6 @@ namespace {
 
 constexpr std::string_view kWhere = "cartan solve";
 
-template <groups::LieGroup G>
-manifolds::GroupManifold<G> manifold_of(const ProblemSpec& spec) {
-  constexpr int n = G::kDim;
-  if (spec.connection == "levi-civita") return manifolds::GroupManifold<G>::levi_civita(inertia_matrix<n>(spec.metric));
-  typename connections::InvariantConnection<G>::Coefficients c;
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      for (int k = 0; k < n; ++k) c[i](k, j) = spec.alpha_values[static_cast<std::size_t>((i * n + j) * n + k)];
-    }
-  }
-  return manifolds::GroupManifold<G>(connections::InvariantConnection<G>(groups::Side::Left, c));
-}
-
 /// alpha_values as the nested array alpha[i][j][k].
 nlohmann::json nested_alpha(const std::vector<double>& values, std::size_t n) {
   nlohmann::json out = nlohmann::json::array();
@@ -47,10 +34,7 @@ nlohmann::json solve_with_connection(const ProblemSpec& spec, const SolveMonitor
   return visit_model(spec.group, spec.model, kWhere, [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;
     using M = manifolds::GroupManifold<G>;
-    using L = general::OnGroupManifold<G, typename Entry::Lagrangian>;
-    const general::GeneralProblem<M, L> problem{manifold_of<G>(spec), L{make_lagrangian<Entry>(spec.inertia, kWhere)},
-                                                spec.T, spec.N, element_of<G>(spec.g0),
-                                                element_of<G>(final_element(spec)), std::nullopt};
+    const auto problem = connection_problem<Entry>(spec, kWhere);
     transported::SolveOptions options = solve_options(spec);
     options.monitor = monitor;
     general::GeneralGuess<M> guess;
@@ -61,15 +45,7 @@ nlohmann::json solve_with_connection(const ProblemSpec& spec, const SolveMonitor
     out["connection"] = spec.connection;
     if (spec.connection == "levi-civita") out["metric"] = spec.metric;
     if (spec.connection == "coefficients") out["alpha"] = nested_alpha(spec.alpha_values, G::kDim);
-    out["t"] = s.trajectory.t;
-    out["g"] = rows(s.trajectory.q);
-    out["v"] = rows(s.trajectory.v);
-    out["mu"] = rows(s.trajectory.mu);
-    out["Xi"] = rows(s.trajectory.Xi);
-    out["terminal_error"] = s.terminal_error;
-    out["xi_terminal"] = s.xi_terminal;
-    out["iterations"] = {{"outer", 0}, {"inner", s.iterations}, {"sweeps", s.sweeps}};
-    out["solve_time_s"] = s.solve_time_s;
+    add_general_solution(out, s, "g");
     return out;
   });
 }

@@ -8,10 +8,38 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cartan/general/problem.hpp"
 #include "cartan/monitor.hpp"
+#include "model_table.hpp"
 #include "problem_spec.hpp"
 
 namespace cartan::cli {
+
+/// The connection of a validated spec on the group G: levi-civita of spec.metric, or the bilinear
+/// map of spec.alpha_values (alpha(e_i, e_j) = sum_k alpha[i][j][k] e_k).
+template <groups::LieGroup G>
+manifolds::GroupManifold<G> connection_manifold(const ProblemSpec& spec) {
+  constexpr int n = G::kDim;
+  if (spec.connection == "levi-civita") return manifolds::GroupManifold<G>::levi_civita(inertia_matrix<n>(spec.metric));
+  typename connections::InvariantConnection<G>::Coefficients c;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      for (int k = 0; k < n; ++k) c[i](k, j) = spec.alpha_values[static_cast<std::size_t>((i * n + j) * n + k)];
+    }
+  }
+  return manifolds::GroupManifold<G>(connections::InvariantConnection<G>(groups::Side::Left, c));
+}
+
+/// The general problem of a validated group spec with a connection other than cartan-schouten,
+/// for the model table's Entry (visit_model).
+template <class Entry>
+auto connection_problem(const ProblemSpec& spec, std::string_view where) {
+  using G = typename Entry::Table::Group;
+  using L = general::OnGroupManifold<G, typename Entry::Lagrangian>;
+  return general::GeneralProblem<manifolds::GroupManifold<G>, L>{
+      connection_manifold<G>(spec), L{make_lagrangian<Entry>(spec.inertia, where)}, spec.T, spec.N,
+      element_of<G>(spec.g0), element_of<G>(final_element(spec)), std::nullopt};
+}
 
 /// Solves a validated group problem whose connection is not cartan-schouten.
 nlohmann::json solve_with_connection(const ProblemSpec& spec, const SolveMonitor& monitor);

@@ -9,10 +9,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cartan/general/problem.hpp"
+#include "cartan/manifolds/quadric.hpp"
 #include "cartan/monitor.hpp"
 #include "problem_spec.hpp"
 
 namespace cartan::cli {
+
+using SphereParticle = general::KineticPotential<manifolds::Sphere>;
+using SphereProblem = general::GeneralProblem<manifolds::Sphere, SphereParticle>;
+
+/// The problem of a validated --manifold sphere spec (its frame: e1 towards qT, e2 = q0 x e1).
+SphereProblem sphere_problem(const ProblemSpec& spec);
 
 /// Solves a validated --manifold problem (validate(spec) first). Throws std::invalid_argument for
 /// what validate cannot see (a model callback's defect).

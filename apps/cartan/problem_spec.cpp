@@ -297,9 +297,11 @@ void validate_connection(ProblemSpec& spec, std::size_t n) {
     if (!((m - m.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale) || Eigen::LLT<Eigen::MatrixXd>(m).info() != Eigen::Success) {
       bad("metric", excerpt(spec.metric), "must be symmetric positive definite");
     }
-  } else {
+  } else if (spec.alpha_values.empty()) {  // else given as numbers (a result file's echo)
     if (spec.alpha.empty()) bad("alpha", "(missing)", "is required by --connection coefficients");
     spec.alpha_values = read_alpha(spec.alpha, n);
+  } else if (spec.alpha_values.size() != n * n * n) {
+    bad("alpha", excerpt(spec.alpha_values), "must have " + std::to_string(n * n * n) + " numbers");
   }
 }
 
@@ -351,6 +353,8 @@ void validate_manifold_problem(ProblemSpec& spec) {
 }
 
 }  // namespace
+
+void check_connection(ProblemSpec& spec, std::size_t n) { validate_connection(spec, n); }
 
 void validate(ProblemSpec& spec) {
   if (is_manifold_problem(spec)) return validate_manifold_problem(spec);

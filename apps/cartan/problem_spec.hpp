@@ -102,6 +102,11 @@ inline bool is_manifold_problem(const ProblemSpec& spec) { return !spec.manifold
 /// point as an error row. Throws std::invalid_argument naming the first bad value.
 void validate(ProblemSpec& spec);
 
+/// The connection part of validate for a group of algebra dimension n: the connection's name, the
+/// options that belong to it, the metric (levi-civita) and alpha (coefficients: alpha_values if set,
+/// else read from the file alpha). Throws std::invalid_argument naming the first bad value.
+void check_connection(ProblemSpec& spec, std::size_t n);
+
 /// The final element of a validated spec as its numbers (so3: row-major): gT, or for so3 with
 /// a0/aT the minimal rotation taking a0 to aT.
 std::vector<double> final_element(const ProblemSpec& spec);

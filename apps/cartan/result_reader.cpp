@@ -74,6 +74,37 @@ Eigen::VectorXd times(const nlohmann::json& value, double T) {
   return t;
 }
 
+/// An n x n x n nested array of finite numbers, flattened in (i, j, k) order.
+std::vector<double> nested_numbers(const nlohmann::json& value, const std::string& name, std::size_t n) {
+  std::vector<double> out;
+  if (!value.is_array() || value.size() != n) bad(name, describe(value), "must be an n x n x n array, n = " + std::to_string(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::MatrixXd plane = table(value[i], name + "[" + std::to_string(i) + "]", n, n);
+    for (Eigen::Index a = 0; a < plane.rows(); ++a) {
+      for (Eigen::Index b = 0; b < plane.cols(); ++b) out.push_back(plane(a, b));
+    }
+  }
+  return out;
+}
+
+/// A --manifold sphere result: its echoed fields (checked and normalised by validate), then t,
+/// q (3 numbers a row), v, mu (2) and Xi (4).
+ResultFile read_sphere(const nlohmann::json& j, ResultFile& r) {
+  for (const auto& field : problem_fields()) {
+    if (!field.echoed || field.scope == ProblemField::Scope::Group) continue;
+    read_field(r.problem, field, require_key(j, field.key, kWhere, kResultFile), kWhere);
+  }
+  if (r.order != 1 && r.order != 2) bad("order", std::to_string(r.order), "must be 1 or 2 (the general solver's schemes)");
+  validate(r.problem);
+  r.t = times(require_key(j, "t", kWhere, kResultFile), r.problem.T);
+  const auto rows = static_cast<std::size_t>(r.t.size());
+  r.g = table(require_key(j, "q", kWhere, kResultFile), "q", rows, 3);
+  r.v = table(require_key(j, "v", kWhere, kResultFile), "v", rows, 2);
+  r.mu = table(require_key(j, "mu", kWhere, kResultFile), "mu", rows, 2);
+  r.Xi = table(require_key(j, "Xi", kWhere, kResultFile), "Xi", rows, 4);
+  return r;
+}
+
 /// The echoed problem fields (problem_fields()), read and checked as a problem file's, then the
 /// model (model_table.hpp), its inertia (by the library's model) and the boundary elements.
 ProblemSpec problem_of(const nlohmann::json& j) {
@@ -90,6 +121,12 @@ ProblemSpec problem_of(const nlohmann::json& j) {
     bad("inertia", excerpt(p.inertia), "must have " + std::to_string(n) + " or " + std::to_string(n * n) + " numbers");
   }
   check_inertia(model, p.inertia, kWhere);
+  if (j.contains("connection")) {  // the general solver's results on a group (connection_command.hpp)
+    p.connection = json_text(j["connection"], kWhere, "connection");
+    if (j.contains("metric")) p.metric = json_numbers(j["metric"], kWhere, "metric");
+    if (j.contains("alpha")) p.alpha_values = nested_numbers(j["alpha"], "alpha", n);
+    check_connection(p, n);
+  }
   for (const char* key : {"g0", "gT"}) {
     const Eigen::VectorXd x = numbers(require_key(j, key, kWhere, kResultFile), key, model.element_size);
     (key == std::string("g0") ? p.g0 : p.gT) = std::vector<double>(x.data(), x.data() + x.size());
@@ -102,17 +139,18 @@ ResultFile read(const nlohmann::json& j) {
   if (!j.is_object()) bad("result file", describe(j), "must be a JSON object");
   ResultFile r;
   r.status = one_of(require_key(j, "status", kWhere, kResultFile), "status", enum_words<Status>());
+  const auto read_method_and_order = [&] {
+    r.method = one_of(require_key(j, "method", kWhere, kResultFile), "method", enum_words<transported::Method>());
+    r.order = json_integer(require_key(j, "order", kWhere, kResultFile), kWhere, "order");
+    if (r.order != 1 && r.order != 2 && r.order != 4) bad("order", std::to_string(r.order), "must be 1, 2 or 4");
+  };
   if (j.contains("manifold")) {
-    bad("manifold", describe(j["manifold"]), "results (cartan solve --manifold) are not checked by verify yet");
-  }
-  if (j.contains("connection") && j["connection"] != "cartan-schouten") {
-    bad("connection", describe(j["connection"]), "results are not checked by verify yet");
+    read_method_and_order();
+    return read_sphere(j, r);
   }
   r.problem = problem_of(j);
   const ModelInfo& model = find_model(r.problem.group, r.problem.model, kWhere);
-  r.method = one_of(require_key(j, "method", kWhere, kResultFile), "method", enum_words<transported::Method>());
-  r.order = json_integer(require_key(j, "order", kWhere, kResultFile), kWhere, "order");
-  if (r.order != 1 && r.order != 2 && r.order != 4) bad("order", std::to_string(r.order), "must be 1, 2 or 4");
+  read_method_and_order();
   r.t = times(require_key(j, "t", kWhere, kResultFile), r.problem.T);
   const auto rows = static_cast<std::size_t>(r.t.size());
   r.g = table(require_key(j, "g", kWhere, kResultFile), "g", rows, model.element_size);
@@ -123,7 +161,11 @@ ResultFile read(const nlohmann::json& j) {
   const auto n = static_cast<std::size_t>(model.dim);
   r.v = table(require_key(j, "v", kWhere, kResultFile), "v", rows, n);
   r.mu = table(require_key(j, "mu", kWhere, kResultFile), "mu", rows, n);
-  r.xi = table(require_key(j, "xi", kWhere, kResultFile), "xi", rows, n);
+  if (r.general()) {
+    r.Xi = table(require_key(j, "Xi", kWhere, kResultFile), "Xi", rows, n * n);
+  } else {
+    r.xi = table(require_key(j, "xi", kWhere, kResultFile), "xi", rows, n);
+  }
   return r;
 }
 

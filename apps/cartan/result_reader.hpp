@@ -16,10 +16,16 @@ namespace cartan::cli {
 /// sampled trajectory, one row per time.
 struct ResultFile {
   std::string status, method;
-  ProblemSpec problem;         ///< group, model, inertia (n or n^2 numbers), lambda, T, N, tol, g0, gT
+  /// Groups: group, model, inertia (n or n^2 numbers), lambda, T, N, tol, g0, gT, connection
+  /// (metric, alpha_values); --manifold sphere: manifold, model, mass, gravity, q0, qT, T, N, tol.
+  ProblemSpec problem;
   int order = 0;
   Eigen::VectorXd t;           ///< M >= 2 strictly increasing times, t[0] = 0, t[M-1] = T
-  Eigen::MatrixXd g, v, mu, xi;  ///< M rows; g has the element's numbers (model_table.hpp), the others n
+  /// M rows: g has the element's numbers (model_table.hpp; the sphere: q, 3 numbers), v and mu n,
+  /// xi n (Cartan–Schouten) or Xi n^2 (the general solver: sphere or another connection).
+  Eigen::MatrixXd g, v, mu, xi, Xi;
+
+  bool general() const { return is_manifold_problem(problem) || is_general_connection(problem); }
 };
 
 /// Validates `j` and returns its contents. Throws std::invalid_argument ("cartan verify: <key> =

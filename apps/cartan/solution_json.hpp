@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "cartan/general/shooting.hpp"
 #include "cartan/transported/solution.hpp"
 #include "model_table.hpp"
 #include "problem_spec.hpp"
@@ -50,6 +51,22 @@ nlohmann::json solution_json(const ProblemSpec& spec, const transported::Transpo
     if (std::isfinite(s.collocation->group_defect)) out["group_defect"] = s.collocation->group_defect;
   }
   return out;
+}
+
+/// The trajectory and diagnostics of a general solution (general/shooting.hpp) under `point_key`
+/// ("q" on a manifold, "g" on a group): t, the points, v, mu, Xi (n^2 numbers a row, row-major),
+/// terminal_error, xi_terminal (|Xi_N|), iterations {outer: 0, inner, sweeps}, solve_time_s.
+template <manifolds::ManifoldWithConnection M>
+void add_general_solution(nlohmann::json& out, const general::GeneralSolution<M>& s, const char* point_key) {
+  out["t"] = s.trajectory.t;
+  out[point_key] = rows(s.trajectory.q);
+  out["v"] = rows(s.trajectory.v);
+  out["mu"] = rows(s.trajectory.mu);
+  out["Xi"] = rows(s.trajectory.Xi);
+  out["terminal_error"] = s.terminal_error;
+  out["xi_terminal"] = s.xi_terminal;
+  out["iterations"] = {{"outer", 0}, {"inner", s.iterations}, {"sweeps", s.sweeps}};
+  out["solve_time_s"] = s.solve_time_s;
 }
 
 }  // namespace cartan::cli

@@ -2,6 +2,7 @@
 // docs/verify.md).
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -48,8 +49,16 @@ int run_verify(const VerifyFlags& flags) {
     std::cout << flags.file << ": status " << quote_input(status) << " (not converged)\n" << report.text();
   } else {
     const ResultFile result = read_result(j);
-    std::cout << flags.file << ": " << result.problem.group << " " << result.problem.model << ", lambda = " << result.problem.lambda
-              << ", method " << result.method << " (order " << result.order << "), " << result.t.size()
+    const ProblemSpec& p = result.problem;
+    std::ostringstream what;
+    if (is_manifold_problem(p)) {
+      what << p.manifold << " " << p.model;
+    } else {
+      what << p.group << " " << p.model;
+      if (is_general_connection(p)) what << ", connection " << p.connection;
+      else what << ", lambda = " << p.lambda;
+    }
+    std::cout << flags.file << ": " << what.str() << ", method " << result.method << " (order " << result.order << "), " << result.t.size()
               << " samples, status " << result.status << "\n"
               << report.text();
   }

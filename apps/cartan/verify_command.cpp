@@ -1,5 +1,8 @@
 #include "verify_command.hpp"
 
+#include "cartan/general/verify.hpp"
+#include "connection_command.hpp"
+#include "manifold_command.hpp"
 #include "model_table.hpp"
 
 namespace cartan::cli {
@@ -38,6 +41,39 @@ transported::TransportedTrajectory<G> trajectory(const ResultFile& r) {
   return x;
 }
 
+/// The rows of a general result (t, points, v, mu, Xi row-major) as the general solver's trajectory.
+template <manifolds::ManifoldWithConnection M, class Point>
+general::GeneralTrajectory<M> general_trajectory(const ResultFile& r, Point point) {
+  general::GeneralTrajectory<M> x;
+  for (Eigen::Index k = 0; k < r.t.size(); ++k) {
+    x.t.push_back(r.t[k]);
+    x.q.push_back(point(Eigen::VectorXd(r.g.row(k).transpose())));
+    x.v.push_back(r.v.row(k).transpose());
+    x.mu.push_back(r.mu.row(k).transpose());
+    manifolds::ComponentMatrixOf<M> xi;
+    for (int a = 0; a < M::kDim; ++a) {
+      for (int b = 0; b < M::kDim; ++b) xi(a, b) = r.Xi(k, a * M::kDim + b);
+    }
+    x.Xi.push_back(xi);
+  }
+  return x;
+}
+
+/// The general solver's results: --manifold sphere, or a group with another connection.
+verify::Report verify_general_result(const ResultFile& r) {
+  const ProblemSpec& p = r.problem;
+  const Status status = parse_enum<Status>(r.status);
+  if (is_manifold_problem(p)) {
+    const auto x = general_trajectory<manifolds::Sphere>(r, [](const Eigen::VectorXd& q) { return Eigen::Vector3d(q); });
+    return general::verify_general(sphere_problem(p), x, r.order, p.tol, status);
+  }
+  return visit_model(p.group, p.model, kWhere, [&]<class Entry>(const Entry&) {
+    using G = typename Entry::Table::Group;
+    const auto x = general_trajectory<manifolds::GroupManifold<G>>(r, [](const Eigen::VectorXd& g) { return element<G>(g); });
+    return general::verify_general(connection_problem<Entry>(p, kWhere), x, r.order, p.tol, status);
+  });
+}
+
 }  // namespace
 
 nlohmann::json report_json(const verify::Report& report) {
@@ -51,6 +87,7 @@ nlohmann::json report_json(const verify::Report& report) {
 }
 
 verify::Report verify(const ResultFile& r) {
+  if (r.general()) return verify_general_result(r);
   const ProblemSpec& p = r.problem;
   return visit_model(p.group, p.model, kWhere, [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;

@@ -134,10 +134,21 @@ def test_manifold_options_are_refused_on_groups_and_unknown_manifolds():
     assert r.returncode == 2 and "q0 = (missing) is required" in r.stderr
 
 
-def test_verify_and_sweep_say_they_do_not_take_manifold_problems_yet(tmp_path):
-    sphere(tmp_path, "--T", "1", "--N", "50")
-    r = run("verify", str(tmp_path / "s.json"))
-    assert r.returncode == 2 and "not checked by verify yet" in r.stderr
+def test_verify_passes_sphere_results_and_fails_them_for_another_problem(tmp_path):
+    """cartan verify rebuilds the problem from the echoed fields and runs the general checks
+    (include/cartan/general/verify.hpp); the same data under another gravity fail them."""
+    for order in ("1", "2"):
+        sphere(tmp_path, "--gravity", "3", "--mass", "1,2.5", "--T", "1.2", "--N", "300", "--order", order)
+        r = run("verify", str(tmp_path / "s.json"))
+        assert r.returncode == 0 and "VERDICT: PASS" in r.stdout and "sphere particle" in r.stdout, r.stdout + r.stderr
+        data = json.loads((tmp_path / "s.json").read_text())
+        data["gravity"] = 3.5
+        (tmp_path / "wrong.json").write_text(json.dumps(data))
+        r = run("verify", str(tmp_path / "wrong.json"), "--json")
+        assert r.returncode == 1 and json.loads(r.stdout)["verdict"] == "FAIL", r.stdout
+
+
+def test_sweep_says_it_does_not_take_manifold_problems():
     r = run("sweep", "--manifold", "sphere", "--q0", Q0, "--qT", QT, "--lambdas", "0")
     assert r.returncode == 2 and "manifold" in r.stderr
 
@@ -222,9 +233,21 @@ def test_bad_alpha_file_shape(tmp_path):
     assert r.returncode == 2 and "must hold a 3 x 3 x 3 array of numbers" in r.stderr
 
 
-def test_verify_and_sweep_say_they_do_not_take_general_connections_yet(tmp_path):
-    solve_json(tmp_path, *FREE_BODY, "--N", "50", "--connection", "levi-civita")
+def test_verify_passes_connection_results_and_fails_them_for_another_connection(tmp_path):
+    solve_json(tmp_path, *FREE_BODY, "--N", "300", "--connection", "levi-civita", "--metric", "1,2,3", "--order", "2")
     r = run("verify", str(tmp_path / "r.json"))
-    assert r.returncode == 2 and "not checked by verify yet" in r.stderr
+    assert r.returncode == 0 and "VERDICT: PASS" in r.stdout and "connection levi-civita" in r.stdout, r.stdout + r.stderr
+    data = json.loads((tmp_path / "r.json").read_text())
+    data["metric"] = [1.0, 2.0, 4.0]
+    (tmp_path / "wrong.json").write_text(json.dumps(data))
+    r = run("verify", str(tmp_path / "wrong.json"))
+    assert r.returncode == 1 and "VERDICT: FAIL" in r.stdout, r.stdout
+    data["metric"] = [1.0, -2.0, 3.0]
+    (tmp_path / "bad.json").write_text(json.dumps(data))
+    r = run("verify", str(tmp_path / "bad.json"))
+    assert r.returncode == 2 and "metric = 1,-2,3 must be symmetric positive definite" in r.stderr
+
+
+def test_sweep_says_it_does_not_take_general_connections():
     r = run("sweep", *FREE_BODY, "--connection", "levi-civita", "--lambdas", "0")
     assert r.returncode == 2 and "connection" in r.stderr

@@ -1,0 +1,228 @@
+#pragma once
+// The verdict on a solution of the general problem (problem.hpp), with the checks, report and
+// thresholds of the Lie-group verifier (verify/report.hpp, docs/verify.md), reading only the samples
+// t_k, q_k, v_k, mu_k, Xi_k and the problem, never the solver:
+//   * boundary: |difference(q0, q_0)|, |difference(qT, q_N)|, |Xi_N| / max(1, xi_scale) against tol;
+//   * legendre: mu_k = dl/dv(t_k, q_k, v_k);
+//   * energy: E = mu.v - l is conserved for every connection when l does not depend on t
+//     (docs/general-connections.md#energy);
+//   * residual of the local form by three-point differences, the parallel frame rebuilt from the
+//     samples (E_{k+1} = transport_along_step(q_k, difference(q_k, q_{k+1})) E_k: exact for both
+//     schemes, whose steps are such pieces):
+//       q' = E v,   mu' = E^T grad l + mu(T(e_i, u)) + tr(Xi E^+ R(e_i, u) E),   Xi' = -v mu^T;
+//   * stationarity of the discrete transported action (action.hpp) along smooth endpoint-fixed
+//     variations.
+
+#include <Eigen/Eigenvalues>
+#include <numbers>
+#include <random>
+
+#include "cartan/general/action.hpp"
+#include "cartan/general/shooting.hpp"
+#include "cartan/verify/report.hpp"
+
+namespace cartan::general {
+
+/// The energy threshold's constant for the general solver (verify_general).
+inline constexpr double kGeneralEnergyConstant = 5.0;
+
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+class GeneralChecks {
+ public:
+  using Components = manifolds::ComponentsOf<M>;
+  using Vector = manifolds::VectorOf<M>;
+
+  /// `x` needs at least 2 samples at uniform times on [0, T] (validated by the caller).
+  GeneralChecks(const GeneralProblem<M, L>& problem, GeneralTrajectory<M> x) : p_(problem), x_(std::move(x)) {
+    x_.frame.assign(1, p_.initial_frame());
+    for (std::size_t k = 0; k + 1 < size(); ++k) {
+      x_.frame.push_back(p_.manifold.transport_along_step(x_.q[k], difference(k, k + 1)) * x_.frame.back());
+    }
+  }
+
+  std::size_t size() const { return x_.t.size(); }
+  double step() const { return p_.T / static_cast<double>(size() - 1); }
+
+  double boundary_error(double xi_unit) const {
+    return std::max({p_.manifold.difference(p_.q0, x_.q.front()).norm(), p_.manifold.difference(p_.qT, x_.q.back()).norm(),
+                     x_.Xi.back().norm() / xi_unit});
+  }
+
+  double legendre_residual() const {
+    double worst = 0, scale = 0;
+    for (std::size_t k = 0; k < size(); ++k) {
+      const Components m = p_.lagrangian.momentum(x_.t[k], x_.q[k], x_.v[k]);
+      worst = std::max(worst, (x_.mu[k] - m).norm());
+      scale = std::max(scale, x_.mu[k].norm() + m.norm());
+    }
+    return verify::relative_to(worst, scale);
+  }
+
+  double energy_drift() const {
+    auto energy = [&](std::size_t k) { return x_.mu[k].dot(x_.v[k]) - p_.lagrangian.value(x_.t[k], x_.q[k], x_.v[k]); };
+    double drift = 0, scale = 0;
+    for (std::size_t k = 0; k < size(); ++k) {
+      drift = std::max(drift, std::abs(energy(k) - energy(0)));
+      scale = std::max(scale, std::abs(energy(k)));
+    }
+    return verify::relative_to(drift, scale);
+  }
+
+  /// max_k |E_k v_k| (the speed in the representation) + sqrt(stiffness), the stiffness
+  /// |d grad l / dq| / lambda_min(dmu/dv) by central differences along the frame: h omega is the
+  /// angle one step sweeps, the resolution the thresholds are measured in.
+  double frequency() const {
+    double speed = 0, stiffness = 0;
+    const double s = 1e-5;
+    for (std::size_t k = 0; k < size(); ++k) {
+      const Vector u = x_.frame[k] * x_.v[k];
+      speed = std::max(speed, u.norm());
+      manifolds::ComponentMatrixOf<M> force, mass;
+      for (int i = 0; i < M::kDim; ++i) {
+        const Vector e = x_.frame[k].col(i) * s;
+        force.col(i) = x_.frame[k].transpose() *
+                       (gradient(k, p_.manifold.step(x_.q[k], e)) - gradient(k, p_.manifold.step(x_.q[k], Vector(-e)))) / (2 * s);
+        const Components dv = Components::Unit(i) * s;
+        mass.col(i) = (p_.lagrangian.momentum(x_.t[k], x_.q[k], Components(x_.v[k] + dv)) -
+                       p_.lagrangian.momentum(x_.t[k], x_.q[k], Components(x_.v[k] - dv))) / (2 * s);
+      }
+      const manifolds::ComponentMatrixOf<M> sym = (mass + mass.transpose()) / 2;
+      const double smallest = Eigen::SelfAdjointEigenSolver<manifolds::ComponentMatrixOf<M>>(sym, Eigen::EigenvaluesOnly).eigenvalues()[0];
+      if (smallest > 0) stiffness = std::max(stiffness, force.norm() / smallest);
+    }
+    return speed + std::sqrt(stiffness);
+  }
+
+  /// The local form's residual at the interior samples (header comment), each equation relative to
+  /// the largest sum of its terms' magnitudes; the worst of the three.
+  verify::Residual equation_residual() const {
+    double worst[3] = {0, 0, 0}, scale[3] = {0, 0, 0}, where[3] = {0, 0, 0};
+    const double h = step();
+    for (std::size_t k = 1; k + 1 < size(); ++k) {
+      const Vector dq = (difference(k, k + 1) - difference(k, k - 1)) / (2 * h);
+      const Components dmu = (x_.mu[k + 1] - x_.mu[k - 1]) / (2 * h);
+      const manifolds::ComponentMatrixOf<M> dXi = (x_.Xi[k + 1] - x_.Xi[k - 1]) / (2 * h);
+      const auto& E = x_.frame[k];
+      const Vector u = E * x_.v[k];
+      const auto dual = manifolds::dual_frame<M>(E);
+      const Vector mu_ambient = dual.transpose() * x_.mu[k];
+      const Eigen::Matrix<double, M::kAmbientDim, M::kAmbientDim> xi_ambient = E * x_.Xi[k] * dual;
+      const Components force = E.transpose() * gradient(k, x_.q[k]);
+      Components torsion, curvature;
+      for (int i = 0; i < M::kDim; ++i) {
+        const Vector e = E.col(i);
+        torsion[i] = mu_ambient.dot(manifolds::torsion(p_.manifold, x_.q[k], e, u));
+        curvature[i] = (xi_ambient * manifolds::curvature_operator(p_.manifold, x_.q[k], e, u)).trace();
+      }
+      const manifolds::ComponentMatrixOf<M> vmu = x_.v[k] * x_.mu[k].transpose();
+      const double size = x_.v[k].norm() * x_.mu[k].norm();
+      const double residual[3] = {(dq - u).norm(), (dmu - force - torsion - curvature).norm(), (dXi + vmu).norm()};
+      const double terms[3] = {dq.norm() + u.norm(), dmu.norm() + force.norm() + torsion.norm() + curvature.norm() + size,
+                               dXi.norm() + vmu.norm()};
+      for (int i = 0; i < 3; ++i) {
+        scale[i] = std::max(scale[i], terms[i]);
+        if (residual[i] > worst[i]) worst[i] = residual[i], where[i] = x_.t[k];
+      }
+    }
+    static const char* const kNames[3] = {"q' = E v", "mu equation", "Xi' = -v mu^T"};
+    verify::Residual out;
+    for (int i = 0; i < 3; ++i) {
+      const double r = verify::relative_to(worst[i], scale[i]);
+      if (i == 0 || r > out.relative) out = {r, kNames[i], where[i]};
+    }
+    return out;
+  }
+
+  /// max over `count` variations w_j(t) = sin(j pi t / T) (basis(q_k) r_j), r_j random unit, of
+  /// |dS_h/de| relative to sum_k h (|mu_k| |w_j'| + |grad l| |w_j|) (what dS would be without
+  /// cancellation).
+  double action_stationarity(int count, unsigned seed) const {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> normal;
+    const double h = step();
+    double worst = 0;
+    for (int j = 1; j <= count; ++j) {
+      Components r;
+      for (int i = 0; i < M::kDim; ++i) r[i] = normal(rng);
+      r.normalize();
+      const double frequency = j * std::numbers::pi / p_.T;
+      std::vector<Vector> w(size(), Vector::Zero());
+      double scale = 0;
+      for (std::size_t k = 0; k < size(); ++k) {
+        const double s = x_.t[k] * frequency;
+        if (k > 0 && k + 1 < size()) w[k] = p_.manifold.tangent_basis(x_.q[k]) * r * std::sin(s);
+        scale += h * (x_.mu[k].norm() * frequency * std::abs(std::cos(s)) + gradient(k, x_.q[k]).norm() * std::abs(std::sin(s)));
+      }
+      worst = std::max(worst, verify::relative_to(std::abs(discrete_action_derivative(p_, x_.q, w)), scale));
+    }
+    return worst;
+  }
+
+ private:
+  Vector difference(std::size_t a, std::size_t b) const { return p_.manifold.difference(x_.q[a], x_.q[b]); }
+  Vector gradient(std::size_t k, const manifolds::PointOf<M>& q) const {
+    return p_.lagrangian.point_gradient(x_.t[k], q, x_.v[k]);
+  }
+
+  const GeneralProblem<M, L>& p_;
+  GeneralTrajectory<M> x_;
+};
+
+/// Runs every check on `x` (t uniform on [0, T], at least 3 samples; q, v, mu, Xi at every time),
+/// a solution of `problem` to tolerance `tol` by a scheme of order `order` (1 or 2). A status
+/// other than converged adds a failing `converged` check. Throws std::invalid_argument for
+/// mismatched sizes, too few or non-uniform samples, a bad order or tol.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+verify::Report verify_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x, int order, double tol,
+                              Status status = Status::Converged) {
+  problem.validate();
+  constexpr std::string_view where = "verify_general";
+  if (order != 1 && order != 2) throw_invalid(where, "order", std::to_string(order), "must be 1 or 2");
+  if (!(tol > 0) || !std::isfinite(tol)) throw_invalid(where, "tol", format_value(tol), "must be positive and finite");
+  const std::size_t n = x.t.size();
+  if (n < 3 || x.q.size() != n || x.v.size() != n || x.mu.size() != n || x.Xi.size() != n) {
+    throw_invalid(where, "trajectory", "(" + std::to_string(n) + " times)", "needs q, v, mu and Xi at 3 or more times");
+  }
+  if (!verify::is_uniform(x.t) || std::abs(x.t.front()) > 1e-9 * problem.T || std::abs(x.t.back() - problem.T) > 1e-9 * problem.T) {
+    throw_invalid(where, "trajectory.t", "[" + format_value(x.t.front()) + ", " + format_value(x.t.back()) + "]",
+                  "must be uniform from 0 to T = " + format_value(problem.T));
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    problem.manifold.validate(x.q[k], "trajectory.q");
+    require_finite(x.v[k], where, "trajectory.v");
+    require_finite(x.mu[k], where, "trajectory.mu");
+    require_finite(x.Xi[k], where, "trajectory.Xi");
+  }
+  const GeneralChecks<M, L> checks(problem, x);
+  verify::Report report;
+  report.order = order;
+  report.resolution = checks.step() * checks.frequency();
+  auto threshold = [&](double constant) {
+    const double value = verify::discretisation_threshold(constant, report.resolution, order) + verify::threshold_floor(tol);
+    return std::isfinite(value) ? std::min(value, 1.0) : 1.0;
+  };
+  if (status != Status::Converged) report.checks.push_back(verify::convergence_check(status));
+  report.checks.push_back({"boundary", checks.boundary_error(std::max(1.0, xi_scale(problem))), tol, true,
+                           "max(|difference(q0, q_0)|, |difference(qT, q_N)|, |Xi_N| / max(1, xi_scale)) against tol"});
+  report.checks.push_back({"legendre", checks.legendre_residual(), verify::kLegendreThreshold, true,
+                           "max |mu - dl/dv(q, v)|, relative"});
+  // Energy: the schemes are not symplectic, and away from the Lie-group case the drift is not
+  // bounded in time: each step's error O((h omega)^(p+1)) E accumulates over T / h steps, so the
+  // bound is C (1 + T omega) rho^p. C = 5: the largest figure measured is 2.2 (1 + T omega) rho
+  // (order 1, S^2, A = diag(1, 2.5), G = 3, T omega = 2).
+  const double horizon_factor = 1 + problem.T * report.resolution / checks.step();
+  report.checks.push_back({"energy", checks.energy_drift(), threshold(kGeneralEnergyConstant * horizon_factor), true,
+                           "max |E - E(0)| / max |E|, E = mu.v - l (conserved for every connection when l does not "
+                           "depend on t)"});
+  const verify::Residual residual = checks.equation_residual();
+  report.checks.push_back({"residual", residual.relative, threshold(verify::kResidualConstant), true,
+                           "the local form by finite differences, worst: " + residual.equation + " at t = " +
+                               verify::Report::format(residual.t)});
+  report.checks.push_back({"stationarity", checks.action_stationarity(verify::kVariations, verify::kVariationSeed),
+                           threshold(verify::kActionConstant), true,
+                           "max |dS| / (size of its terms) over " + std::to_string(verify::kVariations) +
+                               " random endpoint-fixed variations"});
+  return report;
+}
+
+}  // namespace cartan::general
