@@ -23,7 +23,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from paper_experiments import LABELS, SPHERE_STYLE, sphere_axes, unit  # noqa: E402
+from paper_experiments import LABELS, SPHERE_STYLE, finish_sphere_figure, sphere_axes, unit  # noqa: E402
 
 SPHERE = dict(T=1.5, N=600, q0=(1.0, 0.0, -0.3), qT=(0.0, 1.0, -0.5), gravity=9.81)
 MASSES = [((1.0, 1.0), "#2ca02c", "-", r"$A = I$ (spherical pendulum)"),
@@ -45,15 +45,8 @@ def sphere_figure(cartan, out, rows):
                                  gravity=SPHERE["gravity"], order=2)
         rows.append((f"S^2 particle A = diag{mass}", r))
         ax.plot(*r.q.T, color=color, linestyle=style, linewidth=2.0, label=label)
-    ax.scatter(*np.array([q0, qT]).T, color="black", s=36, depthshade=False, zorder=5)
-    ax.text(*(1.12 * q0), "$q_0$", fontsize=12)
-    ax.text(*(1.12 * qT), "$q_T$", fontsize=12)
-    ax.view_init(elev=12, azim=-40)
-    ax.set_title(f"Particle on $S^2$, $l = \\frac{{1}}{{2}} v^T A v - G z$, $G = {SPHERE['gravity']}$, $T = {SPHERE['T']}$")
-    ax.legend(loc="upper left", frameon=False)
-    fig.tight_layout()
-    fig.savefig(out / "fig_sphere_particle.png", dpi=160)
-    plt.close(fig)
+    title = f"Particle on $S^2$, $l = \\frac{{1}}{{2}} v^T A v - G z$, $G = {SPHERE['gravity']}$, $T = {SPHERE['T']}$"
+    finish_sphere_figure(fig, ax, {"$q_0$": q0, "$q_T$": qT}, title, out / "fig_sphere_particle.png", view=(12, -40))
 
 
 def so3_figure(cartan, out, rows):
@@ -71,15 +64,9 @@ def so3_figure(cartan, out, rows):
         r = cartan.solve_general(manifold, T=SO3["T"], N=SO3["N"], q0=np.eye(3), qT=gT, inertia=list(INERTIA), order=2)
         rows.append((f"SO(3) Levi-Civita metric diag{metric}", r))
         ax.plot(*(r.q @ a0).T, color=color, linestyle=style, linewidth=2.0, label=label)
-    ax.scatter(*np.array([a0, aT]).T, color="black", s=36, depthshade=False, zorder=5)
-    ax.text(*(1.12 * a0), "$a_0$", fontsize=12)
-    ax.text(*(1.12 * aT), "$a_T$", fontsize=12)
-    ax.view_init(elev=18, azim=-58)
-    ax.set_title(f"Free rigid body, $a(t) = g(t)\\,a_0$, $T = {SO3['T']}$, five connections")
-    ax.legend(loc="upper left", frameon=False, fontsize=8)
-    fig.tight_layout()
-    fig.savefig(out / "fig_so3_connections.png", dpi=160)
-    plt.close(fig)
+    finish_sphere_figure(fig, ax, {"$a_0$": a0, "$a_T$": aT},
+                         f"Free rigid body, $a(t) = g(t)\\,a_0$, $T = {SO3['T']}$, five connections",
+                         out / "fig_so3_connections.png", view=(18, -58), legend_size=8)
 
 
 def main():

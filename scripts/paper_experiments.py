@@ -59,6 +59,19 @@ def sphere_axes(fig, position):
     return ax
 
 
+def finish_sphere_figure(fig, ax, endpoints, title, path, view, legend_size=None):
+    """Marks and names the endpoints (name -> point on the sphere), sets view, title and legend, saves."""
+    ax.scatter(*np.array(list(endpoints.values())).T, color="black", s=36, depthshade=False, zorder=5)
+    for name, point in endpoints.items():
+        ax.text(*(1.12 * np.asarray(point)), name, fontsize=12)
+    ax.view_init(elev=view[0], azim=view[1])
+    ax.set_title(title)
+    ax.legend(loc="upper left", frameon=False, fontsize=legend_size)
+    fig.tight_layout()
+    fig.savefig(path, dpi=160)
+    plt.close(fig)
+
+
 def so3_figure(cartan, model_name, case, out, rows):
     model = {"free-rigid-body": cartan.RigidBody, "oscillator": cartan.SO3Oscillator}[model_name](INERTIA)
     a0, aT = unit(case["a0"]), unit(case["aT"])
@@ -71,15 +84,8 @@ def so3_figure(cartan, model_name, case, out, rows):
         a = r.g @ a0  # a(t) = g(t) a0: the body-fixed direction seen in space
         color, style = SPHERE_STYLE[lam]
         ax.plot(*a.T, color=color, linestyle=style, linewidth=2.0, label=LABELS[lam])
-    ax.scatter(*np.array([a0, aT]).T, color="black", s=36, depthshade=False, zorder=5)
-    ax.text(*(1.12 * a0), "$a_0$", fontsize=12)
-    ax.text(*(1.12 * aT), "$a_T$", fontsize=12)
-    ax.view_init(elev=18, azim=-58)
-    ax.set_title(f"{case['title']} on SO(3): $a(t) = g(t)\\,a_0$, $T = {case['T']}$")
-    ax.legend(loc="upper left", frameon=False)
-    fig.tight_layout()
-    fig.savefig(out / f"fig_so3_{model_name}.png", dpi=160)
-    plt.close(fig)
+    finish_sphere_figure(fig, ax, {"$a_0$": a0, "$a_T$": aT}, f"{case['title']} on SO(3): $a(t) = g(t)\\,a_0$, $T = {case['T']}$",
+                         out / f"fig_so3_{model_name}.png", view=(18, -58))
 
 
 def heisenberg_figure(cartan, out, rows):
