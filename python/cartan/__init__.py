@@ -89,6 +89,7 @@ __all__ = [
     "VerifyReport", "verify",
     "BvpResult", "BvpSolution", "solve_bvp",
     "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "MANIFOLDS", "GeneralSolveResult", "solve_general",
+    "verify_general",
 ]
 
 
@@ -364,6 +365,21 @@ class VerifyReport:
 
     def __str__(self):
         return self.text
+
+
+def verify_general(result, manifold, *, inertia=None, potential=None, potential_gradient=None, gravity=None,
+                   lagrangian=None):
+    """Checks a :class:`GeneralSolveResult` on `manifold` independently of the solver, as
+    `cartan verify` does for --manifold and --connection results (docs/general-connections.md,
+    "Verification"): boundary conditions against result.tol, the Legendre relation, conservation of
+    E = mu.v - l, the residual of the local form by finite differences (the parallel frame rebuilt
+    from the samples) and the stationarity of the discrete transported action. The Lagrangian is given
+    as for :func:`solve_general`. `result` may be any object with the fields T, q0, qT, tol, order,
+    status, t, q, frame (frame[0] is the frame at q0), v, mu, Xi. Returns a :class:`VerifyReport`."""
+    request = _cartan._GeneralRequest()
+    request.inertia, request.potential, request.potential_gradient = inertia, potential, potential_gradient
+    request.gravity, request.lagrangian = gravity, lagrangian
+    return VerifyReport(**_cartan._verify_general(manifold, request, result))
 
 
 def verify(result, lagrangian, *, group=None):

@@ -26,6 +26,7 @@
 #include "bind_group.hpp"
 #include "bindings.hpp"
 #include "cartan/general/solve.hpp"
+#include "cartan/general/verify.hpp"
 #include "cartan/groups/heisenberg.hpp"
 #include "cartan/groups/se2.hpp"
 #include "cartan/groups/se3.hpp"
@@ -34,6 +35,7 @@
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"
 #include "python_models.hpp"
+#include "report_dict.hpp"
 
 namespace cartan::python {
 
@@ -668,6 +670,58 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r) {
   return d;
 }
 
+/// The library's general verifier (general/verify.hpp) on `result` (any object with T, q0, qT,
+/// tol, order, status, t, q, frame, v, mu, Xi, e.g. a GeneralSolveResult) for the Lagrangian of
+/// the request (as solve_general takes it).
+template <class M>
+py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object& result) {
+  constexpr const char* where = "cartan.verify_general";
+  const auto field = [&](const char* name) -> py::object {
+    if (!py::hasattr(result, name)) {
+      throw_invalid(where, "result", repr_of(result), std::string("has no field ") + name + " (give a GeneralSolveResult)");
+    }
+    return result.attr(name);
+  };
+  const Status status = parse_enum<Status>(py::cast<std::string>(field("status")), where);
+  const py::sequence times = field("t");
+  std::vector<double> t;
+  for (const auto& time : times) t.push_back(number_arg<double>(time, where, "t"));
+  if (t.empty() && status != Status::Converged) return report_dict(verify::unchecked_failure(status));
+  auto state = std::make_shared<CallbackState>();
+  std::optional<PythonManifoldLagrangian<M>> python_object;
+  bool python = false;
+  const py::sequence frames = field("frame"), q = field("q"), v = field("v"), mu = field("mu"), Xi = field("Xi");
+  if (py::len(frames) == 0) throw_invalid(where, "result.frame", "(empty)", "needs the frame at t = 0");
+  const general::GeneralProblem<M, AnyLagrangian<M>> problem{
+      manifold, request_lagrangian(manifold, r, state, python_object, python), number_arg<double>(field("T"), where, "T"),
+      static_cast<int>(std::max<std::size_t>(t.size(), 2) - 1), point_arg(manifold, field("q0"), where, "q0"),
+      point_arg(manifold, field("qT"), where, "qT"), to_eigen<FrameOf<M>>(frames[0], where, "frame[0]")};
+  general::GeneralTrajectory<M> x;
+  x.t = t;
+  if (py::len(q) != t.size() || py::len(v) != t.size() || py::len(mu) != t.size() || py::len(Xi) != t.size()) {
+    throw_invalid(where, "result", "(" + std::to_string(t.size()) + " times)", "needs q, v, mu and Xi at every time");
+  }
+  // Built by append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
+  const auto name = [](const char* field_name, std::size_t k) {
+    std::string s(field_name);
+    s.append("[").append(std::to_string(k)).append("]");
+    return s;
+  };
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    x.q.push_back(point_arg(manifold, q[k], where, name("q", k).c_str()));
+    x.v.push_back(to_eigen<ComponentsOf<M>>(v[k], where, name("v", k)));
+    x.mu.push_back(to_eigen<ComponentsOf<M>>(mu[k], where, name("mu", k)));
+    x.Xi.push_back(to_eigen<ComponentMatrixOf<M>>(Xi[k], where, name("Xi", k)));
+  }
+  const int order = py::cast<int>(field("order"));
+  const double tol = number_arg<double>(field("tol"), where, "tol");
+  const auto run = [&] { return general::verify_general(problem, x, order, tol, status); };
+  if (python) {
+    return report_dict(run_with_callbacks(python_object ? python_object->state() : *state, run));
+  }
+  return report_dict(run());
+}
+
 /// f(manifold) for the C++ manifold behind a Python manifold object.
 template <class F>
 py::dict visit_manifold(const py::handle& object, F&& f) {
@@ -720,6 +774,9 @@ void bind_general(py::module_& m) {
   m.def("_solve_general", [](const py::object& manifold, const GeneralRequest& request) {
     return visit_manifold(manifold, [&](const auto& mf) { return solve_on(mf, request); });
   }, py::arg("manifold"), py::arg("request"));
+  m.def("_verify_general", [](const py::object& manifold, const GeneralRequest& request, const py::object& result) {
+    return visit_manifold(manifold, [&](const auto& mf) { return verify_on(mf, request, result); });
+  }, py::arg("manifold"), py::arg("request"), py::arg("result"));
 }
 
 }  // namespace cartan::python

@@ -17,6 +17,7 @@
 #include <pybind11/stl.h>
 
 #include "bind_models.hpp"
+#include "report_dict.hpp"
 #include "cartan/transported/solve.hpp"
 #include "cartan/verify/report.hpp"
 
@@ -82,25 +83,6 @@ transported::TransportedTrajectory<G> trajectory_of(const py::object& source, co
   return tr;
 }
 
-/// The report of verify::verify_trajectory as a dict (python/cartan/__init__.py, VerifyReport).
-inline py::dict report_dict(const verify::Report& report) {
-  py::list checks;
-  for (const auto& c : report.checks) {
-    py::dict d;
-    d["name"] = c.name, d["figure"] = c.figure, d["threshold"] = c.threshold, d["result"] = c.verdict();
-    d["note"] = c.note;
-    checks.append(d);
-  }
-  py::dict d;
-  d["passed"] = report.passed();
-  d["verdict"] = report.passed() ? "PASS" : "FAIL";
-  d["resolution"] = report.resolution;
-  d["order"] = report.order;
-  d["amplification"] = report.amplification;
-  d["checks"] = checks;
-  d["text"] = report.text();
-  return d;
-}
 
 /// The solution as a dict of the fields of SolveResult (python/cartan/__init__.py).
 template <groups::LieGroup G>

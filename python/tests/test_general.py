@@ -430,3 +430,37 @@ def test_ctrl_c_interrupts_a_solve_that_runs_without_the_gil():
     finally:
         timer.cancel()
     assert time.perf_counter() - start < 3
+
+
+# ---- verify_general -----------------------------------------------------------------------------
+
+def test_verify_general_passes_honest_results_and_fails_another_problem():
+    """The library's general verifier (include/cartan/general/verify.hpp) from Python: a sphere
+    result passes at both orders; the same data under another gravity fail; a Python-callable
+    potential is checked like the built-in one; a failed solve fails."""
+    sphere = cartan.Sphere()
+    q0, qT = cartan.Sphere.point([1, 0, 0.2]), cartan.Sphere.point([0, 1, -0.3])
+    for order in (1, 2):
+        r = cartan.solve_general(sphere, T=1.2, N=300, q0=q0, qT=qT, inertia=[1, 2.5], gravity=3.0, order=order)
+        assert r.converged
+        report = cartan.verify_general(r, sphere, inertia=[1, 2.5], gravity=3.0)
+        assert report.passed and report.verdict == "PASS", report.text
+        assert not cartan.verify_general(r, sphere, inertia=[1, 2.5], gravity=3.5).passed
+        same = cartan.verify_general(r, sphere, inertia=[1, 2.5], potential=lambda q: 3.0 * q[2],
+                                     potential_gradient=lambda q: np.array([0, 0, 3.0]))
+        assert same.passed and [c["figure"] for c in same.checks] == [c["figure"] for c in report.checks]
+    failed = cartan.solve_general(sphere, T=1.2, N=300, q0=q0, qT=qT, inertia=[1, 2.5], gravity=3.0, max_iterations=1)
+    assert not failed.converged
+    assert not cartan.verify_general(failed, sphere, inertia=[1, 2.5], gravity=3.0).passed
+
+
+def test_verify_general_on_a_group_connection():
+    gT = cartan.SO3.minimal_rotation([-1, -1, -1], [0.9, 1, 1])
+    lc = cartan.GroupManifold("so3", "levi-civita", metric=[1, 2, 3])
+    r = cartan.solve_general(lc, T=3, N=200, q0=np.eye(3), qT=gT, inertia=[2, 3, 4], order=2)
+    assert r.converged
+    assert cartan.verify_general(r, lc, inertia=[2, 3, 4]).passed
+    other = cartan.GroupManifold("so3", "cartan-schouten", lam=0.3)
+    assert not cartan.verify_general(r, other, inertia=[2, 3, 4]).passed
+    with pytest.raises(ValueError, match="has no field"):
+        cartan.verify_general(object(), lc, inertia=[2, 3, 4])
