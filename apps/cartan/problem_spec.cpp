@@ -98,12 +98,13 @@ std::vector<ProblemField> make_fields() {
       {"order", &S::order, "1 (the paper's scheme) | 2 (second order) (default 1)", false, one_or_two, ProblemField::Scope::Any},
       {"tol", &S::tol, "tolerance (default 1e-10)", true, positive_finite, ProblemField::Scope::Any},
       {"samples", &S::samples, "collocation only: output at this many uniform times on [0, T] (0: the final mesh)",
-       false, non_negative, ProblemField::Scope::Group},
+       false, non_negative, ProblemField::Scope::Any},
       {"max_iterations", &S::max_iterations, "iteration limit of each loop (default 200)", false, at_least_one, ProblemField::Scope::Any},
       {"output", &S::output, "output file (default stdout)", false, nullptr, ProblemField::Scope::Any},
       {"connection", &S::connection,
        "groups: cartan-schouten (default, with --lambda) | levi-civita (of the left-invariant metric --metric) | "
-       "coefficients (the bilinear map of --alpha); the last two are solved by the general solver (methods auto, shooting)",
+       "coefficients (the bilinear map of --alpha); the last two are solved by the general solver (methods auto, shooting, "
+       "collocation)",
        false, nullptr, ProblemField::Scope::Group},
       {"metric", &S::metric, "levi-civita: the metric, n numbers (diagonal) or n*n (default: the inertia)", false, nullptr,
        ProblemField::Scope::Group},
@@ -255,6 +256,33 @@ std::vector<double> read_alpha(const std::string& path, std::size_t n) {
   return out;
 }
 
+/// --samples: with --method collocation only, 0 or at least 2, within the memory limit.
+void check_samples(const ProblemSpec& spec, transported::Method method) {
+  require_memory("samples", spec.samples, kBytesPerNode * spec.samples, "the sampled output, ~1 KiB per sample");
+  if (spec.samples != 0 && method != transported::Method::Collocation) {
+    bad("samples", std::to_string(spec.samples), "is an option of --method collocation only");
+  }
+  if (spec.samples == 1) bad("samples", "1", "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");
+}
+
+/// The general solver's methods (general/solve.hpp): auto, shooting, collocation; continuation
+/// none or T, with shooting and collocation only.
+void check_general_method(const ProblemSpec& spec, const std::string& problem) {
+  const transported::Method method = parse_enum<transported::Method>(spec.method, "cartan solve");
+  if (method != transported::Method::Auto && method != transported::Method::Shooting &&
+      method != transported::Method::Collocation) {
+    bad("method", quote_input(spec.method), "is not a method of " + problem + " (methods: auto, shooting, collocation)");
+  }
+  const transported::Continuation continuation = parse_enum<transported::Continuation>(spec.continuation, "cartan solve");
+  if (continuation == transported::Continuation::Lambda) {
+    bad("continuation", quote_input(spec.continuation), "is not an option of " + problem + " (none, T)");
+  }
+  if (continuation != transported::Continuation::None && method == transported::Method::Auto) {
+    bad("continuation", quote_input(spec.continuation), "is an option of --method shooting and collocation only");
+  }
+  check_samples(spec, method);
+}
+
 /// --connection: its name, the options that belong to it, the general solver's methods, and the
 /// metric (levi-civita: symmetric positive definite, default the inertia) or the alpha file.
 void validate_connection(ProblemSpec& spec, std::size_t n) {
@@ -272,13 +300,7 @@ void validate_connection(ProblemSpec& spec, std::size_t n) {
     bad("alpha", quote_input(spec.alpha), "is an option of --connection coefficients only");
   }
   if (c == "cartan-schouten") return;
-  const transported::Method method = parse_enum<transported::Method>(spec.method, "cartan solve");
-  if (method != transported::Method::Auto && method != transported::Method::Shooting) {
-    bad("method", quote_input(spec.method), "is not a method of --connection " + c + " (methods: auto, shooting)");
-  }
-  if (spec.continuation == "lambda") {
-    bad("continuation", quote_input(spec.continuation), "is not an option of --connection " + c + " (none, T)");
-  }
+  check_general_method(spec, "--connection " + c);
   if (!spec.xi0.empty()) bad("xi0", excerpt(spec.xi0), "is a guess of the Cartan-Schouten solver's xi, not of --connection " + c);
   if (c == "levi-civita") {
     if (spec.metric.empty()) spec.metric = spec.inertia;
@@ -321,17 +343,7 @@ void validate_manifold_problem(ProblemSpec& spec) {
   check_scope(spec, ProblemField::Scope::Sphere, "--manifold sphere (it belongs to problems on a group)");
   if (spec.model.empty()) spec.model = "particle";
   if (spec.model != "particle") bad("model", quote_input(spec.model), "is not a model of --manifold sphere (models: particle)");
-  const transported::Method method = parse_enum<transported::Method>(spec.method, "cartan solve");
-  if (method != transported::Method::Auto && method != transported::Method::Shooting) {
-    bad("method", quote_input(spec.method), "is not a method of --manifold sphere (methods: auto, shooting)");
-  }
-  const transported::Continuation continuation = parse_enum<transported::Continuation>(spec.continuation, "cartan solve");
-  if (continuation == transported::Continuation::Lambda) {
-    bad("continuation", quote_input(spec.continuation), "is not an option of --manifold sphere (none, T)");
-  }
-  if (continuation != transported::Continuation::None && method != transported::Method::Shooting) {
-    bad("continuation", quote_input(spec.continuation), "is an option of --method shooting only");
-  }
+  check_general_method(spec, "--manifold sphere");
   for (const auto& field : problem_fields()) check_field(spec, field, kWhere);
   require_memory("N", spec.N, kBytesPerNode * spec.N, "the trajectory and its JSON output, ~1 KiB per step");
   if (spec.mass.empty()) spec.mass = {1, 1};
@@ -382,16 +394,12 @@ void validate(ProblemSpec& spec) {
   if (spec.segments > spec.N) {
     bad("segments", std::to_string(spec.segments), "must be between 1 and N (0: the default, about 100 steps each)");
   }
-  require_memory("samples", spec.samples, kBytesPerNode * spec.samples, "the sampled output, ~1 KiB per sample");
+  check_samples(spec, method);
   require_memory("segments", spec.segments, kBytesPerSegmentSquared * spec.segments * spec.segments,
                  "the dense multiple-shooting Jacobian");
-  if (spec.samples != 0 && method != transported::Method::Collocation) {
-    bad("samples", std::to_string(spec.samples), "is an option of --method collocation only");
-  }
   if (spec.segments != 0 && method != transported::Method::MultipleShooting) {
     bad("segments", std::to_string(spec.segments), "is an option of --method multiple-shooting only");
   }
-  if (spec.samples == 1) bad("samples", "1", "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");
   if (spec.inertia.empty()) spec.inertia = model.default_inertia;
   if (spec.inertia.size() != n && spec.inertia.size() != n * n) {
     bad("inertia", excerpt(spec.inertia),

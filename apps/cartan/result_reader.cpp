@@ -94,7 +94,9 @@ ResultFile read_sphere(const nlohmann::json& j, ResultFile& r) {
     if (!field.echoed || field.scope == ProblemField::Scope::Group) continue;
     read_field(r.problem, field, require_key(j, field.key, kWhere, kResultFile), kWhere);
   }
-  if (r.order != 1 && r.order != 2) bad("order", std::to_string(r.order), "must be 1 or 2 (the general solver's schemes)");
+  if (r.order != 1 && r.order != 2 && r.order != transported::kCollocationOrder) {
+    bad("order", std::to_string(r.order), "must be 1 or 2 (the general solver's schemes) or 4 (collocation)");
+  }
   validate(r.problem);
   r.t = times(require_key(j, "t", kWhere, kResultFile), r.problem.T);
   const auto rows = static_cast<std::size_t>(r.t.size());

@@ -26,6 +26,14 @@ nlohmann::json rows(const std::vector<Value>& values) {
 /// A number for JSON: NaN and infinities (which JSON lacks) become null.
 inline nlohmann::json number_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
 
+/// Collocation's mesh_size, max_residual and (matrix groups) group_defect, when present.
+inline void add_collocation_report(nlohmann::json& out, const std::optional<transported::CollocationReport>& report) {
+  if (!report) return;
+  out["mesh_size"] = report->mesh_size;
+  out["max_residual"] = report->max_residual;
+  if (std::isfinite(report->group_defect)) out["group_defect"] = report->group_defect;
+}
+
 /// Every key of a `cartan solve` result: result_header, the trajectory (t, g, v, mu, xi), the
 /// diagnostics (terminal_error, xi_terminal, action, iterations, solve_time_s) and, for
 /// collocation, mesh_size, max_residual and (matrix groups) group_defect. `order` is the scheme's order
@@ -45,17 +53,14 @@ nlohmann::json solution_json(const ProblemSpec& spec, const transported::Transpo
   out["iterations"] = {{"outer", s.outer_iterations}, {"inner", s.inner_iterations}, {"sweeps", s.sweeps}};
   out["action"] = number_or_null(s.action);
   out["solve_time_s"] = s.solve_time_s;
-  if (s.collocation) {
-    out["mesh_size"] = s.collocation->mesh_size;
-    out["max_residual"] = s.collocation->max_residual;
-    if (std::isfinite(s.collocation->group_defect)) out["group_defect"] = s.collocation->group_defect;
-  }
+  add_collocation_report(out, s.collocation);
   return out;
 }
 
 /// The trajectory and diagnostics of a general solution (general/shooting.hpp) under `point_key`
 /// ("q" on a manifold, "g" on a group): t, the points, v, mu, Xi (n^2 numbers a row, row-major),
-/// terminal_error, xi_terminal (|Xi_N|), iterations {outer: 0, inner, sweeps}, solve_time_s.
+/// terminal_error, xi_terminal (|Xi_N|), iterations {outer: 0, inner, sweeps}, solve_time_s and,
+/// for collocation, mesh_size and max_residual.
 template <manifolds::ManifoldWithConnection M>
 void add_general_solution(nlohmann::json& out, const general::GeneralSolution<M>& s, const char* point_key) {
   out["t"] = s.trajectory.t;
@@ -67,6 +72,7 @@ void add_general_solution(nlohmann::json& out, const general::GeneralSolution<M>
   out["xi_terminal"] = s.xi_terminal;
   out["iterations"] = {{"outer", 0}, {"inner", s.iterations}, {"sweeps", s.sweeps}};
   out["solve_time_s"] = s.solve_time_s;
+  add_collocation_report(out, s.collocation);
 }
 
 }  // namespace cartan::cli

@@ -260,15 +260,17 @@ class GeneralSolveResult:
     """The result of :func:`solve_general`, with the vocabulary of :class:`SolveResult`.
 
     status: one of :data:`STATUSES`; success (also `converged`): status == "converged"; message,
-    method ("shooting"), order, branch: as in SolveResult; manifold: the manifold's name; T, N, q0,
-    qT, tol: the problem and the requested tolerance.
-    t (N+1,), q (N+1, *point_shape): the nodes and points; frame (N+1, d, m): the parallel frame
+    method ("shooting" or "collocation"), order, branch: as in SolveResult; manifold: the manifold's
+    name; T, N, q0, qT, tol: the problem and the requested tolerance.
+    t (N+1,), q (N+1, *point_shape): the nodes and points (collocation: the final mesh or the
+    `samples` times); frame (N+1, d, m): the parallel frame
     e_i(t_k) (frame[0] = frame0); v, mu (N+1, m): the transported velocity and the momentum in
     components of frame0 (q' = frame @ v); Xi (N+1, m, m): the auxiliary Xi^k_n = int_t^T v^k mu_n.
     A failed result carries the best iterate of the requested problem, or no rows at all.
     v0, Xi0: the initial values; terminal_error = |difference(qT, q_N)|, xi_terminal = |Xi_N|;
-    iterations (Levenberg-Marquardt), sweeps (runs of the scheme); residual_history; solve_time:
-    seconds in the solver.
+    iterations (Levenberg-Marquardt or collocation's Newton), sweeps (runs of the scheme; collocation:
+    Jacobian evaluations); residual_history; solve_time: seconds in the solver; mesh_size,
+    max_residual: collocation only (else None; order is then 4).
     """
     status: str
     message: str
@@ -296,6 +298,8 @@ class GeneralSolveResult:
     sweeps: int
     residual_history: np.ndarray = field(repr=False)
     solve_time: float
+    mesh_size: Optional[int] = None
+    max_residual: Optional[float] = None
 
     @property
     def converged(self):
@@ -311,7 +315,7 @@ class GeneralSolveResult:
 
 def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, potential_gradient=None, gravity=None,
                   lagrangian=None, frame0=None, method="auto", continuation="none", order=1, tol=1e-10,
-                  max_iterations=200, v0=None, Xi0=None, progress=None):
+                  max_iterations=200, v0=None, Xi0=None, guess=None, samples=0, max_nodes=None, progress=None):
     """Solves the transported-velocity boundary-value problem on a manifold with any linear connection
     (docs/general-connections.md; the library's general::solve): on [0, T] with N steps, q(0) = q0,
     q(T) = qT, for l(q, v) with v the components of the transported velocity in the frame `frame0`
@@ -329,11 +333,17 @@ def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, poten
       or lagrangian: an object with methods value(t, q, v), momentum(t, q, v) (= dl/dv, (m,)),
         velocity(t, q, mu) (the inverse Legendre map) and point_gradient(t, q, v) (an ambient (d,)
         covector with zeta . x = d/de l(t, step(q, e x), v)), taking and returning NumPy arrays.
-    method: "auto" (shooting from the guess, then continuation in T) or "shooting" (with continuation
-    "none" or "T"); the Lie-group solver's other methods need cartan.solve. tol: on the dimensionless
-    terminal residual |(difference(qT, q_N), Xi_N / s)|; max_iterations: Levenberg-Marquardt iterations
-    per stage. v0 (m,), Xi0 (m, m): guesses (default: the geodesic guess and 0). progress: a callable
-    (stage, iteration, residual) called once per iteration.
+    method: "auto" (shooting from the guess, then continuation in T, then collocation), "shooting"
+    (with continuation "none" or "T") or "collocation" of the continuous system (fourth order,
+    adaptive mesh; from `guess` or the geodesic guess, and with continuation "T" from the order-2
+    shooting solution when Newton fails from the geodesic guess); the Lie-group solver's other
+    methods need cartan.solve. tol: shooting, on the dimensionless terminal residual
+    |(difference(qT, q_N), Xi_N / s)|; collocation, on the relative RMS residual per interval.
+    max_iterations: Levenberg-Marquardt (Newton) iterations per stage (per mesh). v0 (m,), Xi0 (m, m):
+    guesses (default: the geodesic guess and 0); guess: a whole trajectory instead, any object with
+    t (from 0 to T), q, frame, v, mu, Xi such as an earlier GeneralSolveResult. samples (collocation):
+    output at this many uniform times (0: the final mesh); max_nodes (collocation, default 20000).
+    progress: a callable (stage, iteration, residual) called once per iteration.
 
     Solves without Python callbacks run without the GIL. Ctrl-C raises KeyboardInterrupt within one
     iteration; invalid arguments raise ValueError naming the value; an exception raised in a Python
@@ -345,6 +355,7 @@ def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, poten
     request.gravity, request.lagrangian, request.frame0 = gravity, lagrangian, frame0
     request.method, request.continuation, request.order, request.tol = method, continuation, order, tol
     request.max_iterations, request.v0, request.Xi0, request.progress = max_iterations, v0, Xi0, progress
+    request.guess, request.samples, request.max_nodes = guess, samples, max_nodes
     return GeneralSolveResult(**_cartan._solve_general(manifold, request))
 
 

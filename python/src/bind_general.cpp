@@ -534,6 +534,8 @@ struct GeneralRequest {
   double tol = 1e-10;
   int max_iterations = 200;
   py::object v0 = py::none(), Xi0 = py::none(), progress = py::none();
+  int samples = 0;
+  py::object max_nodes = py::none(), guess = py::none();
 };
 
 constexpr const char* kWhere = "cartan.solve_general";
@@ -606,6 +608,44 @@ AnyLagrangian<M> request_lagrangian(const M&, const GeneralRequest& r, std::shar
   return AnyLagrangian<M>::of(general::KineticPotential<M>(inertia, std::move(potential), std::move(gradient)));
 }
 
+/// `name` of `object` (an attribute), or an error naming what `object` should be.
+inline py::object field_of(const py::object& object, const char* name, const char* where, const char* what) {
+  if (!py::hasattr(object, name)) {
+    throw_invalid(where, what, repr_of(object), std::string("has no field ") + name + " (give a GeneralSolveResult)");
+  }
+  return object.attr(name);
+}
+
+/// The trajectory (t, q, frame, v, mu, Xi) of a GeneralSolveResult-like object, each entry checked
+/// (points valid on the manifold, finite components) with errors naming `what`.
+template <class M>
+general::GeneralTrajectory<M> trajectory_of(const M& manifold, const py::object& object, const char* where,
+                                            const char* what) {
+  const auto field = [&](const char* name) -> py::sequence { return field_of(object, name, where, what); };
+  const py::sequence times = field("t"), q = field("q"), frames = field("frame"), v = field("v"), mu = field("mu"),
+                     Xi = field("Xi");
+  general::GeneralTrajectory<M> x;
+  for (const auto& time : times) x.t.push_back(number_arg<double>(time, where, "t"));
+  const std::size_t n = x.t.size();
+  if (py::len(q) != n || py::len(frames) != n || py::len(v) != n || py::len(mu) != n || py::len(Xi) != n) {
+    throw_invalid(where, what, "(" + std::to_string(n) + " times)", "needs q, frame, v, mu and Xi at every time");
+  }
+  // Built by append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
+  const auto name = [what](const char* field_name, std::size_t k) {
+    std::string s(what);
+    s.append(".").append(field_name).append("[").append(std::to_string(k)).append("]");
+    return s;
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    x.q.push_back(point_arg(manifold, q[k], where, name("q", k).c_str()));
+    x.frame.push_back(to_eigen<FrameOf<M>>(frames[k], where, name("frame", k)));
+    x.v.push_back(to_eigen<ComponentsOf<M>>(v[k], where, name("v", k)));
+    x.mu.push_back(to_eigen<ComponentsOf<M>>(mu[k], where, name("mu", k)));
+    x.Xi.push_back(to_eigen<ComponentMatrixOf<M>>(Xi[k], where, name("Xi", k)));
+  }
+  return x;
+}
+
 template <class M>
 py::dict solve_on(const M& manifold, const GeneralRequest& r) {
   using Problem = general::GeneralProblem<M, AnyLagrangian<M>>;
@@ -624,10 +664,13 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r) {
   options.order = r.order == 2 ? transported::SchemeOrder::Second : transported::SchemeOrder::First;
   options.tol = r.tol;
   options.max_iterations = r.max_iterations;
+  options.samples = r.samples;
+  if (!r.max_nodes.is_none()) options.max_nodes = number_arg<int>(r.max_nodes, where, "max_nodes");
   options.monitor = python_monitor(r.progress).stage("general shooting");  // copied here, with the GIL
   general::GeneralGuess<M> guess;
   if (!r.v0.is_none()) guess.v0 = finite_arg<ComponentsOf<M>>(r.v0, where, "v0");
   if (!r.Xi0.is_none()) guess.Xi0 = finite_arg<ComponentMatrixOf<M>>(r.Xi0, where, "Xi0");
+  if (!r.guess.is_none()) guess.trajectory = trajectory_of(manifold, r.guess, kWhere, "guess");
 
   const auto run = [&] { return general::solve(problem, options, guess); };
   const CallbackState& callbacks = python_object ? python_object->state() : *state;
@@ -667,6 +710,8 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r) {
   d["sweeps"] = s.sweeps;
   d["residual_history"] = to_numpy(s.residual_history);
   d["solve_time"] = s.solve_time_s;
+  d["mesh_size"] = s.collocation ? py::object(py::int_(s.collocation->mesh_size)) : py::object(py::none());
+  d["max_residual"] = s.collocation ? py::object(py::float_(s.collocation->max_residual)) : py::object(py::none());
   return d;
 }
 
@@ -676,43 +721,18 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r) {
 template <class M>
 py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object& result) {
   constexpr const char* where = "cartan.verify_general";
-  const auto field = [&](const char* name) -> py::object {
-    if (!py::hasattr(result, name)) {
-      throw_invalid(where, "result", repr_of(result), std::string("has no field ") + name + " (give a GeneralSolveResult)");
-    }
-    return result.attr(name);
-  };
+  const auto field = [&](const char* name) { return field_of(result, name, where, "result"); };
   const Status status = parse_enum<Status>(py::cast<std::string>(field("status")), where);
-  const py::sequence times = field("t");
-  std::vector<double> t;
-  for (const auto& time : times) t.push_back(number_arg<double>(time, where, "t"));
-  if (t.empty() && status != Status::Converged) return report_dict(verify::unchecked_failure(status));
+  if (py::len(field("t")) == 0 && status != Status::Converged) return report_dict(verify::unchecked_failure(status));
+  const general::GeneralTrajectory<M> x = trajectory_of(manifold, result, where, "result");
+  if (x.t.empty()) throw_invalid(where, "result.t", "(empty)", "needs the samples of a solution");
   auto state = std::make_shared<CallbackState>();
   std::optional<PythonManifoldLagrangian<M>> python_object;
   bool python = false;
-  const py::sequence frames = field("frame"), q = field("q"), v = field("v"), mu = field("mu"), Xi = field("Xi");
-  if (py::len(frames) == 0) throw_invalid(where, "result.frame", "(empty)", "needs the frame at t = 0");
   const general::GeneralProblem<M, AnyLagrangian<M>> problem{
       manifold, request_lagrangian(manifold, r, state, python_object, python), number_arg<double>(field("T"), where, "T"),
-      static_cast<int>(std::max<std::size_t>(t.size(), 2) - 1), point_arg(manifold, field("q0"), where, "q0"),
-      point_arg(manifold, field("qT"), where, "qT"), to_eigen<FrameOf<M>>(frames[0], where, "frame[0]")};
-  general::GeneralTrajectory<M> x;
-  x.t = t;
-  if (py::len(q) != t.size() || py::len(v) != t.size() || py::len(mu) != t.size() || py::len(Xi) != t.size()) {
-    throw_invalid(where, "result", "(" + std::to_string(t.size()) + " times)", "needs q, v, mu and Xi at every time");
-  }
-  // Built by append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
-  const auto name = [](const char* field_name, std::size_t k) {
-    std::string s(field_name);
-    s.append("[").append(std::to_string(k)).append("]");
-    return s;
-  };
-  for (std::size_t k = 0; k < t.size(); ++k) {
-    x.q.push_back(point_arg(manifold, q[k], where, name("q", k).c_str()));
-    x.v.push_back(to_eigen<ComponentsOf<M>>(v[k], where, name("v", k)));
-    x.mu.push_back(to_eigen<ComponentsOf<M>>(mu[k], where, name("mu", k)));
-    x.Xi.push_back(to_eigen<ComponentMatrixOf<M>>(Xi[k], where, name("Xi", k)));
-  }
+      static_cast<int>(std::max<std::size_t>(x.t.size(), 2) - 1), point_arg(manifold, field("q0"), where, "q0"),
+      point_arg(manifold, field("qT"), where, "qT"), x.frame.front()};
   const int order = py::cast<int>(field("order"));
   const double tol = number_arg<double>(field("tol"), where, "tol");
   const auto run = [&] { return general::verify_general(problem, x, order, tol, status); };
@@ -770,7 +790,10 @@ void bind_general(py::module_& m) {
       .def_readwrite("max_iterations", &GeneralRequest::max_iterations)
       .def_readwrite("v0", &GeneralRequest::v0)
       .def_readwrite("Xi0", &GeneralRequest::Xi0)
-      .def_readwrite("progress", &GeneralRequest::progress);
+      .def_readwrite("progress", &GeneralRequest::progress)
+      .def_readwrite("samples", &GeneralRequest::samples)
+      .def_readwrite("max_nodes", &GeneralRequest::max_nodes)
+      .def_readwrite("guess", &GeneralRequest::guess);
   m.def("_solve_general", [](const py::object& manifold, const GeneralRequest& request) {
     return visit_manifold(manifold, [&](const auto& mf) { return solve_on(mf, request); });
   }, py::arg("manifold"), py::arg("request"));

@@ -354,8 +354,8 @@ SPHERE_ARGS = dict(T=1.0, N=20, q0=[0, 0, 1.0], qT=Sphere.point([1, 0, 1]))
     (lambda: cartan.solve_general(Sphere(), gravity=np.inf, **SPHERE_ARGS), ["gravity = inf"]),
     (lambda: cartan.solve_general(Sphere(), v0=[0.0, 0, 0], **SPHERE_ARGS), ["v0", "(2,)"]),
     (lambda: cartan.solve_general(Sphere(), Xi0=np.full((2, 2), np.nan), **SPHERE_ARGS), ["Xi0"]),
-    (lambda: cartan.solve_general(Sphere(), method="collocation", **SPHERE_ARGS),
-     ["collocation", "not available for a general connection"]),
+    (lambda: cartan.solve_general(Sphere(), method="two-level", **SPHERE_ARGS),
+     ["two-level", "not available for a general connection"]),
     (lambda: cartan.solve_general(Sphere(), method="nope", **SPHERE_ARGS), ["method", "nope"]),
     (lambda: cartan.solve_general(Sphere(), order=3, **SPHERE_ARGS), ["order = 3"]),
     (lambda: cartan.solve_general(Sphere(), frame0=[[1.0, 0], [0, 0], [0, 1]], **SPHERE_ARGS), ["frame0", "tangent"]),
@@ -449,7 +449,8 @@ def test_verify_general_passes_honest_results_and_fails_another_problem():
         same = cartan.verify_general(r, sphere, inertia=[1, 2.5], potential=lambda q: 3.0 * q[2],
                                      potential_gradient=lambda q: np.array([0, 0, 3.0]))
         assert same.passed and [c["figure"] for c in same.checks] == [c["figure"] for c in report.checks]
-    failed = cartan.solve_general(sphere, T=1.2, N=300, q0=q0, qT=qT, inertia=[1, 2.5], gravity=3.0, max_iterations=1)
+    failed = cartan.solve_general(sphere, T=1.2, N=300, q0=q0, qT=qT, inertia=[1, 2.5], gravity=3.0, method="shooting",
+                                  max_iterations=1)
     assert not failed.converged
     assert not cartan.verify_general(failed, sphere, inertia=[1, 2.5], gravity=3.0).passed
 
@@ -464,3 +465,29 @@ def test_verify_general_on_a_group_connection():
     assert not cartan.verify_general(r, other, inertia=[2, 3, 4]).passed
     with pytest.raises(ValueError, match="has no field"):
         cartan.verify_general(object(), lc, inertia=[2, 3, 4])
+
+
+# ---- collocation ----------------------------------------------------------------------------------
+
+def test_collocation_is_the_classical_pendulum_and_restarts_from_a_result():
+    """method="collocation": the continuous system to tol (relative residual 1e-10), so SciPy's
+    pendulum from (q0, E0 v0) reaches qT to ~1e-9 (the order-2 scheme at N = 400: 1e-5). A result
+    given as `guess` starts it again (one Newton iteration); verify_general passes the samples."""
+    sphere, G, T = Sphere(), 9.81, 1.0
+    q0, qT = Sphere.point([1, 0, -0.3]), Sphere.point([0, 1, -0.5])
+    r = cartan.solve_general(sphere, T=T, N=40, q0=q0, qT=qT, gravity=G, method="collocation", continuation="T",
+                             tol=1e-10, samples=101)
+    assert r.converged and r.method == "collocation" and r.order == 4, r.message
+    assert r.mesh_size >= 41 and r.max_residual <= 1e-10 and r.t.shape == (101,)
+    assert np.linalg.norm(classical_pendulum_end(q0, r.frame[0] @ r.v0, G, T)[-1] - qT) < 1e-8
+    again = cartan.solve_general(sphere, T=T, N=40, q0=q0, qT=qT, gravity=G, method="collocation", tol=1e-10,
+                                 guess=r)
+    assert again.converged and again.branch == "collocation from the given trajectory"
+    np.testing.assert_allclose(again.v0, r.v0, atol=1e-9)
+    assert cartan.verify_general(r, sphere, gravity=G).passed
+    shooting = cartan.solve_general(sphere, T=T, N=40, q0=q0, qT=qT, gravity=G)
+    assert shooting.mesh_size is None and shooting.max_residual is None
+    with pytest.raises(ValueError, match="guess"):
+        cartan.solve_general(sphere, T=T, N=40, q0=q0, qT=qT, method="collocation", guess=object())
+    with pytest.raises(ValueError, match="samples"):
+        cartan.solve_general(sphere, T=T, N=40, q0=q0, qT=qT, samples=5)

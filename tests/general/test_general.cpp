@@ -14,7 +14,7 @@
 #include "cartan/manifolds/quadric.hpp"
 #include "cartan/mechanics/rigid_body.hpp"
 #include "cartan/transported/solve.hpp"  // the Lie-group solve, instantiated in the library
-#include "../transported/paper_cases.hpp"
+#include "general_cases.hpp"
 #include "test_support.hpp"
 
 namespace cartan::testing {
@@ -54,10 +54,6 @@ transported::TransportedSolution<groups::SO3> reference_solve(
   return transported::solve(problem, options);
 }
 
-template <class M>
-GeneralProblem<M, KineticPotential<M>> free_body_on(const M& manifold, const transported::TransportedProblem<groups::SO3, mechanics::RigidBody>& p) {
-  return {manifold, KineticPotential<M>(paper_inertia()), p.T, p.N, p.g0, p.gT, std::nullopt};
-}
 
 // A Lie group with alpha = lambda ad given as a general connection solves the same discrete
 // equations as the Cartan–Schouten solver (E_k = Ad(h_k), xi = C(Xi)): both converge to
@@ -117,16 +113,6 @@ TEST(GeneralSolver, FlatEuclideanSpaceGivesNewtonsEquationsAtTheSchemesOrder) {
   }
 }
 
-/// Energy drift max_k |E_k - E_0| of a converged solution for l = 1/2 v^T A v - V.
-template <class M>
-double energy_drift(const GeneralSolution<M>& s, const KineticPotential<M>& l) {
-  double drift = 0;
-  for (std::size_t k = 0; k < s.trajectory.q.size(); ++k) {
-    drift = std::max(drift, std::abs(l.energy(s.trajectory.q[k], s.trajectory.v[k]) -
-                                     l.energy(s.trajectory.q[0], s.trajectory.v[0])));
-  }
-  return drift;
-}
 
 // For l = 1/2 v^T A v - V(q), 1/2 v^T A v + V is conserved for every connection: the torsion and
 // curvature terms of mu' vanish against v by antisymmetry (docs/general-connections.md#energy).
@@ -168,30 +154,12 @@ TEST(GeneralSolver, SphericalPendulumIsTheClassicalOne) {
   const double G = 9.81, T = 1.0;
   const Eigen::Vector3d q0 = manifolds::sphere_point({1, 0, -0.3}), qT = manifolds::sphere_point({0, 1, -0.5});
   const auto lagrangian = KineticPotential<S2>::with_linear_potential(Eigen::Matrix2d::Identity(), Eigen::Vector3d(0, 0, G));
-  const auto reach = [&](const Eigen::Vector3d& velocity) {
-    using State = Eigen::Matrix<double, 6, 1>;
-    const auto f = [&](const State& y) {
-      const Eigen::Vector3d q = y.head<3>(), p = y.tail<3>();
-      State dy;
-      dy << p, -G * (Eigen::Vector3d::UnitZ() - q.z() * q) - p.squaredNorm() * q;
-      return dy;
-    };
-    State y;
-    y << q0, velocity;
-    const int steps = 20000;
-    const double h = T / steps;
-    for (int k = 0; k < steps; ++k) {
-      const State k1 = f(y), k2 = f(y + h / 2 * k1), k3 = f(y + h / 2 * k2), k4 = f(y + h * k3);
-      y += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
-    }
-    return Eigen::Vector3d(y.head<3>());
-  };
   double miss[2];
   for (int refinement = 0; refinement < 2; ++refinement) {
     const GeneralProblem<S2, KineticPotential<S2>> problem{S2{}, lagrangian, T, 200 << refinement, q0, qT, std::nullopt};
     const auto s = solve_general_shooting(problem, {.order = SchemeOrder::Second, .tolerance = 1e-12});
     ASSERT_TRUE(s.converged()) << s.message;
-    miss[refinement] = (reach(problem.initial_frame() * s.v0) - qT).norm();
+    miss[refinement] = (spherical_pendulum_endpoint(q0, problem.initial_frame() * s.v0, G, T) - qT).norm();
   }
   EXPECT_LT(miss[1], 1e-4);
   EXPECT_NEAR(miss[0] / miss[1], 4.0, 0.8);
@@ -229,7 +197,7 @@ TEST(GeneralSolve, DefaultShootingAndContinuationInTAgree) {
   transported::SolveOptions options;
   options.method = transported::Method::Shooting;
   options.continuation = transported::Continuation::None;
-  const auto from_guess = solve(problem, options, GeneralGuess<S2>{direct.v0, direct.Xi0});
+  const auto from_guess = solve(problem, options, GeneralGuess<S2>{direct.v0, direct.Xi0, std::nullopt});
   EXPECT_EQ(from_guess.branch, "shooting (from the given guess)");
   EXPECT_LE(from_guess.iterations, 2);
   options.continuation = transported::Continuation::T;

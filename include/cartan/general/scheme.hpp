@@ -15,6 +15,8 @@
 // every node and are computed once at (q0, E0).
 
 #include <array>
+#include <cmath>
+#include <string_view>
 #include <vector>
 
 #include "cartan/general/problem.hpp"
@@ -49,6 +51,32 @@ struct GeneralTrajectory {
     mu.push_back(node.mu), Xi.push_back(node.Xi);
   }
 };
+
+/// Throws std::invalid_argument naming `what` unless x has times from 0 to the problem's T
+/// (strictly increasing), as many q, frame, v, mu and Xi as times, all finite.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+void validate_trajectory(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x, std::string_view where,
+                         std::string_view what) {
+  const std::size_t n = x.t.size();
+  if (n < 2 || x.q.size() != n || x.frame.size() != n || x.v.size() != n || x.mu.size() != n || x.Xi.size() != n) {
+    throw_invalid(where, what, std::to_string(n) + " times",
+                  "needs at least 2 times and q, frame, v, mu, Xi at every time");
+  }
+  const double slack = 1e-12 * problem.T;
+  if (!(std::abs(x.t.front()) <= slack) || !(std::abs(x.t.back() - problem.T) <= slack)) {
+    throw_invalid(where, what, "t from " + format_value(x.t.front()) + " to " + format_value(x.t.back()),
+                  "must run from 0 to T = " + format_value(problem.T));
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k > 0 && !(x.t[k] > x.t[k - 1])) {
+      throw_invalid(where, what, "t[" + std::to_string(k) + "] = " + format_value(x.t[k]), "times must increase strictly");
+    }
+    if (!x.q[k].allFinite() || !x.frame[k].allFinite() || !x.v[k].allFinite() || !x.mu[k].allFinite() ||
+        !x.Xi[k].allFinite()) {
+      throw_invalid(where, what, "entry " + std::to_string(k), "must be finite");
+    }
+  }
+}
 
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 class GeneralScheme {

@@ -15,6 +15,7 @@
 #include "cartan/numerics/nonlinear_solve.hpp"
 #include "cartan/status.hpp"
 #include "cartan/transported/method.hpp"
+#include "cartan/transported/solution.hpp"
 
 namespace cartan::general {
 
@@ -35,6 +36,7 @@ struct GeneralSolution {
   int sweeps = 0;
   std::vector<double> residual_history;
   double solve_time_s = 0;
+  std::optional<transported::CollocationReport> collocation;  ///< method collocation: mesh and residual
 
   bool converged() const { return status == Status::Converged; }
 };

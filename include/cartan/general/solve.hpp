@@ -3,17 +3,22 @@
 // of the Lie-group solve (transported/solve.hpp: SolveOptions, Method, Continuation, Status):
 //   * Method::Shooting: shooting from the guess (default: the geodesic guess), or with
 //     Continuation::T by continuation in the horizon;
-//   * Method::Auto (default): shooting from the guess, then continuation in T.
+//   * Method::Collocation: collocation of the continuous system (collocation.hpp) from the guess
+//     trajectory or the geodesic guess; with Continuation::T, when Newton from the geodesic guess
+//     fails on the N-interval mesh, from the order-2 shooting solution found by continuation in T;
+//   * Method::Auto (default): shooting from the guess, then continuation in T, then collocation
+//     from the geodesic guess; the first success is returned and `branch` names the path.
 // Continuation in T halves the horizon (same step h, so N scales with T) until shooting from the
 // geodesic guess converges, then lengthens it, each stage starting from the previous (v0, Xi0);
 // a failed stage halves the increment. A failure returns the best iterate of the requested
 // problem (never a stage at another T), and `branch` names the path.
-// Other methods (multiple shooting, two-level, collocation) and continuation in lambda belong to
-// the Lie-group Cartan–Schouten solver; asking for them here is an error naming them.
+// Multiple shooting, two-level and continuation in lambda belong to the Lie-group Cartan–Schouten
+// solver; asking for them here is an error naming them.
 
 #include <optional>
 #include <sstream>
 
+#include "cartan/general/collocation.hpp"
 #include "cartan/general/shooting.hpp"
 #include "cartan/transported/solve_options.hpp"
 
@@ -23,6 +28,9 @@ template <manifolds::ManifoldWithConnection M>
 struct GeneralGuess {
   std::optional<manifolds::ComponentsOf<M>> v0;
   std::optional<manifolds::ComponentMatrixOf<M>> Xi0;
+  /// A whole trajectory from 0 to T (e.g. an earlier solution): the start of collocation, and its
+  /// first node the (v0, Xi0) of shooting.
+  std::optional<GeneralTrajectory<M>> trajectory;
 };
 
 namespace detail {
@@ -91,6 +99,40 @@ GeneralSolution<M> continue_in_T(const GeneralProblem<M, L>& problem, GeneralSho
   return best;
 }
 
+/// Method::Collocation (header comment).
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralSolution<M> collocation(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options,
+                               const GeneralGuess<M>& guess) {
+  const SolveMonitor stage = options.monitor.stage("collocation");
+  const numerics::CollocationOptions c{.tol = options.tol,
+                                       .max_nodes = options.max_nodes.value_or(transported::kTransportedMaxNodes),
+                                       .max_newton_iterations = options.max_iterations,
+                                       .monitor = &stage};
+  const GeneralTrajectory<M>* start = guess.trajectory ? &*guess.trajectory : nullptr;
+  const bool fallback = !start && options.continuation == transported::Continuation::T;
+  GeneralSolution<M> s = solve_general_collocation(problem, c, options.samples, start, !fallback);
+  if (!fallback || s.converged() || s.status == Status::Interrupted) return s;
+  const double seconds = s.solve_time_s;
+  GeneralShootingOptions shooting{.order = SchemeOrder::Second, .tolerance = options.tol,
+                                  .max_iterations = options.max_iterations, .no_progress_window = 8,
+                                  .monitor = &options.monitor};
+  GeneralSolution<M> direct = solve_general_shooting(problem, shooting);
+  direct.branch = "shooting from the geodesic guess";
+  GeneralSolution<M> path = direct.converged() ? std::move(direct) : continue_in_T(problem, shooting, std::move(direct));
+  if (!path.converged()) {
+    s.status = Status::ContinuationFailed;
+    s.message += "; the order-2 shooting fallback failed too: " + path.message;
+    s.branch += " (Newton failed on the N-interval mesh)";
+    s.solve_time_s += path.solve_time_s;
+    return s;
+  }
+  GeneralSolution<M> refined = solve_general_collocation(problem, c, options.samples, &path.trajectory);
+  refined.branch = "collocation from the order-2 shooting solution (" + path.branch +
+                   ") after Newton from the geodesic guess failed on the N-interval mesh";
+  refined.solve_time_s += seconds + path.solve_time_s;
+  return refined;
+}
+
 }  // namespace detail
 
 /// Solves the general problem. Throws std::invalid_argument for an invalid problem or options,
@@ -102,9 +144,9 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported:
   options.validate();
   using transported::Continuation;
   using transported::Method;
-  if (options.method != Method::Auto && options.method != Method::Shooting) {
+  if (options.method != Method::Auto && options.method != Method::Shooting && options.method != Method::Collocation) {
     throw_invalid("general::solve", "method", std::string(to_string(options.method)),
-                  "is not available for a general connection (methods: auto, shooting)");
+                  "is not available for a general connection (methods: auto, shooting, collocation)");
   }
   if (options.continuation == Continuation::Lambda) {
     throw_invalid("general::solve", "continuation", "lambda",
@@ -112,29 +154,45 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported:
   }
   if (guess.v0) require_finite(*guess.v0, "general::solve", "guess.v0");
   if (guess.Xi0) require_finite(*guess.Xi0, "general::solve", "guess.Xi0");
+  if (guess.trajectory) {
+    if (guess.v0 || guess.Xi0) throw std::invalid_argument("general::solve: give v0/Xi0 or a trajectory, not both");
+    validate_trajectory(problem, *guess.trajectory, "general::solve", "guess.trajectory");
+  }
+  if (options.method == Method::Collocation) return detail::collocation(problem, options, guess);
   GeneralShootingOptions shooting{.order = options.order, .tolerance = options.tol,
                                   .max_iterations = options.max_iterations, .no_progress_window = 0,
                                   .monitor = &options.monitor};
   const bool auto_strategy = options.method == Method::Auto;
   if (auto_strategy) shooting.no_progress_window = 8;
-  const std::string from = guess.v0 || guess.Xi0 ? "from the given guess" : "from the geodesic guess";
-  GeneralSolution<M> direct =
-      solve_general_shooting(problem, shooting, guess.v0.value_or(geodesic_guess(problem)),
-                             guess.Xi0.value_or(manifolds::ComponentMatrixOf<M>::Zero()));
+  const std::string from =
+      guess.v0 || guess.Xi0 || guess.trajectory ? "from the given guess" : "from the geodesic guess";
+  const GeneralTrajectory<M>* path = guess.trajectory ? &*guess.trajectory : nullptr;
+  GeneralSolution<M> direct = solve_general_shooting(
+      problem, shooting, path ? path->v.front() : guess.v0.value_or(geodesic_guess(problem)),
+      path ? path->Xi.front() : guess.Xi0.value_or(manifolds::ComponentMatrixOf<M>::Zero()));
   direct.branch = "shooting (" + from + ")";
   if (direct.converged() || direct.status == Status::Interrupted ||
       (!auto_strategy && options.continuation == Continuation::None)) {
     return direct;
   }
   GeneralSolution<M> continued = detail::continue_in_T(problem, shooting, direct);
-  if (auto_strategy) {
-    continued.branch += continued.converged() ? ", after shooting failed" : "";
-    if (!continued.converged()) {
-      continued.status = Status::StrategyFailed;
-      continued.message = "every method of the default strategy failed (shooting " + from +
-                          ", continuation in T): " + continued.message;
-    }
+  if (!auto_strategy || continued.converged() || continued.status == Status::Interrupted) {
+    if (auto_strategy) continued.branch += ", after shooting failed";
+    return continued;
   }
+  transported::SolveOptions c = options;
+  c.method = Method::Collocation;
+  c.max_iterations = std::min(options.max_iterations, 40);
+  GeneralGuess<M> start;
+  start.trajectory = guess.trajectory;
+  GeneralSolution<M> collocated = detail::collocation(problem, c, start);
+  if (collocated.converged()) {
+    collocated.branch += ", after shooting and continuation in T failed";
+    return collocated;
+  }
+  continued.status = collocated.status == Status::Interrupted ? Status::Interrupted : Status::StrategyFailed;
+  continued.message = "every method of the default strategy failed (shooting " + from +
+                      ", continuation in T, collocation): " + continued.message + "; collocation: " + collocated.message;
   return continued;
 }
 

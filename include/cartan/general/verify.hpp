@@ -169,7 +169,8 @@ class GeneralChecks {
 };
 
 /// Runs every check on `x` (t uniform on [0, T], at least 3 samples; q, v, mu, Xi at every time),
-/// a solution of `problem` to tolerance `tol` by a scheme of order `order` (1 or 2). A status
+/// a solution of `problem` to tolerance `tol` by a scheme of order `order` (1 or 2, or 4 for
+/// collocation, whose samples are checked at second order). A status
 /// other than converged adds a failing `converged` check. Throws std::invalid_argument for
 /// mismatched sizes, too few or non-uniform samples, a bad order or tol.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
@@ -177,7 +178,9 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
                               Status status = Status::Converged) {
   problem.validate();
   constexpr std::string_view where = "verify_general";
-  if (order != 1 && order != 2) throw_invalid(where, "order", std::to_string(order), "must be 1 or 2");
+  if (order != 1 && order != 2 && order != transported::kCollocationOrder) {
+    throw_invalid(where, "order", std::to_string(order), "must be 1 or 2 (the schemes) or 4 (collocation)");
+  }
   if (!(tol > 0) || !std::isfinite(tol)) throw_invalid(where, "tol", format_value(tol), "must be positive and finite");
   const std::size_t n = x.t.size();
   if (n < 3 || x.q.size() != n || x.v.size() != n || x.mu.size() != n || x.Xi.size() != n) {
@@ -195,10 +198,11 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
   }
   const GeneralChecks<M, L> checks(problem, x);
   verify::Report report;
-  report.order = order;
+  report.order = std::min(order, 2);  // collocation output is checked at second order too (verify/report.hpp)
   report.resolution = checks.step() * checks.frequency();
   auto threshold = [&](double constant) {
-    const double value = verify::discretisation_threshold(constant, report.resolution, order) + verify::threshold_floor(tol);
+    const double value =
+        verify::discretisation_threshold(constant, report.resolution, report.order) + verify::threshold_floor(tol);
     return std::isfinite(value) ? std::min(value, 1.0) : 1.0;
   };
   if (status != Status::Converged) report.checks.push_back(verify::convergence_check(status));

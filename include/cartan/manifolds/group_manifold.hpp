@@ -82,6 +82,8 @@ class GroupManifold {
   Vector frame_bracket(const Vector& x, const Vector& y) const { return groups::bracket<G>(x, y); }
   Point step(const Point& g, const Vector& x) const { return G::compose(g, G::exp(x)); }
   Vector difference(const Point& a, const Point& b) const { return groups::log_between<G>(a, b); }
+  /// The derivative of the stored element along g exp(s x) at s = 0: d(L_g)_e x.
+  Point point_velocity(const Point& g, const Vector& x) const { return G::left_translate(g, x); }
   Operator transport_along_step(const Point&, const Vector& x) const {
     return Operator(-connection_.nabla_operator(x)).exp();
   }

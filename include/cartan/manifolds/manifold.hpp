@@ -73,6 +73,21 @@ std::optional<typename M::Operator> metric_at(const M& manifold, const typename 
   }
 }
 
+/// d/ds of the point's storage along a curve with represented velocity x at q: x itself where
+/// points and vectors share their coordinates (charts, embeddings), otherwise the instance's
+/// `point_velocity(q, x)` (d(L_g)_e x for a group element). Used by collocation, which integrates
+/// the stored point.
+template <ManifoldWithConnection M>
+typename M::Point point_velocity(const M& manifold, const typename M::Point& q, const typename M::Vector& x) {
+  if constexpr (requires { { manifold.point_velocity(q, x) } -> std::convertible_to<typename M::Point>; }) {
+    return manifold.point_velocity(q, x);
+  } else {
+    static_assert(std::same_as<typename M::Point, typename M::Vector>,
+                  "an instance whose points are not vectors must define point_velocity(q, x)");
+    return x;
+  }
+}
+
 template <ManifoldWithConnection M> using PointOf = typename M::Point;
 template <ManifoldWithConnection M> using VectorOf = typename M::Vector;
 template <ManifoldWithConnection M> using FrameOf = typename M::Frame;

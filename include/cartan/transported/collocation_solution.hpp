@@ -17,9 +17,6 @@
 
 namespace cartan::transported {
 
-/// The collocation scheme's order (Lobatto IIIA, collocation.hpp), reported as `order`.
-inline constexpr int kCollocationOrder = 4;
-
 /// Mesh limit of the transported problems by collocation in the CLI and the Python module when
 /// none is given: ample for tol >= 1e-12 on the paper's problems (~1000 nodes at 1e-10 on H3;
 /// the SO(3) paper cases need fewer than 5000 at 1e-10).

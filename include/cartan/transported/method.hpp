@@ -22,6 +22,9 @@ enum class Method {
 /// not at all, by continuation in the horizon T, or in lambda (from lambda_start).
 enum class Continuation { None, T, Lambda };
 
+/// The collocation scheme's order (Lobatto IIIA, numerics/collocation.hpp), reported as `order`.
+inline constexpr int kCollocationOrder = 4;
+
 }  // namespace cartan::transported
 
 // The words of each enum (enum_names.hpp); specialisations live in the template's namespace.
