@@ -3,7 +3,7 @@
 #   make test  - install missing Debian packages, build, run every test (also under ASan+UBSan), fuzz
 BUILD ?= build
 BUILD_ASAN ?= build-asan
-FUZZ_SECONDS ?= 20
+FUZZ_SECONDS ?= 15
 FUZZ_RUNS ?= 1000000
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
@@ -45,7 +45,7 @@ test-asan: build-asan
 build-fuzz: build-asan
 
 test-fuzz: build-asan
-	ctest --test-dir $(BUILD_ASAN) --output-on-failure -L fuzz
+	ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -L fuzz
 
 # A long campaign: FUZZ_RUNS executions per target; new inputs in $(BUILD_ASAN)/tests/fuzz/corpus.
 fuzz: build-asan
