@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """The transported-velocity problem on manifolds with a connection from Python (cartan.solve_general;
 docs/general-connections.md): the spherical pendulum checked against the classical equation, a rigid
-body under a Cartan-Schouten connection against the Lie-group solver, and a potential written in
-Python on R^2 with torsion. docs/user-guide.md "General manifolds and connections" quotes this file.
+body under a Cartan-Schouten connection against the Lie-group solver, a potential written in
+Python on R^2 with torsion, and a manifold of your own (the Poincare half-plane as a cartan.Chart). docs/user-guide.md "General manifolds and connections" quotes this file.
 Run from a build tree with
     PYTHONPATH=build/python /usr/bin/python3 examples/general_connections.py
 It exits non-zero when one of its checks fails (python/tests/test_example.py runs it).
@@ -73,6 +73,22 @@ def main():
     energy = 0.5 * np.einsum("ki,ij,kj->k", r.v, A, r.v) + 0.5 * np.einsum("ki,ki->k", r.q, r.q)
     print(f"R^2 with torsion: {r.status}, energy drift {np.abs(energy - energy[0]).max():.1e}")
     check("energy conserved (to the scheme's order)", r.converged and np.abs(energy - energy[0]).max() < 1e-4)
+
+    # A manifold of your own: the Poincare half-plane y > 0 from its Christoffel symbols alone
+    # (christoffel[k, i, j] = Gamma^k_ij of g = (dx^2 + dy^2) / y^2). With l = 1/2 |v|^2 in a
+    # g-orthonormal frame the solution is the hyperbolic geodesic, at speed d(q0, qT) / T.
+    def half_plane(q):
+        g = np.zeros((2, 2, 2))
+        g[0, 0, 1] = g[0, 1, 0] = g[1, 1, 1] = -1 / q[1]
+        g[1, 0, 0] = 1 / q[1]
+        return g
+
+    chart = cartan.Chart(half_plane, dim=2, metric=lambda q: np.eye(2) / q[1] ** 2, parallel=True)  # K = -1
+    q0, qT, T = np.array([-0.5, 0.8]), np.array([1.2, 1.6]), 2.0
+    r = cartan.solve_general(chart, T=T, N=20, q0=q0, qT=qT, frame0=q0[1] * np.eye(2), method="collocation")
+    distance = np.arccosh(1 + np.sum((qT - q0) ** 2) / (2 * q0[1] * qT[1]))
+    print(f"half-plane geodesic: speed {np.linalg.norm(r.v0):.12f}, d / T = {distance / T:.12f}")
+    check("half-plane geodesic at the hyperbolic speed", r.converged and abs(np.linalg.norm(r.v0) - distance / T) < 1e-8)
 
     print("all checks passed" if not failures else f"FAILED: {', '.join(failures)}")
     return 1 if failures else 0

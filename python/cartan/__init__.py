@@ -28,7 +28,8 @@ The transported-velocity boundary-value problem (eq:reduced-system)
     :func:`verify` checks independently of the solver (a :class:`VerifyReport`).
 Manifolds with a connection (docs/general-connections.md)
     ``Sphere(), HyperbolicPlane(), Euclidean(christoffel, dim=), GroupManifold(group, connection,
-    lam=, metric=, alpha=)``, with ``christoffel, torsion, curvature, frame_bracket, step,
+    lam=, metric=, alpha=)`` and your own, ``Chart(christoffel, dim=, metric=)`` (Christoffel symbols
+    as a Python function of the coordinates), with ``christoffel, torsion, curvature, frame_bracket, step,
     difference, transport_along_step, tangent_basis, metric, torsion_components,
     curvature_components, has_parallel_torsion_and_curvature, validate``.
 The transported-velocity problem on any of them (general/solve.hpp)
@@ -51,6 +52,7 @@ from . import _cartan
 from ._cartan import (  # noqa: F401  (re-exported)
     SE2,
     BvpSolution,
+    Chart,
     Euclidean,
     GroupManifold,
     HyperbolicPlane,
@@ -78,7 +80,7 @@ METHODS = tuple(SO3.methods)
 #: Every status word a solver reports (the same as the CLI's JSON).
 STATUSES = tuple(_cartan.statuses)
 #: The manifold classes :func:`solve_general` accepts.
-MANIFOLDS = (Sphere, HyperbolicPlane, Euclidean, GroupManifold)
+MANIFOLDS = (Sphere, HyperbolicPlane, Euclidean, GroupManifold, Chart)
 
 __all__ = [
     "SO3", "Heisenberg", "SE3", "SE2", "GROUPS", "METHODS", "STATUSES",
@@ -88,7 +90,7 @@ __all__ = [
     "Trajectory", "SolveResult", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve",
     "VerifyReport", "verify",
     "BvpResult", "BvpSolution", "solve_bvp",
-    "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "MANIFOLDS", "GeneralSolveResult", "solve_general",
+    "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "Chart", "MANIFOLDS", "GeneralSolveResult", "solve_general",
     "verify_general",
 ]
 
@@ -321,7 +323,8 @@ def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, poten
     q(T) = qT, for l(q, v) with v the components of the transported velocity in the frame `frame0`
     of T_{q0}Q ((d, m); default manifold.tangent_basis(q0)), with the scheme of order 1 or 2.
 
-    manifold: a :class:`Sphere`, :class:`HyperbolicPlane`, :class:`Euclidean` or :class:`GroupManifold`
+    manifold: a :class:`Sphere`, :class:`HyperbolicPlane`, :class:`Euclidean`, :class:`GroupManifold` or
+    :class:`Chart`
     (any of :data:`MANIFOLDS`). Points q0, qT have the manifold's `point_shape` and must be valid
     points (on the sphere, on the upper sheet of the hyperboloid, group elements).
 

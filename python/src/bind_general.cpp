@@ -32,6 +32,7 @@
 #include "cartan/groups/se3.hpp"
 #include "cartan/groups/so3.hpp"
 #include "cartan/manifolds/euclidean.hpp"
+#include "cartan/manifolds/chart.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"
 #include "python_models.hpp"
@@ -53,6 +54,21 @@ using manifolds::VectorOf;
 /// R^2 or R^3 with constant Christoffel symbols: the Python class `Euclidean`.
 struct EuclideanManifold {
   std::variant<manifolds::Euclidean<2>, manifolds::Euclidean<3>> m;
+};
+
+/// The state of a chart's Python callbacks: the first exception raised during a solve (re-raised
+/// after it, with its type and traceback), and whether a solve is running (then later callbacks
+/// fail at once, as ModelError, which the solvers pass through).
+struct ChartCallbacks {
+  CallbackState state;
+  bool solving = false;
+};
+
+/// A chart of R^2 or R^3 with Christoffel symbols (and optionally a metric) from Python callables:
+/// the Python class `Chart`.
+struct ChartManifold {
+  std::variant<manifolds::Chart<2>, manifolds::Chart<3>> m;
+  std::shared_ptr<ChartCallbacks> callbacks;
 };
 
 /// A Lie group with a left-invariant connection: the Python class `GroupManifold`.
@@ -453,6 +469,87 @@ void bind_euclidean(py::module_& m) {
   });
 }
 
+// ---- Chart ------------------------------------------------------------------------------------
+
+/// A Python callable of the point as a field of the chart: the result converted by `convert`;
+/// a Python exception is recorded for the solve that runs (callbacks.state), and during a solve
+/// a later call fails at once.
+template <int N, class R, class Convert>
+auto chart_field(const std::shared_ptr<ChartCallbacks>& callbacks, py::object fn, const char* who, Convert convert) {
+  return [callbacks, fn = std::move(fn), who, convert](const Eigen::Matrix<double, N, 1>& q) -> R {
+    py::gil_scoped_acquire gil;
+    if (callbacks->solving && callbacks->state.first_error) {
+      throw ModelError(std::string("Chart.") + who + ": an earlier callback failed");
+    }
+    try {
+      return convert(fn(to_numpy(q)));
+    } catch (...) {
+      if (callbacks->solving && !callbacks->state.first_error) callbacks->state.first_error = std::current_exception();
+      throw;
+    }
+  };
+}
+
+template <int N>
+ChartManifold make_chart(const py::object& christoffel, const py::object& metric, const std::string& name, bool parallel) {
+  using C = manifolds::Chart<N>;
+  auto callbacks = std::make_shared<ChartCallbacks>();
+  const auto symbols = [](const py::object& value) {
+    const Array a = as_array(value, "Chart.christoffel", "result");
+    if (a.ndim() != 3 || a.shape(0) != N || a.shape(1) != N || a.shape(2) != N) {
+      const std::string n = std::to_string(N);
+      throw_invalid("Chart.christoffel", "result", "array of shape " + shape_text(a),
+                    "must have shape (" + n + ", " + n + ", " + n + ")");
+    }
+    typename C::Coefficients c;  // c[i](k, j) = Gamma^k_ij = result[k, i, j]; not-finite marks the domain's end
+    const double* data = a.data();
+    for (int k = 0; k < N; ++k) {
+      for (int i = 0; i < N; ++i) {
+        for (int j = 0; j < N; ++j) c[i](k, j) = data[(k * N + i) * N + j];
+      }
+    }
+    return c;
+  };
+  typename C::MetricField metric_field;
+  if (!metric.is_none()) {
+    if (!PyCallable_Check(metric.ptr())) throw_invalid("Chart", "metric", repr_of(metric), "is not callable");
+    metric_field = chart_field<N, typename C::Operator>(callbacks, metric, "metric", [](const py::object& value) {
+      return to_eigen<typename C::Operator>(value, "Chart.metric", "result");
+    });
+  }
+  if (!PyCallable_Check(christoffel.ptr())) throw_invalid("Chart", "christoffel", repr_of(christoffel), "is not callable");
+  C chart(chart_field<N, typename C::Coefficients>(callbacks, christoffel, "christoffel", symbols), std::move(metric_field),
+          name, parallel);
+  return {std::move(chart), std::move(callbacks)};
+}
+
+void bind_chart(py::module_& m) {
+  py::class_<ChartManifold> cls(
+      m, "Chart",
+      "A manifold of your own in one chart: points are coordinates q in an open set of R^m (m = 2 or 3) and the "
+      "connection any field of Christoffel symbols q -> Gamma^k_ij(q) (torsion allowed); pieces are coordinate lines, "
+      "transport along them is integrated by RK4 (include/cartan/manifolds/chart.hpp).");
+  cls.def(py::init([](const py::object& christoffel, const py::object& dim, const py::object& metric,
+                      const std::string& name, bool parallel) {
+            const int n = number_arg<int>(dim, "Chart", "dim");
+            if (n != 2 && n != 3) throw_invalid("Chart", "dim", std::to_string(n), "must be 2 or 3");
+            return n == 2 ? make_chart<2>(christoffel, metric, name, parallel)
+                          : make_chart<3>(christoffel, metric, name, parallel);
+          }),
+          py::arg("christoffel"), py::kw_only(), py::arg("dim"), py::arg("metric") = py::none(),
+          py::arg("name") = "chart", py::arg("parallel") = false,
+          "christoffel(q) -> a (m, m, m) array with christoffel[k, i, j] = Gamma^k_ij at q (as Euclidean); "
+          "non-finite values (or an exception) mark points outside the chart. metric(q) -> (m, m), optional (a "
+          "metric the connection preserves). parallel: declare nabla T = nabla R = 0 (e.g. constant curvature), "
+          "which lets the solver compute the frame components once; only when true.");
+  def_manifold_methods(cls, "Chart");
+  cls.def("__repr__", [](const ChartManifold& h) {
+    return visit_holder(h, [](const auto& c) {
+      return "Chart(name=" + std::string(c.name()) + ", dim=" + std::to_string(c.kDim) + ")";
+    });
+  });
+}
+
 // ---- Lagrangians ------------------------------------------------------------------------------
 
 /// A Lagrangian of the general problem behind a shared pointer: one type per manifold for every
@@ -608,6 +705,21 @@ AnyLagrangian<M> request_lagrangian(const M&, const GeneralRequest& r, std::shar
   return AnyLagrangian<M>::of(general::KineticPotential<M>(inertia, std::move(potential), std::move(gradient)));
 }
 
+/// Runs a solve or check f() on a manifold whose geometry may call Python (`chart` non-null, with
+/// the GIL held): the chart's first callback error is re-raised after it, in place of whatever
+/// the solver made of it.
+template <class F>
+auto run_on_chart(ChartCallbacks* chart, F&& f) {
+  if (chart == nullptr) return f();
+  chart->state.first_error = nullptr;
+  chart->solving = true;
+  struct Done {
+    ChartCallbacks* c;
+    ~Done() { c->solving = false; }
+  } done{chart};
+  return run_with_callbacks(chart->state, std::forward<F>(f));
+}
+
 /// `name` of `object` (an attribute), or an error naming what `object` should be.
 inline py::object field_of(const py::object& object, const char* name, const char* where, const char* what) {
   if (!py::hasattr(object, name)) {
@@ -647,7 +759,7 @@ general::GeneralTrajectory<M> trajectory_of(const M& manifold, const py::object&
 }
 
 template <class M>
-py::dict solve_on(const M& manifold, const GeneralRequest& r) {
+py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* chart) {
   using Problem = general::GeneralProblem<M, AnyLagrangian<M>>;
   const std::string where = kWhere;
   auto state = std::make_shared<CallbackState>();
@@ -675,8 +787,8 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r) {
   const auto run = [&] { return general::solve(problem, options, guess); };
   const CallbackState& callbacks = python_object ? python_object->state() : *state;
   std::optional<general::GeneralSolution<M>> solved;
-  if (python) {
-    solved.emplace(run_with_callbacks(callbacks, run));
+  if (python || chart != nullptr) {
+    solved.emplace(run_on_chart(chart, [&] { return run_with_callbacks(callbacks, run); }));
   } else {
     py::gil_scoped_release release;
     solved.emplace(run());
@@ -719,7 +831,7 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r) {
 /// tol, order, status, t, q, frame, v, mu, Xi, e.g. a GeneralSolveResult) for the Lagrangian of
 /// the request (as solve_general takes it).
 template <class M>
-py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object& result) {
+py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object& result, ChartCallbacks* chart) {
   constexpr const char* where = "cartan.verify_general";
   const auto field = [&](const char* name) { return field_of(result, name, where, "result"); };
   const Status status = parse_enum<Status>(py::cast<std::string>(field("status")), where);
@@ -736,21 +848,28 @@ py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object&
   const int order = py::cast<int>(field("order"));
   const double tol = number_arg<double>(field("tol"), where, "tol");
   const auto run = [&] { return general::verify_general(problem, x, order, tol, status); };
-  if (python) {
-    return report_dict(run_with_callbacks(python_object ? python_object->state() : *state, run));
+  if (python || chart != nullptr) {
+    return report_dict(
+        run_on_chart(chart, [&] { return run_with_callbacks(python_object ? python_object->state() : *state, run); }));
   }
   return report_dict(run());
 }
 
-/// f(manifold) for the C++ manifold behind a Python manifold object.
+/// f(manifold, chart callbacks) for the C++ manifold behind a Python manifold object; the
+/// callbacks are those of a cartan.Chart, null for the built-in manifolds.
 template <class F>
 py::dict visit_manifold(const py::handle& object, F&& f) {
-  if (py::isinstance<Sphere>(object)) return f(object.cast<const Sphere&>());
-  if (py::isinstance<HyperbolicPlane>(object)) return f(object.cast<const HyperbolicPlane&>());
-  if (py::isinstance<EuclideanManifold>(object)) return visit_holder(object.cast<const EuclideanManifold&>(), f);
-  if (py::isinstance<AnyGroupManifold>(object)) return visit_holder(object.cast<const AnyGroupManifold&>(), f);
+  const auto built_in = [&](const auto& m) { return f(m, static_cast<ChartCallbacks*>(nullptr)); };
+  if (py::isinstance<Sphere>(object)) return built_in(object.cast<const Sphere&>());
+  if (py::isinstance<HyperbolicPlane>(object)) return built_in(object.cast<const HyperbolicPlane&>());
+  if (py::isinstance<EuclideanManifold>(object)) return visit_holder(object.cast<const EuclideanManifold&>(), built_in);
+  if (py::isinstance<AnyGroupManifold>(object)) return visit_holder(object.cast<const AnyGroupManifold&>(), built_in);
+  if (py::isinstance<ChartManifold>(object)) {
+    const auto& chart = object.cast<const ChartManifold&>();
+    return visit_holder(chart, [&](const auto& m) { return f(m, chart.callbacks.get()); });
+  }
   throw_invalid(kWhere, "manifold", repr_of(object),
-                "is not a manifold (cartan.Sphere, HyperbolicPlane, Euclidean, GroupManifold)");
+                "is not a manifold (cartan.Sphere, HyperbolicPlane, Euclidean, GroupManifold, Chart)");
 }
 
 }  // namespace
@@ -769,6 +888,7 @@ void bind_general(py::module_& m) {
       .def_static("point", [](double x1, double x2) { return to_numpy(manifolds::hyperbolic_point(x1, x2)); },
                   py::arg("x1"), py::arg("x2"), "The point (x1, x2, sqrt(1 + x1^2 + x2^2)) of H^2.");
   bind_euclidean(m);
+  bind_chart(m);
   bind_group_manifold(m);
 
   py::class_<GeneralRequest>(m, "_GeneralRequest")
@@ -795,10 +915,12 @@ void bind_general(py::module_& m) {
       .def_readwrite("max_nodes", &GeneralRequest::max_nodes)
       .def_readwrite("guess", &GeneralRequest::guess);
   m.def("_solve_general", [](const py::object& manifold, const GeneralRequest& request) {
-    return visit_manifold(manifold, [&](const auto& mf) { return solve_on(mf, request); });
+    return visit_manifold(manifold, [&](const auto& mf, ChartCallbacks* chart) { return solve_on(mf, request, chart); });
   }, py::arg("manifold"), py::arg("request"));
   m.def("_verify_general", [](const py::object& manifold, const GeneralRequest& request, const py::object& result) {
-    return visit_manifold(manifold, [&](const auto& mf) { return verify_on(mf, request, result); });
+    return visit_manifold(manifold, [&](const auto& mf, ChartCallbacks* chart) {
+      return verify_on(mf, request, result, chart);
+    });
   }, py::arg("manifold"), py::arg("request"), py::arg("result"));
 }
 

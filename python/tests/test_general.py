@@ -491,3 +491,69 @@ def test_collocation_is_the_classical_pendulum_and_restarts_from_a_result():
         cartan.solve_general(sphere, T=T, N=40, q0=q0, qT=qT, method="collocation", guess=object())
     with pytest.raises(ValueError, match="samples"):
         cartan.solve_general(sphere, T=T, N=40, q0=q0, qT=qT, samples=5)
+
+
+# ---- a manifold of your own: Chart ---------------------------------------------------------------
+
+def half_plane_christoffel(q):
+    """The Poincare half-plane's Levi-Civita symbols, christoffel[k, i, j] = Gamma^k_ij (nan for y <= 0)."""
+    y = q[1] if q[1] > 0 else np.nan
+    g = np.zeros((2, 2, 2))
+    g[0, 0, 1] = g[0, 1, 0] = g[1, 1, 1] = -1 / y
+    g[1, 0, 0] = 1 / y
+    return g
+
+
+def test_chart_half_plane_geometry_and_geodesics():
+    """A Chart from Python callables: curvature -1 from Gamma alone (central-difference D Gamma),
+    transport preserves the metric, and the geodesic problem (l = 1/2 |v|^2 in a g-orthonormal
+    frame) has |v0| = d(q0, qT) / T, d the closed-form hyperbolic distance: by collocation to its
+    tolerance, by order-2 shooting to O(h^2); verify_general passes the collocation result."""
+    half = cartan.Chart(half_plane_christoffel, dim=2, metric=lambda q: np.eye(2) / q[1] ** 2, name="half-plane",
+                        parallel=True)  # constant curvature: nabla R = 0 (the solver's fast path)
+    assert half.name == "half-plane" and half.dim == 2 and half.point_shape == (2,)
+    q, x, y = np.array([0.3, 0.7]), np.array([0.4, -0.2]), np.array([0.1, 0.5])
+    g = half.metric(q)
+    area2 = (x @ g @ x) * (y @ g @ y) - (x @ g @ y) ** 2
+    assert x @ g @ half.curvature(q, x, y, y) / area2 == pytest.approx(-1.0, abs=1e-6)
+    P = half.transport_along_step(q, np.array([0.2, 0.3]))
+    np.testing.assert_allclose(P.T @ half.metric(q + [0.2, 0.3]) @ P, g, atol=1e-10)
+
+    q0, qT, T = np.array([-0.5, 0.8]), np.array([1.2, 1.6]), 2.0
+    d = np.arccosh(1 + np.sum((qT - q0) ** 2) / (2 * q0[1] * qT[1]))
+    frame0 = q0[1] * np.eye(2)
+    c = cartan.solve_general(half, T=T, N=20, q0=q0, qT=qT, frame0=frame0, method="collocation", tol=1e-10,
+                             samples=81)
+    assert c.converged, c.message
+    assert np.linalg.norm(c.v0) == pytest.approx(d / T, abs=1e-8)
+    errors = []
+    for N in (100, 200):
+        s = cartan.solve_general(half, T=T, N=N, q0=q0, qT=qT, frame0=frame0, order=2, tol=1e-12)
+        assert s.converged, s.message
+        errors.append(abs(np.linalg.norm(s.v0) - d / T))
+    assert errors[0] / errors[1] == pytest.approx(4.0, abs=0.6)
+    assert cartan.verify_general(c, half).passed
+
+
+def test_chart_callback_errors_and_bad_input():
+    calls = []
+
+    def broken(q):
+        calls.append(1)
+        if len(calls) > 50:
+            raise ArithmeticError("boom")
+        return half_plane_christoffel(q)
+
+    chart = cartan.Chart(broken, dim=2)
+    with pytest.raises(ArithmeticError, match="boom"):
+        cartan.solve_general(chart, T=1.0, N=20, q0=[0, 1.0], qT=[1, 1.0])
+    calls.clear()
+    assert chart.christoffel([0, 1.0], [1, 0], [0, 1]).shape == (2,)  # usable again after the failed solve
+    with pytest.raises(ValueError, match="outside the chart"):
+        cartan.Chart(half_plane_christoffel, dim=2).validate([0.0, -1.0])
+    with pytest.raises(ValueError, match="dim = 4"):
+        cartan.Chart(half_plane_christoffel, dim=4)
+    with pytest.raises(ValueError, match="not callable"):
+        cartan.Chart(np.zeros((2, 2, 2)), dim=2)
+    with pytest.raises(ValueError, match=r"\(2, 2, 2\)"):
+        cartan.Chart(lambda q: np.zeros((3, 3, 3)), dim=2).christoffel([0, 1.0], [1, 0], [0, 1])

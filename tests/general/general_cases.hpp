@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "cartan/general/problem.hpp"
 #include "cartan/general/shooting.hpp"
@@ -12,6 +13,27 @@ namespace cartan::testing {
 
 using general::GeneralProblem;
 using general::KineticPotential;
+
+/// The same manifold with every member forwarded except has_parallel_torsion_and_curvature, so
+/// that the scheme recomputes the frame components at every node (the general path).
+template <class M>
+struct WithoutFastPath {
+  static constexpr int kDim = M::kDim, kAmbientDim = M::kAmbientDim;
+  using Point = typename M::Point;
+  using Vector = typename M::Vector;
+  using Frame = typename M::Frame;
+  using Operator = typename M::Operator;
+  M inner;
+  std::string_view name() const { return inner.name(); }
+  Vector christoffel(const Point& q, const Vector& x, const Vector& y) const { return inner.christoffel(q, x, y); }
+  Vector frame_bracket(const Vector& x, const Vector& y) const { return inner.frame_bracket(x, y); }
+  Point step(const Point& q, const Vector& x) const { return inner.step(q, x); }
+  Point point_velocity(const Point& q, const Vector& x) const { return manifolds::point_velocity(inner, q, x); }
+  Vector difference(const Point& a, const Point& b) const { return inner.difference(a, b); }
+  Operator transport_along_step(const Point& q, const Vector& x) const { return inner.transport_along_step(q, x); }
+  Frame tangent_basis(const Point& q) const { return inner.tangent_basis(q); }
+  void validate(const Point& q, std::string_view where) const { inner.validate(q, where); }
+};
 
 /// The paper's free rigid body (inertia diag(2, 3, 4), endpoints of paper_free_body) on any
 /// connection of SO(3) given as a manifold.

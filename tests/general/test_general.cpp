@@ -24,26 +24,6 @@ using namespace cartan::general;
 using manifolds::GroupManifold;
 using SO3Manifold = GroupManifold<groups::SO3>;
 
-/// The same manifold with every member forwarded except has_parallel_torsion_and_curvature, so
-/// that the scheme recomputes the frame components at every node (the general path).
-template <class M>
-struct WithoutFastPath {
-  static constexpr int kDim = M::kDim, kAmbientDim = M::kAmbientDim;
-  using Point = typename M::Point;
-  using Vector = typename M::Vector;
-  using Frame = typename M::Frame;
-  using Operator = typename M::Operator;
-  M inner;
-  std::string_view name() const { return inner.name(); }
-  Vector christoffel(const Point& q, const Vector& x, const Vector& y) const { return inner.christoffel(q, x, y); }
-  Vector frame_bracket(const Vector& x, const Vector& y) const { return inner.frame_bracket(x, y); }
-  Point step(const Point& q, const Vector& x) const { return inner.step(q, x); }
-  Vector difference(const Point& a, const Point& b) const { return inner.difference(a, b); }
-  Operator transport_along_step(const Point& q, const Vector& x) const { return inner.transport_along_step(q, x); }
-  Frame tangent_basis(const Point& q) const { return inner.tangent_basis(q); }
-  void validate(const Point& q, std::string_view where) const { inner.validate(q, where); }
-};
-
 /// The Lie-group Cartan–Schouten solver's shooting (the reference).
 transported::TransportedSolution<groups::SO3> reference_solve(
     const transported::TransportedProblem<groups::SO3, mechanics::RigidBody>& problem, SchemeOrder order) {

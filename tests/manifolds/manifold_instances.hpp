@@ -7,6 +7,7 @@
 #include "cartan/groups/se2.hpp"
 #include "cartan/groups/so3.hpp"
 #include "cartan/groups/heisenberg.hpp"
+#include "cartan/manifolds/chart.hpp"
 #include "cartan/manifolds/euclidean.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"
@@ -56,6 +57,35 @@ struct HyperbolicInstance {
   }
 };
 
+/// The Poincare half-plane given in its chart (a field of Christoffel symbols, RK4 transport).
+struct HalfPlaneChart {
+  using Manifold = manifolds::Chart<2>;
+  static Manifold make() { return manifolds::poincare_half_plane(); }
+  static Manifold::Point point(const Manifold&, std::mt19937& rng) {
+    const Eigen::Vector2d x = random_vector<Eigen::Vector2d>(rng, 1.0);
+    return {x[0], 1.5 + 0.5 * x[1]};  // y in [1, 2]: pieces of the tests stay in y > 0
+  }
+};
+
+/// A chart with a connection that is neither metric nor torsion-free nor parallel: Gamma^k_ij(q)
+/// = A^k_ij + (q . c) B^k_ij with random A, B.
+struct VaryingChart {
+  using Manifold = manifolds::Chart<2>;
+  static Manifold make() {
+    std::mt19937 rng(kSeed + 2);
+    Manifold::Coefficients a, b;
+    for (auto& g : a) g = random_vector<Eigen::Matrix<double, 4, 1>>(rng, 0.5).reshaped(2, 2);
+    for (auto& g : b) g = random_vector<Eigen::Matrix<double, 4, 1>>(rng, 0.5).reshaped(2, 2);
+    const Eigen::Vector2d c(0.7, -0.4);
+    return Manifold([a, b, c](const Eigen::Vector2d& q) {
+      Manifold::Coefficients g;
+      for (int i = 0; i < 2; ++i) g[i] = a[i] + q.dot(c) * b[i];
+      return g;
+    });
+  }
+  static Manifold::Point point(const Manifold&, std::mt19937& rng) { return random_vector<Eigen::Vector2d>(rng, 1.0); }
+};
+
 template <groups::LieGroup G>
 struct GroupPoints {
   static groups::ElementOf<G> point(const manifolds::GroupManifold<G>&, std::mt19937& rng) {
@@ -90,7 +120,7 @@ struct SE2Random : GroupPoints<groups::SE2> {
   }
 };
 
-using AllManifolds = ::testing::Types<RandomEuclidean, FlatPlane, SphereInstance, HyperbolicInstance, SO3CartanSchouten,
-                                      HeisenbergCartanSchouten, SO3LeviCivita, SE2Random>;
+using AllManifolds = ::testing::Types<RandomEuclidean, FlatPlane, SphereInstance, HyperbolicInstance, HalfPlaneChart,
+                                      VaryingChart, SO3CartanSchouten, HeisenbergCartanSchouten, SO3LeviCivita, SE2Random>;
 
 }  // namespace cartan::testing

@@ -37,18 +37,19 @@ OperatorOf<M> christoffel_operator(const M& manifold, const PointOf<M>& q, const
 }
 
 /// D Gamma[z](x, y): the derivative of q -> Gamma_q(x, y) along z (x, y held as constant fields).
-/// Analytic when the instance has it; otherwise a central difference along step(q, +-s z) with
-/// s = eps^(1/3) / max(1, |z|) (truncation and rounding errors both ~ eps^(2/3) relative).
+/// Analytic when the instance has it; otherwise the fourth-order central difference along
+/// step(q, +-s z), step(q, +-2 s z) with s = eps^(1/5) / max(1, |z|): truncation and rounding
+/// errors both ~ eps^(4/5) ~ 3e-13 relative (the second-order difference's eps^(2/3) ~ 4e-11 was
+/// the floor of collocation's residual on charts; docs/general-connections.md#collocation).
 template <ManifoldWithConnection M>
 VectorOf<M> christoffel_derivative(const M& manifold, const PointOf<M>& q, const VectorOf<M>& z, const VectorOf<M>& x,
                                    const VectorOf<M>& y) {
   if constexpr (AnalyticChristoffelDerivative<M>) {
     return manifold.christoffel_derivative(q, z, x, y);
   } else {
-    const double s = std::cbrt(std::numeric_limits<double>::epsilon()) / std::max(1.0, z.norm());
-    const VectorOf<M> dz = s * z;
-    return (manifold.christoffel(manifold.step(q, dz), x, y) - manifold.christoffel(manifold.step(q, VectorOf<M>(-dz)), x, y)) /
-           (2 * s);
+    const double s = std::pow(std::numeric_limits<double>::epsilon(), 0.2) / std::max(1.0, z.norm());
+    const auto at = [&](double a) { return VectorOf<M>(manifold.christoffel(manifold.step(q, VectorOf<M>(a * z)), x, y)); };
+    return (8 * (at(s) - at(-s)) - (at(2 * s) - at(-2 * s))) / (12 * s);
   }
 }
 

@@ -1,0 +1,79 @@
+// The cost of generality, side by side in one process on the paper's free body (lambda = 0.3,
+// T = 5, N = 1000): one primal sweep of the Lie-group scheme (transported/scheme.hpp) against the
+// general scheme (general/scheme.hpp) on the same Cartan–Schouten connection given as a
+// GroupManifold, with the constant-components fast path and without it (frame components
+// recomputed from Gamma at every node); and whole shooting solves, the Lie-group solver's
+// (tangent-linear Jacobian) against the general one's (forward differences). bench/README.md,
+// "General connections", has the ratios.
+#include <benchmark/benchmark.h>
+
+#include "cartan/general/shooting.hpp"
+#include "cartan/manifolds/group_manifold.hpp"
+#include "cartan/transported/shooting.hpp"
+#include "general/general_cases.hpp"  // paper cases, WithoutFastPath
+
+namespace {
+
+using namespace cartan;
+using SO3Manifold = manifolds::GroupManifold<groups::SO3>;
+using Lagrangian = general::KineticPotential<SO3Manifold>;
+constexpr double kLambda = 0.3;
+
+template <class M>
+general::GeneralProblem<M, general::KineticPotential<M>> general_problem(const M& manifold) {
+  const auto p = testing::paper_free_body(kLambda, 1000, 5);
+  return {manifold, general::KineticPotential<M>(testing::paper_inertia()), p.T, p.N, p.g0, p.gT, std::nullopt};
+}
+
+const Eigen::Vector3d kV0(-0.28, 0.02, 0.02);
+
+void BM_Sweep_LieGroupScheme(benchmark::State& state) {
+  const transported::TransportedScheme<groups::SO3, mechanics::RigidBody> scheme(testing::paper_free_body(kLambda, 1000, 5),
+                                                                                 transported::SchemeOrder::First);
+  for (auto _ : state) {
+    transported::SweepOutput<groups::SO3, mechanics::RigidBody> out;
+    if (!transported::forward_sweep(scheme, kV0, Eigen::Vector3d::Zero(), nullptr, 0, out)) state.SkipWithError(out.failure.c_str());
+    benchmark::DoNotOptimize(out);
+  }
+}
+
+template <class M>
+void sweep_general(benchmark::State& state, const M& manifold) {
+  const general::GeneralScheme<M, general::KineticPotential<M>> scheme(general_problem(manifold), transported::SchemeOrder::First);
+  std::string failure;
+  for (auto _ : state) {
+    const auto last = general::general_sweep(scheme, kV0, Eigen::Matrix3d::Zero().eval(), failure);
+    if (!last) state.SkipWithError(failure.c_str());
+    benchmark::DoNotOptimize(last);
+  }
+}
+void BM_Sweep_GeneralFastPath(benchmark::State& state) { sweep_general(state, SO3Manifold::cartan_schouten(kLambda)); }
+void BM_Sweep_GeneralRecomputedComponents(benchmark::State& state) {
+  sweep_general(state, testing::WithoutFastPath<SO3Manifold>{SO3Manifold::cartan_schouten(kLambda)});
+}
+
+void BM_Solve_LieGroupShooting(benchmark::State& state) {
+  const auto p = testing::paper_free_body(kLambda, 1000, 5);
+  for (auto _ : state) {
+    const auto s = transported::solve_shooting(p, {.tolerance = 1e-10});
+    if (!s.converged()) state.SkipWithError(s.message.c_str());
+    state.counters["sweeps"] = s.sweeps;
+  }
+}
+void BM_Solve_GeneralShootingFastPath(benchmark::State& state) {
+  const auto p = general_problem(SO3Manifold::cartan_schouten(kLambda));
+  for (auto _ : state) {
+    const auto s = general::solve_general_shooting(p, {.tolerance = 1e-10});
+    if (!s.converged()) state.SkipWithError(s.message.c_str());
+    state.counters["sweeps"] = s.sweeps;
+  }
+}
+
+}  // namespace
+
+BENCHMARK(BM_Sweep_LieGroupScheme)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Sweep_GeneralFastPath)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Sweep_GeneralRecomputedComponents)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Solve_LieGroupShooting)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Solve_GeneralShootingFastPath)->Unit(benchmark::kMillisecond);
+BENCHMARK_MAIN();
