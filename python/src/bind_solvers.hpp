@@ -118,8 +118,7 @@ py::dict solution_dict(const transported::TransportedSolution<G>& s, const std::
   d["sweeps"] = s.sweeps;
   d["residual_history"] = to_numpy(s.residual_history);
   d["solve_time"] = s.solve_time_s;
-  d["mesh_size"] = s.collocation ? py::object(py::int_(s.collocation->mesh_size)) : py::object(py::none());
-  d["max_residual"] = s.collocation ? py::object(py::float_(s.collocation->max_residual)) : py::object(py::none());
+  add_collocation_fields(d, s.collocation);
   d["group_defect"] = s.collocation ? py::object(py::float_(s.collocation->group_defect)) : py::object(py::none());
   return d;
 }

@@ -1,8 +1,12 @@
 #pragma once
-// A verify::Report as the dict behind cartan.VerifyReport (python/cartan/__init__.py), for the
-// Lie-group verifier (bind_solvers.hpp) and the general one (bind_general.cpp).
+// Dict pieces shared by the Lie-group bindings (bind_solvers.hpp) and the general ones
+// (bind_general.cpp): a verify::Report as the dict behind cartan.VerifyReport, and collocation's
+// mesh report as result fields (python/cartan/__init__.py).
+
+#include <optional>
 
 #include "bindings.hpp"
+#include "cartan/transported/solution.hpp"
 #include "cartan/verify/report.hpp"
 
 namespace cartan::python {
@@ -25,6 +29,12 @@ inline py::dict report_dict(const verify::Report& report) {
   d["checks"] = checks;
   d["text"] = report.text();
   return d;
+}
+
+/// mesh_size and max_residual of a collocation result, None for the other methods.
+inline void add_collocation_fields(py::dict& d, const std::optional<transported::CollocationReport>& report) {
+  d["mesh_size"] = report ? py::object(py::int_(report->mesh_size)) : py::object(py::none());
+  d["max_residual"] = report ? py::object(py::float_(report->max_residual)) : py::object(py::none());
 }
 
 }  // namespace cartan::python

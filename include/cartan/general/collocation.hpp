@@ -37,6 +37,8 @@ class GeneralCollocation {
       : scheme_(std::make_shared<const GeneralScheme<M, L>>(problem, SchemeOrder::First)) {}
 
   const GeneralProblem<M, L>& problem() const { return scheme_->problem(); }
+  /// difference(qT, q) in the components of tangent_basis(qT) (the scheme's terminal residual).
+  manifolds::ComponentsOf<M> terminal_residual(const manifolds::PointOf<M>& q) const { return scheme_->terminal_residual(q); }
 
   /// The node (v from the inverse Legendre map) stored in y at time t.
   Node node(double t, numerics::ConstVectorRef y) const {
@@ -76,9 +78,7 @@ class GeneralCollocation {
       r.template segment<kPoint>(kQ) = (Eigen::Map<const manifolds::PointOf<M>>(ya.data() + kQ) - p.q0).reshaped();
       r.template segment<d * m>(kE) =
           (Eigen::Map<const manifolds::FrameOf<M>>(ya.data() + kE) - p.initial_frame()).reshaped();
-      Node last;
-      last.q = Eigen::Map<const manifolds::PointOf<M>>(yb.data() + kQ);
-      r.template segment<m>(kMu) = self.scheme_->terminal_residual(last);
+      r.template segment<m>(kMu) = self.terminal_residual(Eigen::Map<const manifolds::PointOf<M>>(yb.data() + kQ));
       r.template segment<m * m>(kXi) = yb.template segment<m * m>(kXi);
     };
     return s;
@@ -148,8 +148,7 @@ GeneralSolution<M> general_collocation_solution(const GeneralCollocation<M, L>& 
   if (!x.t.empty()) {
     s.v0 = x.v.front();
     s.Xi0 = x.Xi.front();
-    const auto& p = collocation.problem();
-    s.terminal_error = (manifolds::dual_frame<M>(p.manifold.tangent_basis(p.qT)) * p.manifold.difference(p.qT, x.q.back())).norm();
+    s.terminal_error = collocation.terminal_residual(x.q.back()).norm();
     s.xi_terminal = x.Xi.back().norm();
   }
   s.collocation = transported::CollocationReport{static_cast<int>(result.t.size()), result.max_rms_residual};

@@ -135,9 +135,10 @@ class GeneralScheme {
   }
 
   /// The terminal residual in the components of tangent_basis(qT): difference(qT, q_N).
-  Components terminal_residual(const Node& last) const {
+  Components terminal_residual(const Node& last) const { return terminal_residual(last.q); }
+  Components terminal_residual(const Point& q) const {
     const Frame basis = problem_.manifold.tangent_basis(problem_.qT);
-    return manifolds::dual_frame<M>(basis) * problem_.manifold.difference(problem_.qT, last.q);
+    return manifolds::dual_frame<M>(basis) * problem_.manifold.difference(problem_.qT, q);
   }
 
   /// The rate of mu at a node (mu' of problem.hpp), for the checks of the equations.

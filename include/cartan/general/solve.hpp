@@ -182,7 +182,7 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported:
   }
   transported::SolveOptions c = options;
   c.method = Method::Collocation;
-  c.max_iterations = std::min(options.max_iterations, 40);
+  c.max_iterations = std::min(options.max_iterations, 40);  // Newton per mesh: a hopeless start ends early
   GeneralGuess<M> start;
   start.trajectory = guess.trajectory;
   GeneralSolution<M> collocated = detail::collocation(problem, c, start);

@@ -62,17 +62,21 @@ class Chart {
   Point step(const Point& q, const Vector& x) const { return q + x; }
   Vector difference(const Point& a, const Point& b) const { return b - a; }
   /// Transport along q + s x, s in [0, 1]: RK4 on Y' = -A(s) Y, A(s) = Gamma_{q + s x}(x, .).
+  /// Each step evaluates the field twice (A at the midpoint and the end; the start is the
+  /// previous step's end), which matters when it is a Python callable.
   Operator transport_along_step(const Point& q, const Vector& x) const {
-    const double a = operator_of(gamma_(q), x).norm();
-    const int steps = std::isfinite(a) ? static_cast<int>(std::clamp(std::ceil(128 * a), 4.0, 4096.0)) : 4;
+    const auto field_along = [&](double s) { return operator_of(gamma_(q + s * x), x); };
+    Operator a = field_along(0.0);
+    const double size = a.norm();
+    const int steps = std::isfinite(size) ? static_cast<int>(std::clamp(std::ceil(128 * size), 4.0, 4096.0)) : 4;
     const double h = 1.0 / steps;
-    const auto rate = [&](double s, const Operator& y) -> Operator { return -operator_of(gamma_(q + s * x), x) * y; };
     Operator y = Operator::Identity();
     for (int k = 0; k < steps; ++k) {
       const double s = k * h;
-      const Operator k1 = rate(s, y), k2 = rate(s + h / 2, y + h / 2 * k1), k3 = rate(s + h / 2, y + h / 2 * k2),
-                     k4 = rate(s + h, y + h * k3);
+      const Operator a_mid = field_along(s + h / 2), a_end = field_along(s + h);
+      const Operator k1 = -a * y, k2 = -a_mid * (y + h / 2 * k1), k3 = -a_mid * (y + h / 2 * k2), k4 = -a_end * (y + h * k3);
       y += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+      a = a_end;
     }
     return y;
   }
