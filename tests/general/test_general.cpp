@@ -181,7 +181,11 @@ TEST(GeneralSolve, DefaultShootingAndContinuationInTAgree) {
   EXPECT_EQ(from_guess.branch, "shooting (from the given guess)");
   EXPECT_LE(from_guess.iterations, 2);
   options.continuation = transported::Continuation::T;
-  const auto continued = detail::continue_in_T(problem, {.tolerance = 1e-10}, direct);
+  GeneralShootingOptions one_iteration;
+  one_iteration.max_iterations = 1;
+  const auto failed = solve_general_shooting(problem, one_iteration);  // the path's failed direct attempt
+  ASSERT_FALSE(failed.converged());
+  const auto continued = detail::continue_in_T(problem, {.tolerance = 1e-10}, failed);
   ASSERT_TRUE(continued.converged()) << continued.message;
   EXPECT_EQ(continued.branch.rfind("continuation in T (continued in T from T = 0.75", 0), 0u) << continued.branch;
   EXPECT_NEAR_MATRIX(continued.v0, direct.v0, 1e-8);

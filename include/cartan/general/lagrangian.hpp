@@ -16,7 +16,9 @@
 #include "cartan/errors.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/manifold.hpp"
+#include "cartan/manifolds/derivatives.hpp"
 #include "cartan/mechanics/lagrangian.hpp"
+#include "cartan/mechanics/lagrangian_hessian.hpp"
 
 namespace cartan::general {
 
@@ -29,6 +31,21 @@ concept ManifoldLagrangian =
       { l.velocity(t, q, v) } -> std::convertible_to<manifolds::ComponentsOf<M>>;
       { l.point_gradient(t, q, v) } -> std::convertible_to<manifolds::VectorOf<M>>;
     };
+
+/// Second derivatives of a Lagrangian with the point perturbed along pieces, q_e = step(q, e dq)
+/// (manifolds/derivatives.hpp), for the tangent-linear sweep (lagrangian_hessian.hpp).
+template <manifolds::ManifoldWithConnection M>
+struct LagrangianHessian {
+  static constexpr int m = M::kDim, d = M::kAmbientDim;
+  Eigen::Matrix<double, m, m> momentum_v;  ///< d mu / dv
+  Eigen::Matrix<double, m, d> momentum_q;  ///< d mu / dq (on tangent vectors at q)
+  Eigen::Matrix<double, d, m> gradient_v;  ///< d zeta / dv (zeta the point gradient)
+  Eigen::Matrix<double, d, d> gradient_q;  ///< d zeta / dq
+
+  bool all_finite() const {
+    return momentum_v.allFinite() && momentum_q.allFinite() && gradient_v.allFinite() && gradient_q.allFinite();
+  }
+};
 
 /// l = 1/2 v^T A v - V(q) with a constant symmetric positive definite A (the "inertia" or "mass"
 /// in frame components) and an optional potential V with its ambient gradient. Its energy
@@ -75,6 +92,17 @@ class KineticPotential {
   Vector point_gradient(double, const Point& q, const Components&) const {
     return gradient_ ? Vector(-gradient_(q)) : Vector::Zero();
   }
+  /// Exact but for d zeta / dq = -D grad V, a central difference of the potential's gradient.
+  template <class Manifold>
+  LagrangianHessian<M> hessian(const Manifold& manifold, double, const Point& q, const Components&) const {
+    LagrangianHessian<M> h;
+    h.momentum_v = inertia_;
+    h.momentum_q.setZero();
+    h.gradient_v.setZero();
+    h.gradient_q.setZero();
+    if (gradient_) h.gradient_q = -manifolds::point_derivative(manifold, q, [&](const Point& p) { return Vector(gradient_(p)); });
+    return h;
+  }
   /// 1/2 v^T A v + V(q).
   double energy(const Point& q, const Components& v) const { return 0.5 * v.dot(inertia_ * v) + potential(q); }
 
@@ -105,6 +133,13 @@ struct OnGroupManifold {
   }
   groups::CovectorOf<G> point_gradient(double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) const {
     return lagrangian.group_gradient(t, g, v);
+  }
+  /// The model's own second derivatives (mechanics::lagrangian_hessian: analytic where it has
+  /// them): the same perturbation g exp(e gamma) on every GroupManifold<G>.
+  LagrangianHessian<manifolds::GroupManifold<G>> hessian(const manifolds::GroupManifold<G>&, double t,
+                                                         const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) const {
+    const mechanics::LagrangianHessian<G> h = mechanics::lagrangian_hessian<G>(lagrangian, t, g, v);
+    return {h.momentum_v, h.momentum_g, h.gradient_v, h.gradient_g};
   }
 };
 

@@ -124,14 +124,25 @@ class GeneralScheme {
     return node;
   }
 
+  /// The rates at a node: u = E v, the point gradient zeta, mu' and Xi' (header comment).
+  struct Rates {
+    Vector u;
+    Vector gradient;
+    Components dmu;
+    ComponentMatrix dXi;
+  };
+
   void step(const Node& node, Node& out) const {
     const Rates r1 = rates(node);
     if (order_ == SchemeOrder::First) return advance(node, r1, out);
     Node predictor;
     advance(node, r1, predictor);
-    const Rates r2 = rates(predictor);
-    advance(node, Rates{Vector((r1.u + r2.u) / 2), Components((r1.dmu + r2.dmu) / 2), ComponentMatrix((r1.dXi + r2.dXi) / 2)},
-            out);
+    advance(node, mean(r1, rates(predictor)), out);
+  }
+
+  static Rates mean(const Rates& a, const Rates& b) {
+    return {Vector((a.u + b.u) / 2), Vector((a.gradient + b.gradient) / 2), Components((a.dmu + b.dmu) / 2),
+            ComponentMatrix((a.dXi + b.dXi) / 2)};
   }
 
   /// The terminal residual in the components of tangent_basis(qT): difference(qT, q_N).
@@ -144,26 +155,18 @@ class GeneralScheme {
   /// The rate of mu at a node (mu' of problem.hpp), for the checks of the equations.
   Components momentum_rate(const Node& node) const { return rates(node).dmu; }
 
- private:
-  struct Rates {
-    Vector u;
-    Components dmu;
-    ComponentMatrix dXi;
-  };
-
-  template <class P>
-  static auto point_coordinates(const P& q) {
-    return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 1>>(q.data(), q.size());
+  /// The frame components T_ij^k and R_ijk^l when they are constant (the fast path), else null.
+  const std::array<ComponentMatrix, m>* constant_torsion() const { return torsion_ ? &*torsion_ : nullptr; }
+  const std::array<std::array<ComponentMatrix, m>, m>* constant_curvature() const {
+    return curvature_ ? &*curvature_ : nullptr;
   }
 
   Rates rates(const Node& node) const {
-    const M& manifold = problem_.manifold;
     Rates r;
     r.u = node.frame * node.v;
-    const Vector gradient = mechanics::require_finite_result(
-        Vector(problem_.lagrangian.point_gradient(node.t, node.q, node.v)), "lagrangian.point_gradient", node.t,
-        point_coordinates(node.q), node.v);
-    r.dmu = node.frame.transpose() * gradient;
+    r.gradient = mechanics::require_finite_result(Vector(problem_.lagrangian.point_gradient(node.t, node.q, node.v)),
+                                                  "lagrangian.point_gradient", node.t, point_coordinates(node.q), node.v);
+    r.dmu = node.frame.transpose() * r.gradient;
     if (torsion_) {
       for (int i = 0; i < m; ++i) {
         double curvature_term = 0;
@@ -171,19 +174,31 @@ class GeneralScheme {
         r.dmu[i] += node.mu.dot((*torsion_)[i] * node.v) + curvature_term;
       }
     } else {
-      const auto dual = manifolds::dual_frame<M>(node.frame);
-      const Vector mu_ambient = dual.transpose() * node.mu;
-      const Eigen::Matrix<double, M::kAmbientDim, M::kAmbientDim> xi_ambient = node.frame * node.Xi * dual;
-      for (int i = 0; i < m; ++i) {
-        const Vector e = node.frame.col(i);
-        r.dmu[i] += mu_ambient.dot(manifolds::torsion(manifold, node.q, e, r.u)) +
-                    (xi_ambient * manifolds::curvature_operator(manifold, node.q, e, r.u)).trace();
-      }
+      r.dmu += connection_rate(node.q, node.frame, node.v, node.mu, node.Xi);
     }
     r.dXi = -node.v * node.mu.transpose();
     return r;
   }
 
+  /// The torsion and curvature terms of mu' computed at q (the general path):
+  /// mu(T(e_i, u)) + tr(Xi E^+ R(e_i, u) E), u = E v, in the ambient form of the header comment.
+  Components connection_rate(const Point& q, const Frame& frame, const Components& v, const Components& mu,
+                             const ComponentMatrix& Xi) const {
+    const M& manifold = problem_.manifold;
+    const Vector u = frame * v;
+    const auto dual = manifolds::dual_frame<M>(frame);
+    const Vector mu_ambient = dual.transpose() * mu;
+    const Eigen::Matrix<double, M::kAmbientDim, M::kAmbientDim> xi_ambient = frame * Xi * dual;
+    Components out;
+    for (int i = 0; i < m; ++i) {
+      const Vector e = frame.col(i);
+      out[i] = mu_ambient.dot(manifolds::torsion(manifold, q, e, u)) +
+               (xi_ambient * manifolds::curvature_operator(manifold, q, e, u)).trace();
+    }
+    return out;
+  }
+
+  /// The node reached from `node` with the rates r (order 1: r at the node; order 2: their mean).
   void advance(const Node& node, const Rates& r, Node& out) const {
     const Vector hu = dt_ * r.u;
     out.t = node.t + dt_;
@@ -192,6 +207,14 @@ class GeneralScheme {
     out.mu = node.mu + dt_ * r.dmu;
     out.Xi = node.Xi + dt_ * r.dXi;
     out.v = velocity(out.t, out.q, out.mu);
+  }
+
+  double step_size() const { return dt_; }
+
+ private:
+  template <class P>
+  static auto point_coordinates(const P& q) {
+    return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 1>>(q.data(), q.size());
   }
 
   GeneralProblem<M, L> problem_;

@@ -3,7 +3,8 @@
 // (difference(qT, q_N), Xi_N) = 0 by the library's Levenberg–Marquardt solver, with the
 // dimensionless scaling of transported/shooting.hpp: unknowns (T v0, Xi0 / s), residual
 // (r_q, Xi_N / s), s = T |v_ref| |mu_ref| with v_ref the geodesic-guess velocity. The Jacobian is
-// by forward differences (1 + m + m^2 sweeps).
+// tangent-linear (tangent.hpp: one sweep carries the m + m^2 variations) or, with
+// analytic_jacobian = false, by forward differences (1 + m + m^2 sweeps).
 
 #include <chrono>
 #include <cmath>
@@ -12,9 +13,11 @@
 #include <sstream>
 
 #include "cartan/general/scheme.hpp"
+#include "cartan/general/tangent.hpp"
 #include "cartan/numerics/nonlinear_solve.hpp"
 #include "cartan/status.hpp"
 #include "cartan/transported/method.hpp"
+#include "cartan/transported/shooting.hpp"
 #include "cartan/transported/solution.hpp"
 
 namespace cartan::general {
@@ -41,21 +44,10 @@ struct GeneralSolution {
   bool converged() const { return status == Status::Converged; }
 };
 
-struct GeneralShootingOptions {
-  SchemeOrder order = SchemeOrder::First;
-  double tolerance = 1e-10;  ///< on |(r_q, Xi_N / s)| (dimensionless, as transported shooting)
-  int max_iterations = 100;
-  int no_progress_window = 0;             ///< > 0: abandon when |r| has not halved in this many iterations
-  const SolveMonitor* monitor = nullptr;  ///< progress and stop requests; may be null
-
-  void validate() const {
-    require_finite(tolerance, "GeneralShootingOptions", "tolerance");
-    if (!(tolerance > 0)) throw_invalid("GeneralShootingOptions", "tolerance", format_value(tolerance), "must be positive");
-    if (max_iterations < 1) {
-      throw_invalid("GeneralShootingOptions", "max_iterations", std::to_string(max_iterations), "must be at least 1");
-    }
-  }
-};
+/// The Lie-group shooting's options (order, tolerance, max_iterations, analytic_jacobian: the
+/// tangent-linear sweep of tangent.hpp, no_progress_window, monitor), so that the continuation
+/// path (transported/continuation.hpp) drives both problem families.
+using GeneralShootingOptions = transported::ShootingOptions;
 
 /// The geodesic guess: difference(q0, qT) / T in the components of the initial frame.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
@@ -74,23 +66,36 @@ double xi_scale(const GeneralProblem<M, L>& problem) {
 }
 
 /// Runs the N steps from (v0, Xi0); returns the last node, or nothing (with `failure` set) when
-/// the state became non-finite or a callback failed. ModelError passes through.
+/// the state became non-finite or a callback failed. ModelError passes through. With `tangent`,
+/// the variations run along (tangent.hpp) and `jacobian` (m + m^2 square) receives
+/// d (terminal_residual, Xi_N reshaped) / d (v0, Xi0 reshaped).
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 std::optional<GeneralNode<M>> general_sweep(const GeneralScheme<M, L>& scheme, const manifolds::ComponentsOf<M>& v0,
                                             const manifolds::ComponentMatrixOf<M>& Xi0, std::string& failure,
-                                            GeneralTrajectory<M>* trajectory = nullptr) {
+                                            GeneralTrajectory<M>* trajectory = nullptr,
+                                            const GeneralSchemeTangent<M, L>* tangent = nullptr,
+                                            Eigen::MatrixXd* jacobian = nullptr) {
+  constexpr int m = M::kDim;
   try {
     GeneralNode<M> node = scheme.initial(v0, Xi0), next;
+    GeneralNodeTangent<M> dnode, dnext;
+    if (tangent) dnode = tangent->initial(node);
     if (trajectory) *trajectory = {}, trajectory->push(node);
     for (int k = 0; k < scheme.problem().N; ++k) {
-      scheme.step(node, next);
+      tangent ? tangent->step(node, dnode, next, dnext) : scheme.step(node, next);
       if (!next.q.allFinite() || !next.frame.allFinite() || !next.mu.allFinite() || !next.Xi.allFinite() ||
-          !next.v.allFinite()) {
+          !next.v.allFinite() ||
+          (tangent && !(dnext.q.allFinite() && dnext.frame.allFinite() && dnext.mu.allFinite() && dnext.Xi.allFinite()))) {
         failure = "non-finite state at step " + std::to_string(k + 1);
         return std::nullopt;
       }
       node = next;
+      if (tangent) dnode = dnext;
       if (trajectory) trajectory->push(node);
+    }
+    if (tangent && jacobian) {
+      jacobian->resize(m + m * m, m + m * m);
+      *jacobian << tangent->terminal_residual_tangent(node, dnode), dnode.Xi;
     }
     return node;
   } catch (const ModelError&) {
@@ -112,6 +117,7 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   constexpr int m = M::kDim;
   const auto start = std::chrono::steady_clock::now();
   const GeneralScheme<M, L> scheme(problem, options.order);
+  const GeneralSchemeTangent<M, L> tangent(scheme);
   GeneralSolution<M> solution;
   solution.order = static_cast<int>(options.order);
   const double T = problem.T, s = xi_scale(problem);
@@ -120,15 +126,25 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   auto unpack = [&](const Eigen::VectorXd& x) {
     return std::pair<manifolds::ComponentsOf<M>, Xi>(x.head<m>() / T, Xi(x.tail<m * m>().reshaped(m, m) * s));
   };
-  auto residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+  // Unknowns (T v0, Xi0 / s) and residual rows (r_q, Xi_N / s): the Jacobian's columns scale by
+  // (1 / T, s) and its Xi rows by 1 / s.
+  Eigen::VectorXd scaling(m + m * m);
+  scaling << Eigen::VectorXd::Constant(m, 1 / T), Eigen::VectorXd::Constant(m * m, s);
+  auto residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian) {
     const auto [v0, Xi0] = unpack(x);
     ++solution.sweeps;
-    const auto last = general_sweep(scheme, v0, Xi0, failure);
+    const auto last = general_sweep(scheme, v0, Xi0, failure, static_cast<GeneralTrajectory<M>*>(nullptr),
+                                    jacobian ? &tangent : nullptr, jacobian);
     if (!last) return false;
     r.resize(m + m * m);
     r << scheme.terminal_residual(*last), last->Xi.reshaped() / s;
+    if (jacobian) {
+      *jacobian = *jacobian * scaling.asDiagonal();
+      jacobian->bottomRows(m * m) /= s;
+    }
     return true;
   };
+  auto residual_only = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) { return residual(x, r, nullptr); };
   Eigen::VectorXd x0(m + m * m);
   x0 << v0_guess * T, Xi0_guess.reshaped() / s;
   numerics::NonlinearSolveOptions lm;
@@ -137,7 +153,10 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   lm.no_progress_window = options.no_progress_window;
   lm.monitor = options.monitor;
   const numerics::NonlinearSolveReport report =
-      numerics::levenberg_marquardt(numerics::with_forward_difference_jacobian(residual, lm.fd_step), x0, lm);
+      numerics::levenberg_marquardt(options.analytic_jacobian
+                                        ? numerics::ResidualFunction(residual)
+                                        : numerics::with_forward_difference_jacobian(residual_only, lm.fd_step),
+                                    x0, lm);
   solution.iterations = report.iterations;
   solution.residual_history = report.residual_history;
   const auto [v0, Xi0] = unpack(report.x);
@@ -155,7 +174,8 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
     solution.status = Status::NonFinite;
   }
   std::ostringstream message;
-  message << "general shooting (finite-difference Jacobian, Xi scale " << format_value(s)
+  message << "general shooting (" << (options.analytic_jacobian ? "tangent-linear" : "finite-difference")
+          << " Jacobian, Xi scale " << format_value(s)
           << (scheme.uses_constant_components() ? ", constant frame components" : "") << "): " << report.message
           << ", " << solution.sweeps << " sweeps";
   if (!failure.empty()) message << "; last failed sweep: " << failure;

@@ -8,10 +8,11 @@
 //     fails on the N-interval mesh, from the order-2 shooting solution found by continuation in T;
 //   * Method::Auto (default): shooting from the guess, then continuation in T, then collocation
 //     from the geodesic guess; the first success is returned and `branch` names the path.
-// Continuation in T halves the horizon (same step h, so N scales with T) until shooting from the
-// geodesic guess converges, then lengthens it, each stage starting from the previous (v0, Xi0);
-// a failed stage halves the increment. A failure returns the best iterate of the requested
-// problem (never a stage at another T), and `branch` names the path.
+// Continuation in T is the Lie-group solver's path (transported/continuation.hpp, through
+// ShootingFamily): halve the horizon (same step h, so N scales with T) until shooting from the
+// geodesic guess converges, then lengthen it with a secant predictor, accepting a stage only near
+// its prediction. A failure returns the best iterate of the requested problem (never a stage at
+// another T), and `branch` names the path.
 // Multiple shooting, two-level and continuation in lambda belong to the Lie-group Cartan–Schouten
 // solver; asking for them here is an error naming them.
 
@@ -20,6 +21,7 @@
 
 #include "cartan/general/collocation.hpp"
 #include "cartan/general/shooting.hpp"
+#include "cartan/transported/continuation.hpp"
 #include "cartan/transported/solve_options.hpp"
 
 namespace cartan::general {
@@ -33,70 +35,46 @@ struct GeneralGuess {
   std::optional<GeneralTrajectory<M>> trajectory;
 };
 
+}  // namespace cartan::general
+
+namespace cartan::transported {
+
+/// The general problem as a family of the continuation path: unknowns (v0, Xi0).
+template <manifolds::ManifoldWithConnection M, general::ManifoldLagrangian<M> L>
+struct ShootingFamily<general::GeneralProblem<M, L>> {
+  using Problem = general::GeneralProblem<M, L>;
+  using Solution = general::GeneralSolution<M>;
+  using Velocity = manifolds::ComponentsOf<M>;
+  using Auxiliary = manifolds::ComponentMatrixOf<M>;
+  static Solution shoot(const Problem& p, const ShootingOptions& o, const Velocity& v, const Auxiliary& a) {
+    return general::solve_general_shooting(p, o, v, a);
+  }
+  static const Velocity& velocity(const Solution& s) { return s.v0; }
+  static const Auxiliary& auxiliary(const Solution& s) { return s.Xi0; }
+  static Velocity guess(const Problem& p) { return general::geodesic_guess(p); }
+  static double auxiliary_scale(const Problem& p) { return general::xi_scale(p); }
+  static int inner_iterations(const Solution&) { return 0; }  // one level: no inner iterations
+  static void set_inner_iterations(Solution&, int) {}
+};
+
+}  // namespace cartan::transported
+
+namespace cartan::general {
+
 namespace detail {
 
+/// Continuation in T (transported/continuation.hpp's path, through ShootingFamily above). `direct`
+/// is the failed attempt at the full horizon, not repeated.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-GeneralProblem<M, L> with_horizon(const GeneralProblem<M, L>& problem, double T) {
-  GeneralProblem<M, L> p = problem;
-  p.N = std::max(1, static_cast<int>(std::lround(problem.N * T / problem.T)));
-  p.T = T;
-  return p;
-}
-
-/// Continuation in T (header comment). `direct` is the failed attempt at the full horizon, the
-/// best iterate to return if the path fails.
-template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-GeneralSolution<M> continue_in_T(const GeneralProblem<M, L>& problem, GeneralShootingOptions shooting,
-                                 GeneralSolution<M> direct) {
-  shooting.no_progress_window = 6;
-  int sweeps = direct.sweeps;
-  std::optional<GeneralSolution<M>> stage;
-  double reached = problem.T;
-  for (int halving = 1; halving <= 8 && !stage; ++halving) {
-    reached = problem.T / std::pow(2.0, halving);
-    auto start = solve_general_shooting(with_horizon(problem, reached), shooting);
-    sweeps += start.sweeps;
-    if (start.converged()) stage = std::move(start);
-  }
-  if (!stage) {
-    direct.status = Status::ContinuationFailed;
-    direct.sweeps = sweeps;
-    direct.message = "continuation in T: no horizon down to T / 256 converged from the geodesic guess; " + direct.message;
-    return direct;
-  }
-  const double start_T = reached;
-  double increment = (problem.T - start_T) / 8;
-  int stages = 1;
-  while (reached < problem.T && increment > 1e-6 * (problem.T - start_T) && stages < 200) {
-    if (shooting.monitor && shooting.monitor->stop_requested()) break;
-    const double next = std::min(problem.T, reached + increment);
-    auto attempt = solve_general_shooting(with_horizon(problem, next), shooting, stage->v0 * (reached / next), stage->Xi0);
-    sweeps += attempt.sweeps;
-    ++stages;
-    if (attempt.converged()) {
-      reached = next;
-      stage = std::move(attempt);
-      increment *= 1.5;
-    } else {
-      increment /= 2;
-    }
-  }
-  std::ostringstream path;
-  path << "continued in T from T = " << format_value(start_T) << " (" << stages << " stages)";
-  if (reached >= problem.T) {
-    stage->sweeps = sweeps;
-    stage->branch = "continuation in T (" + path.str() + ")";
-    return std::move(*stage);
-  }
-  // The best iterate of the requested problem: shooting at T from the last stage reached.
-  auto best = solve_general_shooting(problem, shooting, stage->v0 * (reached / problem.T), stage->Xi0);
-  best.sweeps += sweeps;
-  if (!best.converged()) {
-    best.status = Status::ContinuationFailed;
-    best.message = "continuation in T stopped at T = " + format_value(reached) + " (" + path.str() + "); " + best.message;
-  }
-  best.branch = "continuation in T (" + path.str() + ", then shooting at T)";
-  return best;
+GeneralSolution<M> continue_in_T(const GeneralProblem<M, L>& problem, const GeneralShootingOptions& shooting,
+                                 const GeneralSolution<M>& direct) {
+  transported::ContinuationOptions options;
+  options.shooting = shooting;
+  GeneralSolution<M> result = transported::detail::continue_in_T(
+      problem, options, std::optional<manifolds::ComponentsOf<M>>(), std::optional<manifolds::ComponentMatrixOf<M>>(),
+      &direct);
+  result.branch = "continuation in T (" + result.branch + ")";
+  return result;
 }
 
 /// Method::Collocation (header comment).

@@ -26,7 +26,7 @@
 #include <utility>
 
 #include "cartan/errors.hpp"
-#include "cartan/manifolds/manifold.hpp"
+#include "cartan/manifolds/derivatives.hpp"
 
 namespace cartan::manifolds {
 
@@ -61,6 +61,9 @@ class Chart {
   Vector frame_bracket(const Vector&, const Vector&) const { return Vector::Zero(); }
   Point step(const Point& q, const Vector& x) const { return q + x; }
   Vector difference(const Point& a, const Point& b) const { return b - a; }
+  StepJacobians<Chart> step_jacobians(const Point&, const Vector&) const {
+    return {Operator::Identity(), Operator::Identity()};
+  }
   /// Transport along q + s x, s in [0, 1]: RK4 on Y' = -A(s) Y, A(s) = Gamma_{q + s x}(x, .).
   /// Each step evaluates the field twice (A at the midpoint and the end; the start is the
   /// previous step's end), which matters when it is a Python callable.

@@ -10,6 +10,7 @@
 
 #include "cartan/errors.hpp"
 #include "cartan/manifolds/constant_connection.hpp"
+#include "cartan/manifolds/derivatives.hpp"
 
 namespace cartan::manifolds {
 
@@ -25,6 +26,8 @@ class Euclidean {
   using Operator = Eigen::Matrix<double, Dim, Dim>;
   /// coefficients[i] is the matrix of y -> nabla_{e_i} y, i.e. coefficients[i](k, j) = Gamma^k_ij.
   using Coefficients = std::array<Operator, Dim>;
+  /// Constant coefficients (derivatives.hpp).
+  static constexpr bool kPointIndependentConnection = true;
 
   /// The flat, torsion-free connection.
   Euclidean() : Euclidean(zero_coefficients()) {}
@@ -47,6 +50,12 @@ class Euclidean {
   Vector difference(const Point& a, const Point& b) const { return b - a; }
   /// Along the line q + s x the transport equation y' = -Gamma(x, y) has constant coefficients.
   Operator transport_along_step(const Point&, const Vector& x) const { return Operator(-operator_of(x)).exp(); }
+  Operator transport_along_step_derivative(const Point&, const Vector& x, const Vector& dx) const {
+    return exp_derivative<Dim>(-operator_of(x), -operator_of(dx));
+  }
+  StepJacobians<Euclidean> step_jacobians(const Point&, const Vector&) const {
+    return {Operator::Identity(), Operator::Identity()};
+  }
   Frame tangent_basis(const Point&) const { return Frame::Identity(); }
   void validate(const Point& q, std::string_view where) const { require_finite(q, where, "point"); }
   bool has_parallel_torsion_and_curvature() const { return parallel_; }

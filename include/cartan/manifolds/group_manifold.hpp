@@ -17,7 +17,9 @@
 
 #include "cartan/connections/cartan_schouten.hpp"
 #include "cartan/connections/invariant_connection.hpp"
+#include "cartan/groups/exp_jacobian.hpp"
 #include "cartan/manifolds/constant_connection.hpp"
+#include "cartan/manifolds/derivatives.hpp"
 
 namespace cartan::manifolds {
 
@@ -31,6 +33,8 @@ class GroupManifold {
   using Vector = groups::TangentOf<G>;
   using Frame = groups::AlgebraMatrixOf<G>;
   using Operator = groups::AlgebraMatrixOf<G>;
+  /// alpha and exp(-alpha(x, .)) do not depend on g in the left trivialisation (derivatives.hpp).
+  static constexpr bool kPointIndependentConnection = true;
 
   /// Throws std::invalid_argument unless the connection is left-invariant.
   explicit GroupManifold(const connections::InvariantConnection<G>& connection,
@@ -86,6 +90,13 @@ class GroupManifold {
   Point point_velocity(const Point& g, const Vector& x) const { return G::left_translate(g, x); }
   Operator transport_along_step(const Point&, const Vector& x) const {
     return Operator(-connection_.nabla_operator(x)).exp();
+  }
+  /// (g exp(e a)) exp(x) = g exp(x) exp(e Ad(exp(-x)) a), exp(x + e b) = exp(x) exp(e J_r(x) b).
+  StepJacobians<GroupManifold> step_jacobians(const Point&, const Vector& x) const {
+    return {G::Ad(G::exp(Vector(-x))), groups::right_jacobian<G>(x)};
+  }
+  Operator transport_along_step_derivative(const Point&, const Vector& x, const Vector& dx) const {
+    return exp_derivative<kDim>(-connection_.nabla_operator(x), -connection_.nabla_operator(dx));
   }
   Frame tangent_basis(const Point&) const { return Frame::Identity(); }
   void validate(const Point& g, std::string_view where) const { G::validate(g, where); }

@@ -13,9 +13,13 @@
 // failed continuation returns the best iterate *of the requested problem* (the direct attempt,
 // or a solve from the last stage reached), never a stage's trajectory at another T or lambda,
 // and its message says where the path stopped.
+// The path is written once for every problem family with shooting: ShootingFamily<Problem> says
+// how to shoot and where the unknowns (a velocity and an auxiliary: (v0, xi0) here, (v0, Xi0) for
+// the general problem, general/solve.hpp) live in a solution.
 
 #include <cmath>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <sstream>
 
@@ -50,6 +54,27 @@ struct ContinuationOptions {
   }
 };
 
+/// How continuation drives shooting on one problem family (header comment).
+template <class Problem>
+struct ShootingFamily;
+
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+struct ShootingFamily<TransportedProblem<G, L>> {
+  using Solution = TransportedSolution<G>;
+  using Velocity = groups::TangentOf<G>;
+  using Auxiliary = groups::CovectorOf<G>;
+  static Solution shoot(const TransportedProblem<G, L>& p, const ShootingOptions& o, const Velocity& v,
+                        const Auxiliary& a) {
+    return solve_shooting(p, o, v, a);
+  }
+  static const Velocity& velocity(const Solution& s) { return s.v0; }
+  static const Auxiliary& auxiliary(const Solution& s) { return s.xi0; }
+  static Velocity guess(const TransportedProblem<G, L>& p) { return geodesic_guess(p); }
+  static double auxiliary_scale(const TransportedProblem<G, L>& p) { return xi_scale(p); }
+  static int inner_iterations(const Solution& s) { return s.inner_iterations; }
+  static void set_inner_iterations(Solution& s, int n) { s.inner_iterations = n; }
+};
+
 namespace detail {
 
 /// The shooting options of every solve on a continuation path: abandon hopeless ones early.
@@ -60,10 +85,10 @@ inline ShootingOptions path_shooting(const ContinuationOptions& options) {
 }
 
 /// The size of a result's terminal residual in the units of the convergence test.
-template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-double scaled_residual(const TransportedProblem<G, L>& problem, const TransportedSolution<G>& s) {
+template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
+double scaled_residual(const Problem& problem, const Solution& s) {
   if (s.trajectory.t.empty()) return std::numeric_limits<double>::infinity();
-  return std::hypot(s.terminal_error, s.xi_terminal / xi_scale(problem));
+  return std::hypot(s.terminal_error, s.xi_terminal / ShootingFamily<Problem>::auxiliary_scale(problem));
 }
 
 /// Where a continuation path stopped.
@@ -83,22 +108,26 @@ struct PathEnd {
 /// enough stage is always accepted; a corrector that converges far from the prediction has
 /// jumped to another branch (bench/README.md, "continuation acceptance"). Accumulates work into
 /// `current`.
-template <groups::LieGroup G, class MakeProblem>
-PathEnd continue_parameter(const MakeProblem& make, double from, double to, TransportedSolution<G>& current,
+template <class MakeProblem, class Problem = std::invoke_result_t<MakeProblem, double>,
+          class Solution = typename ShootingFamily<Problem>::Solution>
+PathEnd continue_parameter(const MakeProblem& make, double from, double to, Solution& current,
                            const ContinuationOptions& options) {
+  using Family = ShootingFamily<Problem>;
+  using Velocity = typename Family::Velocity;
+  using Auxiliary = typename Family::Auxiliary;
   PathEnd end{from, 0, false, {}};
   double increment = (to - from) / options.initial_stages;
-  int sweeps = current.sweeps, iterations = current.inner_iterations;
+  int sweeps = current.sweeps, iterations = Family::inner_iterations(current);
   const ShootingOptions path = path_shooting(options);
-  // Relative sizes: v0 against the start's |v0| (or the target's geodesic speed), xi0 against
-  // the start's |xi0| (or the target's xi_scale).
-  const auto target = make(to);
-  const double v_ref = std::max(current.v0.norm(), geodesic_guess(target).norm());
-  const double xi_ref = std::max(current.xi0.norm(), xi_scale(target));
-  const auto distance = [&](const groups::TangentOf<G>& dv, const groups::CovectorOf<G>& dxi) {
-    return std::hypot(v_ref > 0 ? dv.norm() / v_ref : dv.norm(), dxi.norm() / xi_ref);
+  // Relative sizes: v0 against the start's |v0| (or the target's geodesic speed), the auxiliary
+  // against the start's (or the target's scale).
+  const Problem target = make(to);
+  const double v_ref = std::max(Family::velocity(current).norm(), Family::guess(target).norm());
+  const double aux_ref = std::max(Family::auxiliary(current).norm(), Family::auxiliary_scale(target));
+  const auto distance = [&](const Velocity& dv, const Auxiliary& da) {
+    return std::hypot(v_ref > 0 ? dv.norm() / v_ref : dv.norm(), da.norm() / aux_ref);
   };
-  std::optional<std::pair<groups::TangentOf<G>, groups::CovectorOf<G>>> previous;  // the solution before `current`
+  std::optional<std::pair<Velocity, Auxiliary>> previous;  // the solution before `current`
   double previous_s = from;
   while (end.reached != to) {
     if (end.stages >= options.max_stages) {
@@ -111,18 +140,19 @@ PathEnd continue_parameter(const MakeProblem& make, double from, double to, Tran
     }
     const double next = std::abs(to - end.reached) <= std::abs(increment) ? to : end.reached + increment;
     ++end.stages;
-    groups::TangentOf<G> v_pred = current.v0;
-    groups::CovectorOf<G> xi_pred = current.xi0;
+    Velocity v_pred = Family::velocity(current);
+    Auxiliary aux_pred = Family::auxiliary(current);
     if (previous) {
       const double ratio = (next - end.reached) / (end.reached - previous_s);
-      v_pred += ratio * (current.v0 - previous->first);
-      xi_pred += ratio * (current.xi0 - previous->second);
+      v_pred += ratio * (Family::velocity(current) - previous->first);
+      aux_pred += ratio * (Family::auxiliary(current) - previous->second);
     }
-    TransportedSolution<G> trial = solve_shooting(make(next), path, v_pred, xi_pred);
+    Solution trial = Family::shoot(make(next), path, v_pred, aux_pred);
     sweeps += trial.sweeps;
-    iterations += trial.inner_iterations;
-    if (trial.converged() && distance(trial.v0 - v_pred, trial.xi0 - xi_pred) <= options.max_correction) {
-      previous.emplace(current.v0, current.xi0);
+    iterations += Family::inner_iterations(trial);
+    if (trial.converged() &&
+        distance(Family::velocity(trial) - v_pred, Family::auxiliary(trial) - aux_pred) <= options.max_correction) {
+      previous.emplace(Family::velocity(current), Family::auxiliary(current));
       previous_s = end.reached;
       end.reached = next;
       current = std::move(trial);
@@ -138,7 +168,7 @@ PathEnd continue_parameter(const MakeProblem& make, double from, double to, Tran
     }
   }
   current.sweeps = sweeps;
-  current.inner_iterations = iterations;
+  Family::set_inner_iterations(current, iterations);
   end.complete = end.reached == to;
   return end;
 }
@@ -146,14 +176,14 @@ PathEnd continue_parameter(const MakeProblem& make, double from, double to, Tran
 /// The failure result of a continuation of `problem`: the better (smaller scaled residual) of
 /// `direct` (an attempt on the requested problem, may be empty) and a solve of the requested
 /// problem from the last stage reached; status ContinuationFailed (or Interrupted), all work counted.
-template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-TransportedSolution<G> best_iterate(const TransportedProblem<G, L>& problem, const TransportedSolution<G>* direct,
-                                    const TransportedSolution<G>* last_stage, const ContinuationOptions& options,
-                                    int sweeps, int iterations) {
-  TransportedSolution<G> best;
+template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
+Solution best_iterate(const Problem& problem, const Solution* direct, const Solution* last_stage,
+                      const ContinuationOptions& options, int sweeps, int iterations) {
+  using Family = ShootingFamily<Problem>;
+  Solution best;
   best.trajectory = {};
   double best_size = std::numeric_limits<double>::infinity();
-  const auto consider = [&](TransportedSolution<G> candidate) {
+  const auto consider = [&](Solution candidate) {
     const double size = scaled_residual(problem, candidate);
     if (size < best_size || best.trajectory.t.empty()) {
       best_size = size;
@@ -163,20 +193,90 @@ TransportedSolution<G> best_iterate(const TransportedProblem<G, L>& problem, con
   if (direct != nullptr) consider(*direct);
   const bool stopped = options.shooting.monitor != nullptr && options.shooting.monitor->stop_requested();
   if (last_stage != nullptr && !stopped) {
-    TransportedSolution<G> from_stage = solve_shooting(problem, path_shooting(options), last_stage->v0, last_stage->xi0);
+    Solution from_stage =
+        Family::shoot(problem, path_shooting(options), Family::velocity(*last_stage), Family::auxiliary(*last_stage));
     sweeps += from_stage.sweeps;
-    iterations += from_stage.inner_iterations;
+    iterations += Family::inner_iterations(from_stage);
     if (from_stage.converged()) {
       from_stage.sweeps = sweeps;
-      from_stage.inner_iterations = iterations;
+      Family::set_inner_iterations(from_stage, iterations);
       return from_stage;  // the last stage was close enough after all
     }
     consider(std::move(from_stage));
   }
   best.status = stopped ? Status::Interrupted : Status::ContinuationFailed;
   best.sweeps = sweeps;
-  best.inner_iterations = iterations;
+  Family::set_inner_iterations(best, iterations);
   return best;
+}
+
+/// Continuation in T of any problem family (solve_continuation_in_T below; general/solve.hpp).
+template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
+Solution continue_in_T(const Problem& problem, const ContinuationOptions& options,
+                       std::optional<typename ShootingFamily<Problem>::Velocity> v0_guess,
+                       std::optional<typename ShootingFamily<Problem>::Auxiliary> aux_guess,
+                       const Solution* failed_direct) {
+  using Family = ShootingFamily<Problem>;
+  using Velocity = typename Family::Velocity;
+  using Auxiliary = typename Family::Auxiliary;
+  if (failed_direct != nullptr && failed_direct->converged()) {
+    throw std::invalid_argument("solve_continuation_in_T: failed_direct is a converged result; return it instead");
+  }
+  const auto start_time = std::chrono::steady_clock::now();
+  const double h = problem.step();
+  auto make = [&](double horizon) {
+    Problem p = problem;
+    p.T = horizon;
+    p.N = std::max(1, static_cast<int>(std::lround(horizon / h)));
+    if (horizon == problem.T) p.N = problem.N;
+    return p;
+  };
+  const ShootingOptions path = path_shooting(options);
+  double start = problem.T;
+  Solution first, direct;
+  int sweeps = 0, iterations = 0;
+  for (int halving = 0; halving <= options.max_halvings; ++halving, start /= 2) {
+    if (halving == 0 && failed_direct != nullptr) {
+      direct = first = *failed_direct;
+      continue;
+    }
+    const Problem p = make(start);
+    // The given guess is a velocity of the requested problem: at horizon T' the same path
+    // needs T / T' times its speed.
+    const Velocity v0 = v0_guess ? Velocity(*v0_guess * (problem.T / start)) : Family::guess(p);
+    first = Family::shoot(p, path, v0, aux_guess && halving == 0 ? *aux_guess : Auxiliary(Auxiliary::Zero()));
+    sweeps += first.sweeps;
+    iterations += Family::inner_iterations(first);
+    if (halving == 0) direct = first;
+    if (first.converged() || first.status == Status::Interrupted) break;
+  }
+  first.sweeps = sweeps;
+  Family::set_inner_iterations(first, iterations);
+  std::ostringstream path_text;
+  Solution result;
+  if (!first.converged()) {
+    path_text << "no horizon down to T = " << format_value(start) << " converged from the "
+              << (v0_guess ? "given" : "geodesic") << " guess";
+    result = best_iterate(problem, &direct, static_cast<const Solution*>(nullptr), options, sweeps, iterations);
+  } else if (start == problem.T) {
+    path_text << (v0_guess || aux_guess ? "direct from the given guess" : "direct from the geodesic guess");
+    result = std::move(first);
+  } else {
+    path_text << "continued in T from T = " << format_value(start);
+    result = first;
+    const PathEnd end = continue_parameter(make, start, problem.T, result, options);
+    path_text << " (" << end.stages << " stages)";
+    if (!end.complete) {
+      path_text << "; stopped at T = " << format_value(end.reached) << ": " << end.why;
+      result = best_iterate(problem, &direct, &result, options, result.sweeps, Family::inner_iterations(result));
+    }
+  }
+  result.method = Method::Shooting;
+  result.branch = result.converged() ? path_text.str() : "failed: " + path_text.str();
+  result.message = "continuation in T: " + path_text.str() + "; " + std::to_string(result.sweeps) +
+                   " sweeps in all; the returned iterate: " + result.message;
+  result.solve_time_s = seconds_since(start_time);
+  return result;
 }
 
 }  // namespace detail
@@ -192,64 +292,7 @@ TransportedSolution<G> solve_continuation_in_T(const TransportedProblem<G, L>& p
                                                const TransportedSolution<G>* failed_direct = nullptr) {
   problem.validate();
   options.validate();
-  if (failed_direct != nullptr && failed_direct->converged()) {
-    throw std::invalid_argument("solve_continuation_in_T: failed_direct is a converged result; return it instead");
-  }
-  const auto start_time = std::chrono::steady_clock::now();
-  const double h = problem.step();
-  auto make = [&](double horizon) {
-    TransportedProblem<G, L> p = problem;
-    p.T = horizon;
-    p.N = std::max(1, static_cast<int>(std::lround(horizon / h)));
-    if (horizon == problem.T) p.N = problem.N;
-    return p;
-  };
-  const ShootingOptions path = detail::path_shooting(options);
-  double start = problem.T;
-  TransportedSolution<G> first, direct;
-  int sweeps = 0, iterations = 0;
-  for (int halving = 0; halving <= options.max_halvings; ++halving, start /= 2) {
-    if (halving == 0 && failed_direct != nullptr) {
-      direct = first = *failed_direct;
-      continue;
-    }
-    const auto p = make(start);
-    // The given guess is a velocity of the requested problem: at horizon T' the same path
-    // needs T / T' times its speed.
-    const groups::TangentOf<G> v0 = v0_guess ? groups::TangentOf<G>(*v0_guess * (problem.T / start)) : geodesic_guess(p);
-    first = solve_shooting(p, path, v0, xi0_guess && halving == 0 ? *xi0_guess : groups::CovectorOf<G>::Zero());
-    sweeps += first.sweeps;
-    iterations += first.inner_iterations;
-    if (halving == 0) direct = first;
-    if (first.converged() || first.status == Status::Interrupted) break;
-  }
-  first.sweeps = sweeps;
-  first.inner_iterations = iterations;
-  std::ostringstream path_text;
-  TransportedSolution<G> result;
-  if (!first.converged()) {
-    path_text << "no horizon down to T = " << format_value(start) << " converged from the "
-              << (v0_guess ? "given" : "geodesic") << " guess";
-    result = detail::best_iterate<G>(problem, &direct, nullptr, options, sweeps, iterations);
-  } else if (start == problem.T) {
-    path_text << (v0_guess || xi0_guess ? "direct from the given guess" : "direct from the geodesic guess");
-    result = std::move(first);
-  } else {
-    path_text << "continued in T from T = " << format_value(start);
-    result = first;
-    const detail::PathEnd end = detail::continue_parameter<G>(make, start, problem.T, result, options);
-    path_text << " (" << end.stages << " stages)";
-    if (!end.complete) {
-      path_text << "; stopped at T = " << format_value(end.reached) << ": " << end.why;
-      result = detail::best_iterate<G>(problem, &direct, &result, options, result.sweeps, result.inner_iterations);
-    }
-  }
-  result.method = Method::Shooting;
-  result.branch = result.converged() ? path_text.str() : "failed: " + path_text.str();
-  result.message = "continuation in T: " + path_text.str() + "; " + std::to_string(result.sweeps) +
-                   " sweeps in all; the returned iterate: " + result.message;
-  result.solve_time_s = detail::seconds_since(start_time);
-  return result;
+  return detail::continue_in_T(problem, options, v0_guess, xi0_guess, failed_direct);
 }
 
 /// Continuation in lambda from lambda_start (default 0, the classical left Euler–Poincaré case).
@@ -273,15 +316,16 @@ TransportedSolution<G> solve_continuation_in_lambda(const TransportedProblem<G, 
   if (!result.converged()) {
     path_text << "no solution at lambda = " << format_value(lambda_start) << " (" << result.branch << ")";
     const bool same = lambda_start == problem.lambda;  // then that attempt was of the requested problem
-    result = detail::best_iterate<G>(problem, same ? &result : nullptr, nullptr, options, result.sweeps,
-                                     result.inner_iterations);
+    result = detail::best_iterate(problem, same ? &result : nullptr, static_cast<const TransportedSolution<G>*>(nullptr),
+                                  options, result.sweeps, result.inner_iterations);
   } else {
     path_text << "continued in lambda from lambda = " << format_value(lambda_start) << " [" << result.branch << "]";
-    const detail::PathEnd end = detail::continue_parameter<G>(make, lambda_start, problem.lambda, result, options);
+    const detail::PathEnd end = detail::continue_parameter(make, lambda_start, problem.lambda, result, options);
     path_text << " (" << end.stages << " stages)";
     if (!end.complete) {
       path_text << "; stopped at lambda = " << format_value(end.reached) << ": " << end.why;
-      result = detail::best_iterate<G>(problem, nullptr, &result, options, result.sweeps, result.inner_iterations);
+      result = detail::best_iterate(problem, static_cast<const TransportedSolution<G>*>(nullptr), &result, options,
+                                    result.sweeps, result.inner_iterations);
     }
   }
   result.method = Method::Shooting;
