@@ -2,9 +2,11 @@
 // T = 5, N = 1000): one primal sweep of the Lie-group scheme (transported/scheme.hpp) against the
 // general scheme (general/scheme.hpp) on the same Cartan–Schouten connection given as a
 // GroupManifold, with the constant-components fast path and without it (frame components
-// recomputed from Gamma at every node); and whole shooting solves, the Lie-group solver's
-// (tangent-linear Jacobian) against the general one's (forward differences). bench/README.md,
-// "General connections", has the ratios.
+// recomputed from Gamma at every node), and the general tangent-linear sweep (12 directions); and
+// whole shooting solves, the Lie-group solver's against the general one's with its tangent-linear
+// Jacobian (argument 1) or forward differences (0), on the Cartan–Schouten connection and on the
+// Levi-Civita connection of the inertia (not parallel: frame components recomputed at every node).
+// bench/README.md, "General connections", has the ratios.
 #include <benchmark/benchmark.h>
 
 #include "cartan/general/shooting.hpp"
@@ -52,6 +54,22 @@ void BM_Sweep_GeneralRecomputedComponents(benchmark::State& state) {
   sweep_general(state, testing::WithoutFastPath<SO3Manifold>{SO3Manifold::cartan_schouten(kLambda)});
 }
 
+void BM_TangentSweep_GeneralFastPath(benchmark::State& state) {
+  using L = general::KineticPotential<SO3Manifold>;
+  const general::GeneralScheme<SO3Manifold, L> scheme(general_problem(SO3Manifold::cartan_schouten(kLambda)),
+                                                      transported::SchemeOrder::First);
+  const general::GeneralSchemeTangent<SO3Manifold, L> tangent(scheme);
+  std::string failure;
+  Eigen::MatrixXd jacobian;
+  for (auto _ : state) {
+    const auto last = general::general_sweep(scheme, kV0, Eigen::Matrix3d::Zero().eval(), failure,
+                                             static_cast<general::GeneralTrajectory<SO3Manifold>*>(nullptr), &tangent,
+                                             &jacobian);
+    if (!last) state.SkipWithError(failure.c_str());
+    benchmark::DoNotOptimize(jacobian);
+  }
+}
+
 void BM_Solve_LieGroupShooting(benchmark::State& state) {
   const auto p = testing::paper_free_body(kLambda, 1000, 5);
   for (auto _ : state) {
@@ -60,13 +78,23 @@ void BM_Solve_LieGroupShooting(benchmark::State& state) {
     state.counters["sweeps"] = s.sweeps;
   }
 }
-void BM_Solve_GeneralShootingFastPath(benchmark::State& state) {
-  const auto p = general_problem(SO3Manifold::cartan_schouten(kLambda));
+template <class M>
+void solve_general(benchmark::State& state, const M& manifold) {
+  const auto p = general_problem(manifold);
+  transported::ShootingOptions options;
+  options.tolerance = 1e-10;
+  options.analytic_jacobian = state.range(0) == 1;
   for (auto _ : state) {
-    const auto s = general::solve_general_shooting(p, {.tolerance = 1e-10});
+    const auto s = general::solve_general_shooting(p, options);
     if (!s.converged()) state.SkipWithError(s.message.c_str());
     state.counters["sweeps"] = s.sweeps;
   }
+}
+void BM_Solve_GeneralShootingFastPath(benchmark::State& state) {
+  solve_general(state, SO3Manifold::cartan_schouten(kLambda));
+}
+void BM_Solve_GeneralShootingLeviCivita(benchmark::State& state) {
+  solve_general(state, SO3Manifold::levi_civita(testing::paper_inertia()));
 }
 
 }  // namespace
@@ -74,6 +102,8 @@ void BM_Solve_GeneralShootingFastPath(benchmark::State& state) {
 BENCHMARK(BM_Sweep_LieGroupScheme)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Sweep_GeneralFastPath)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Sweep_GeneralRecomputedComponents)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_TangentSweep_GeneralFastPath)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Solve_LieGroupShooting)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Solve_GeneralShootingFastPath)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Solve_GeneralShootingFastPath)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Solve_GeneralShootingLeviCivita)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

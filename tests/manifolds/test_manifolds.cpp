@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "cartan/manifolds/derivatives.hpp"
 #include "cartan/manifolds/geometry.hpp"
 #include "manifold_instances.hpp"
 
@@ -285,6 +286,21 @@ TEST(GroupManifold, LeviCivitaOfTheBiInvariantMetricIsCartanSchoutenOneHalf) {
   const auto cs = manifolds::GroupManifold<groups::SO3>::cartan_schouten(0.5);
   for (int i = 0; i < 3; ++i) EXPECT_NEAR_MATRIX(lc.connection().coefficients()[i], cs.connection().coefficients()[i], 1e-15);
   EXPECT_TRUE(lc.has_parallel_torsion_and_curvature());
+}
+
+// The derivative of the matrix exponential (the transport derivative of constant connections) by
+// its series (small A) and by the block formula (large A), against fourth-order differences of
+// Eigen's exp (error ~1e-12 relative at step 1e-3 for |A| up to 3).
+TEST(ExpDerivative, SeriesAndBlockFormulaMatchDifferences) {
+  std::mt19937 rng(kSeed);
+  for (const double size : {1e-3, 0.1, 0.4, 1.0, 3.0}) {
+    const Eigen::Matrix3d a = random_vector<Eigen::Matrix<double, 9, 1>>(rng, size / 3).reshaped(3, 3);
+    const Eigen::Matrix3d da = random_vector<Eigen::Matrix<double, 9, 1>>(rng, 1).reshaped(3, 3);
+    const double s = 1e-3;
+    const auto at = [&](double e) { return Eigen::Matrix3d(Eigen::Matrix3d(a + e * da).exp()); };
+    const Eigen::Matrix3d reference = (8 * (at(s) - at(-s)) - (at(2 * s) - at(-2 * s))) / (12 * s);
+    EXPECT_LT((exp_derivative<3>(a, da) - reference).norm(), 1e-10 * reference.norm()) << size;
+  }
 }
 
 TEST(GroupManifold, LeviCivitaIsTorsionFree) {

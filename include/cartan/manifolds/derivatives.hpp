@@ -38,9 +38,26 @@ inline double central_difference_step(double scale = 1.0) {
   return std::cbrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, scale);
 }
 
-/// d/de exp(A + e dA) at e = 0, exactly (to rounding): the upper right block of exp([[A, dA], [0, A]]).
+/// d/de exp(A + e dA) at e = 0. For |A|_inf <= 1/2 (the scheme's steps), the series
+/// sum_k S_k / k! with S_1 = dA, S_{k+1} = A S_k + dA A^k, stopped when a term is below eps of the
+/// sum (|S_k| / k! <= |A|^(k-1) / (k-1)! |dA|: at most 18 terms); otherwise the upper right block
+/// of exp([[A, dA], [0, A]]) (exact to rounding, six times the work at n = 3).
 template <int n>
 Eigen::Matrix<double, n, n> exp_derivative(const Eigen::Matrix<double, n, n>& a, const Eigen::Matrix<double, n, n>& da) {
+  using Matrix = Eigen::Matrix<double, n, n>;
+  if (a.cwiseAbs().rowwise().sum().maxCoeff() <= 0.5) {
+    Matrix s = da, power = a, sum = da;
+    double factorial = 1;
+    for (int k = 2; k <= 40; ++k) {
+      s = Matrix(a * s) + Matrix(da * power);
+      power = Matrix(power * a);
+      factorial *= k;
+      const Matrix term = s / factorial;
+      sum += term;
+      if (term.cwiseAbs().maxCoeff() <= std::numeric_limits<double>::epsilon() * sum.cwiseAbs().maxCoeff()) break;
+    }
+    return sum;
+  }
   Eigen::Matrix<double, 2 * n, 2 * n> block = Eigen::Matrix<double, 2 * n, 2 * n>::Zero();
   block.template topLeftCorner<n, n>() = a;
   block.template bottomRightCorner<n, n>() = a;
