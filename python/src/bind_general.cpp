@@ -570,6 +570,10 @@ class AnyLagrangian {
   Components momentum(double t, const Point& q, const Components& v) const { return impl_->momentum(t, q, v); }
   Components velocity(double t, const Point& q, const Components& mu) const { return impl_->velocity(t, q, mu); }
   Vector point_gradient(double t, const Point& q, const Components& v) const { return impl_->point_gradient(t, q, v); }
+  /// The wrapped Lagrangian's second derivatives (its own where it has them: general/lagrangian_hessian.hpp).
+  general::LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q, const Components& v) const {
+    return impl_->hessian(manifold, t, q, v);
+  }
 
  private:
   struct Interface {
@@ -578,6 +582,8 @@ class AnyLagrangian {
     virtual Components momentum(double t, const Point& q, const Components& v) const = 0;
     virtual Components velocity(double t, const Point& q, const Components& mu) const = 0;
     virtual Vector point_gradient(double t, const Point& q, const Components& v) const = 0;
+    virtual general::LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q,
+                                                  const Components& v) const = 0;
   };
   template <class L>
   struct Model final : Interface {
@@ -591,6 +597,10 @@ class AnyLagrangian {
     }
     Vector point_gradient(double t, const Point& q, const Components& v) const override {
       return lagrangian.point_gradient(t, q, v);
+    }
+    general::LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q,
+                                          const Components& v) const override {
+      return general::lagrangian_hessian(manifold, lagrangian, t, q, v);
     }
     L lagrangian;
   };
