@@ -54,6 +54,7 @@ class GeneralSchemeTangent {
   using Components = manifolds::ComponentsOf<M>;
   using ComponentMatrix = manifolds::ComponentMatrixOf<M>;
 
+  /// Keeps a reference to `scheme`, which must outlive it.
   explicit GeneralSchemeTangent(const Scheme& scheme) : scheme_(scheme) {
     if constexpr (manifolds::PointIndependentConnection<M>) {
       if (!scheme.constant_torsion()) ambient_ = ambient_tensors(scheme.problem().q0);
