@@ -1,0 +1,481 @@
+#pragma once
+// The general solve of the Python module (bind_general.cpp) on each manifold type: solve_on and
+// verify_on with their Lagrangians and arguments. Split from bind_general.cpp so that the solves on
+// the four group manifolds are instantiated in their own unit (bind_general_groups.cpp), which the
+// build compiles beside the rest: each unit about half of what was the slowest of the build.
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <variant>
+
+#include "bind_group.hpp"
+#include "bindings.hpp"
+#include "cartan/general/solve.hpp"
+#include "cartan/general/verify.hpp"
+#include "cartan/groups/heisenberg.hpp"
+#include "cartan/groups/se2.hpp"
+#include "cartan/groups/se3.hpp"
+#include "cartan/groups/so3.hpp"
+#include "cartan/manifolds/euclidean.hpp"
+#include "cartan/manifolds/chart.hpp"
+#include "cartan/manifolds/group_manifold.hpp"
+#include "cartan/manifolds/quadric.hpp"
+#include "python_models.hpp"
+#include "report_dict.hpp"
+
+namespace cartan::python::general_binding {
+
+template <groups::LieGroup G>
+using OnGroup = manifolds::GroupManifold<G>;
+
+using manifolds::ComponentMatrixOf;
+using manifolds::ComponentsOf;
+using manifolds::FrameOf;
+using manifolds::HyperbolicPlane;
+using manifolds::OperatorOf;
+using manifolds::PointOf;
+using manifolds::Sphere;
+using manifolds::VectorOf;
+
+/// R^2 or R^3 with constant Christoffel symbols: the Python class `Euclidean`.
+struct EuclideanManifold {
+  std::variant<manifolds::Euclidean<2>, manifolds::Euclidean<3>> m;
+};
+
+/// The state of a chart's Python callbacks: the first exception raised during a solve (re-raised
+/// after it, with its type and traceback), and whether a solve is running (then later callbacks
+/// fail at once, as ModelError, which the solvers pass through).
+struct ChartCallbacks {
+  CallbackState state;
+  bool solving = false;
+};
+
+/// A chart of R^2 or R^3 with Christoffel symbols (and optionally a metric) from Python callables:
+/// the Python class `Chart`.
+struct ChartManifold {
+  std::variant<manifolds::Chart<2>, manifolds::Chart<3>> m;
+  std::shared_ptr<ChartCallbacks> callbacks;
+};
+
+/// A Lie group with a left-invariant connection: the Python class `GroupManifold`.
+struct AnyGroupManifold {
+  std::variant<OnGroup<groups::SO3>, OnGroup<groups::Heisenberg>,
+               OnGroup<groups::SE2>, OnGroup<groups::SE3>>
+      m;
+};
+
+/// f(manifold) for the C++ manifold a Python manifold object holds.
+template <class Holder, class F>
+decltype(auto) visit_holder(const Holder& holder, F&& f) {
+  if constexpr (requires { holder.m.index(); }) {
+    return std::visit(std::forward<F>(f), holder.m);
+  } else {
+    return std::forward<F>(f)(holder);
+  }
+}
+
+// ---- arguments --------------------------------------------------------------------------------
+
+/// repr(x) for a message (quoted and cut, as user input).
+inline std::string repr_of(const py::handle& x) { return quote_input(py::repr(x).cast<std::string>()); }
+
+template <class M>
+PointOf<M> point_arg(const M& manifold, const py::handle& q, const std::string& where, const char* name) {
+  const PointOf<M> p = to_eigen<PointOf<M>>(q, where, name);
+  manifold.validate(p, name);
+  return p;
+}
+
+/// A Python number as T (double or int); throws std::invalid_argument naming it otherwise.
+template <class T>
+T number_arg(const py::handle& x, const std::string& where, const char* name) {
+  try {
+    return x.cast<T>();
+  } catch (const py::cast_error&) {
+    throw_invalid(where, name, repr_of(x), std::is_integral_v<T> ? "is not an integer" : "is not a number");
+  }
+}
+
+template <class T>
+T finite_arg(const py::handle& x, const std::string& where, const char* name) {
+  const T value = to_eigen<T>(x, where, name);
+  require_finite(value, where, name);
+  return value;
+}
+
+template <int N>
+using Square = Eigen::Matrix<double, N, N>;
+
+/// A (n, n, n) array as n matrices: out[a](b, c) = array[a, b, c].
+template <int N>
+std::array<Square<N>, N> tensor_arg(const py::handle& obj, const std::string& where, const char* name) {
+  const Array a = as_array(obj, where, name);
+  if (a.ndim() != 3 || a.shape(0) != N || a.shape(1) != N || a.shape(2) != N) {
+    const std::string n = std::to_string(N);
+    throw_invalid(where, name, "array of shape " + shape_text(a), "must have shape (" + n + ", " + n + ", " + n + ")");
+  }
+  std::array<Square<N>, N> out;
+  const double* data = a.data();
+  for (int i = 0; i < N; ++i) {
+    for (int j = 0; j < N; ++j) {
+      for (int k = 0; k < N; ++k) out[i](j, k) = data[(i * N + j) * N + k];
+    }
+  }
+  for (int i = 0; i < N; ++i) require_finite(out[i], where, name);
+  return out;
+}
+
+/// n matrices as a (n, n, n) array: array[a, b, c] = in[a](b, c).
+template <int N>
+py::array_t<double> tensor_numpy(const std::array<Square<N>, N>& in) {
+  return to_numpy(std::vector<Square<N>>(in.begin(), in.end()));
+}
+
+/// A symmetric positive-definite matrix from a (n, n) array or its (n,) diagonal.
+template <int N>
+Square<N> matrix_or_diagonal(const py::handle& obj, const std::string& where, const char* name) {
+  const Array a = as_array(obj, where, name);
+  if (a.ndim() == 1 && a.shape(0) == N) return to_eigen<Eigen::Matrix<double, N, 1>>(a, where, name).asDiagonal();
+  if (a.ndim() == 2 && a.shape(0) == N && a.shape(1) == N) return to_eigen<Square<N>>(a, where, name);
+  const std::string n = std::to_string(N);
+  throw_invalid(where, name, "array of shape " + shape_text(a), "must have shape (" + n + ", " + n + ") or (" + n + ",)");
+}
+
+// ---- the manifold classes ---------------------------------------------------------------------
+
+/// The geometry of manifolds/manifold.hpp and geometry.hpp, the same for every class.
+
+// ---- Lagrangians ------------------------------------------------------------------------------
+
+/// A Lagrangian of the general problem behind a shared pointer: one type per manifold for every
+/// Lagrangian, so that general::solve is instantiated once per manifold.
+template <manifolds::ManifoldWithConnection M>
+class AnyLagrangian {
+ public:
+  using Point = PointOf<M>;
+  using Vector = VectorOf<M>;
+  using Components = ComponentsOf<M>;
+
+  template <general::ManifoldLagrangian<M> L>
+  static AnyLagrangian of(L lagrangian) {
+    return AnyLagrangian(std::make_shared<const Model<L>>(std::move(lagrangian)));
+  }
+
+  double value(double t, const Point& q, const Components& v) const { return impl_->value(t, q, v); }
+  Components momentum(double t, const Point& q, const Components& v) const { return impl_->momentum(t, q, v); }
+  Components velocity(double t, const Point& q, const Components& mu) const { return impl_->velocity(t, q, mu); }
+  Vector point_gradient(double t, const Point& q, const Components& v) const { return impl_->point_gradient(t, q, v); }
+  /// The wrapped Lagrangian's second derivatives (its own where it has them: general/lagrangian_hessian.hpp).
+  general::LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q, const Components& v) const {
+    return impl_->hessian(manifold, t, q, v);
+  }
+
+ private:
+  struct Interface {
+    virtual ~Interface() = default;
+    virtual double value(double t, const Point& q, const Components& v) const = 0;
+    virtual Components momentum(double t, const Point& q, const Components& v) const = 0;
+    virtual Components velocity(double t, const Point& q, const Components& mu) const = 0;
+    virtual Vector point_gradient(double t, const Point& q, const Components& v) const = 0;
+    virtual general::LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q,
+                                                  const Components& v) const = 0;
+  };
+  template <class L>
+  struct Model final : Interface {
+    explicit Model(L l) : lagrangian(std::move(l)) {}
+    double value(double t, const Point& q, const Components& v) const override { return lagrangian.value(t, q, v); }
+    Components momentum(double t, const Point& q, const Components& v) const override {
+      return lagrangian.momentum(t, q, v);
+    }
+    Components velocity(double t, const Point& q, const Components& mu) const override {
+      return lagrangian.velocity(t, q, mu);
+    }
+    Vector point_gradient(double t, const Point& q, const Components& v) const override {
+      return lagrangian.point_gradient(t, q, v);
+    }
+    general::LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q,
+                                          const Components& v) const override {
+      return general::lagrangian_hessian(manifold, lagrangian, t, q, v);
+    }
+    L lagrangian;
+  };
+  explicit AnyLagrangian(std::shared_ptr<const Interface> impl) : impl_(std::move(impl)) {}
+  std::shared_ptr<const Interface> impl_;
+};
+
+/// A Lagrangian written in Python: value(t, q, v), momentum(t, q, v), velocity(t, q, mu) and
+/// point_gradient(t, q, v) (an ambient (d,) covector: zeta . x = d/de l(t, step(q, e x), v)).
+template <manifolds::ManifoldWithConnection M>
+class PythonManifoldLagrangian : public PythonModel {
+ public:
+  explicit PythonManifoldLagrangian(const py::object& object)
+      : PythonModel(object, "Lagrangian", {"value", "momentum", "velocity", "point_gradient"}) {}
+
+  double value(double t, const PointOf<M>& q, const ComponentsOf<M>& v) const { return call<double>(0, t, q, v); }
+  ComponentsOf<M> momentum(double t, const PointOf<M>& q, const ComponentsOf<M>& v) const {
+    return call<ComponentsOf<M>>(1, t, q, v);
+  }
+  ComponentsOf<M> velocity(double t, const PointOf<M>& q, const ComponentsOf<M>& mu) const {
+    return call<ComponentsOf<M>>(2, t, q, mu);
+  }
+  VectorOf<M> point_gradient(double t, const PointOf<M>& q, const ComponentsOf<M>& v) const {
+    return call<VectorOf<M>>(3, t, q, v);
+  }
+};
+
+// ---- solve_general ----------------------------------------------------------------------------
+
+/// The arguments of cartan.solve_general as Python gives them.
+struct GeneralRequest {
+  double T = 1;
+  int N = 100;
+  py::object q0 = py::none(), qT = py::none(), inertia = py::none(), potential = py::none(),
+             potential_gradient = py::none(), gravity = py::none(), lagrangian = py::none(), frame0 = py::none();
+  std::string method = "auto", continuation = "none";
+  int order = 1;
+  double tol = 1e-10;
+  int max_iterations = 200;
+  py::object v0 = py::none(), Xi0 = py::none(), progress = py::none();
+  int samples = 0;
+  py::object max_nodes = py::none(), guess = py::none();
+};
+
+inline constexpr const char* kWhere = "cartan.solve_general";
+
+/// The Lagrangian of the request on M; `python` is set when it calls back into Python.
+template <class M>
+AnyLagrangian<M> request_lagrangian(const M&, const GeneralRequest& r, std::shared_ptr<CallbackState> state,
+                                    std::optional<PythonManifoldLagrangian<M>>& python_object, bool& python) {
+  constexpr int m = M::kDim;
+  using Point = PointOf<M>;
+  using Vector = VectorOf<M>;
+  if (!r.lagrangian.is_none()) {
+    for (const auto& [name, value] : {std::pair<const char*, const py::object*>{"inertia", &r.inertia},
+                                      {"potential", &r.potential}, {"potential_gradient", &r.potential_gradient},
+                                      {"gravity", &r.gravity}}) {
+      if (!value->is_none()) {
+        throw_invalid(kWhere, name, repr_of(*value), "does not apply with a lagrangian object (it defines l itself)");
+      }
+    }
+    python = true;
+    python_object.emplace(r.lagrangian);
+    return AnyLagrangian<M>::of(*python_object);
+  }
+  const Square<m> inertia = r.inertia.is_none() ? Square<m>::Identity().eval()
+                                                : matrix_or_diagonal<m>(r.inertia, kWhere, "inertia");
+  if (!r.gravity.is_none()) {
+    const double G = number_arg<double>(r.gravity, kWhere, "gravity");
+    require_finite(G, kWhere, "gravity");
+    if constexpr (!std::is_same_v<M, Sphere>) {
+      throw_invalid(kWhere, "gravity", format_value(G),
+                    "applies to the Sphere only (give potential and potential_gradient)");
+    } else {
+      if (!r.potential.is_none()) {
+        throw_invalid(kWhere, "potential", repr_of(r.potential), "and gravity exclude each other");
+      }
+      return AnyLagrangian<M>::of(
+          general::KineticPotential<M>::with_linear_potential(inertia, Vector(0, 0, G)));
+    }
+  }
+  if (r.potential.is_none() != r.potential_gradient.is_none()) {
+    const bool has_v = !r.potential.is_none();
+    throw_invalid(kWhere, has_v ? "potential_gradient" : "potential", "None",
+                  has_v ? "must be given with potential (both or neither)"
+                        : "must be given with potential_gradient (both or neither)");
+  }
+  if (r.potential.is_none()) return AnyLagrangian<M>::of(general::KineticPotential<M>(inertia));
+  for (const auto& [name, fn] : {std::pair<const char*, const py::object*>{"potential", &r.potential},
+                                 {"potential_gradient", &r.potential_gradient}}) {
+    if (!PyCallable_Check(fn->ptr())) throw_invalid(kWhere, name, repr_of(*fn), "is not callable");
+  }
+  python = true;
+  typename general::KineticPotential<M>::Potential potential = [state, fn = r.potential](const Point& q) {
+    return guarded_callback(*state, "potential", [&] {
+      const double value = FromPython<double>::convert(fn(to_numpy(q)), "potential");
+      if (!std::isfinite(value) && q.allFinite()) {
+        throw ModelError("potential returned a non-finite value at q = " + format_value(q));
+      }
+      return value;
+    });
+  };
+  typename general::KineticPotential<M>::PotentialGradient gradient = [state, fn = r.potential_gradient](const Point& q) {
+    return guarded_callback(*state, "potential_gradient", [&] {
+      const Vector value = FromPython<Vector>::convert(fn(to_numpy(q)), "potential_gradient");
+      if (!value.allFinite() && q.allFinite()) {
+        throw ModelError("potential_gradient returned a non-finite value at q = " + format_value(q));
+      }
+      return value;
+    });
+  };
+  return AnyLagrangian<M>::of(general::KineticPotential<M>(inertia, std::move(potential), std::move(gradient)));
+}
+
+/// Runs a solve or check f() on a manifold whose geometry may call Python (`chart` non-null, with
+/// the GIL held): the chart's first callback error is re-raised after it, in place of whatever
+/// the solver made of it.
+template <class F>
+auto run_on_chart(ChartCallbacks* chart, F&& f) {
+  if (chart == nullptr) return f();
+  chart->state.first_error = nullptr;
+  chart->solving = true;
+  struct Done {
+    ChartCallbacks* c;
+    ~Done() { c->solving = false; }
+  } done{chart};
+  return run_with_callbacks(chart->state, std::forward<F>(f));
+}
+
+/// `name` of `object` (an attribute), or an error naming what `object` should be.
+inline py::object field_of(const py::object& object, const char* name, const char* where, const char* what) {
+  if (!py::hasattr(object, name)) {
+    throw_invalid(where, what, repr_of(object), std::string("has no field ") + name + " (give a GeneralSolveResult)");
+  }
+  return object.attr(name);
+}
+
+/// The trajectory (t, q, frame, v, mu, Xi) of a GeneralSolveResult-like object, each entry checked
+/// (points valid on the manifold, finite components) with errors naming `what`.
+template <class M>
+general::GeneralTrajectory<M> trajectory_of(const M& manifold, const py::object& object, const char* where,
+                                            const char* what) {
+  const auto field = [&](const char* name) -> py::sequence { return field_of(object, name, where, what); };
+  const py::sequence times = field("t"), q = field("q"), frames = field("frame"), v = field("v"), mu = field("mu"),
+                     Xi = field("Xi");
+  general::GeneralTrajectory<M> x;
+  for (const auto& time : times) x.t.push_back(number_arg<double>(time, where, "t"));
+  const std::size_t n = x.t.size();
+  if (py::len(q) != n || py::len(frames) != n || py::len(v) != n || py::len(mu) != n || py::len(Xi) != n) {
+    throw_invalid(where, what, "(" + std::to_string(n) + " times)", "needs q, frame, v, mu and Xi at every time");
+  }
+  // Built by append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
+  const auto name = [what](const char* field_name, std::size_t k) {
+    std::string s(what);
+    s.append(".").append(field_name).append("[").append(std::to_string(k)).append("]");
+    return s;
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    x.q.push_back(point_arg(manifold, q[k], where, name("q", k).c_str()));
+    x.frame.push_back(to_eigen<FrameOf<M>>(frames[k], where, name("frame", k)));
+    x.v.push_back(to_eigen<ComponentsOf<M>>(v[k], where, name("v", k)));
+    x.mu.push_back(to_eigen<ComponentsOf<M>>(mu[k], where, name("mu", k)));
+    x.Xi.push_back(to_eigen<ComponentMatrixOf<M>>(Xi[k], where, name("Xi", k)));
+  }
+  return x;
+}
+
+template <class M>
+py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* chart) {
+  using Problem = general::GeneralProblem<M, AnyLagrangian<M>>;
+  const std::string where = kWhere;
+  auto state = std::make_shared<CallbackState>();
+  std::optional<PythonManifoldLagrangian<M>> python_object;
+  bool python = false;
+  Problem problem{manifold, request_lagrangian(manifold, r, state, python_object, python), r.T, r.N,
+                  point_arg(manifold, r.q0, where, "q0"), point_arg(manifold, r.qT, where, "qT"), std::nullopt};
+  if (!r.frame0.is_none()) problem.frame0 = to_eigen<FrameOf<M>>(r.frame0, where, "frame0");
+
+  transported::SolveOptions options;
+  options.method = parse_enum<transported::Method>(r.method, where);
+  options.continuation = parse_enum<transported::Continuation>(r.continuation, where);
+  if (r.order != 1 && r.order != 2) throw_invalid(where, "order", std::to_string(r.order), "must be 1 or 2");
+  options.order = r.order == 2 ? transported::SchemeOrder::Second : transported::SchemeOrder::First;
+  options.tol = r.tol;
+  options.max_iterations = r.max_iterations;
+  options.samples = r.samples;
+  if (!r.max_nodes.is_none()) options.max_nodes = number_arg<int>(r.max_nodes, where, "max_nodes");
+  options.monitor = python_monitor(r.progress).stage("general shooting");  // copied here, with the GIL
+  general::GeneralGuess<M> guess;
+  if (!r.v0.is_none()) guess.v0 = finite_arg<ComponentsOf<M>>(r.v0, where, "v0");
+  if (!r.Xi0.is_none()) guess.Xi0 = finite_arg<ComponentMatrixOf<M>>(r.Xi0, where, "Xi0");
+  if (!r.guess.is_none()) guess.trajectory = trajectory_of(manifold, r.guess, kWhere, "guess");
+
+  const auto run = [&] { return general::solve(problem, options, guess); };
+  const CallbackState& callbacks = python_object ? python_object->state() : *state;
+  std::optional<general::GeneralSolution<M>> solved;
+  if (python || chart != nullptr) {
+    solved.emplace(run_on_chart(chart, [&] { return run_with_callbacks(callbacks, run); }));
+  } else {
+    py::gil_scoped_release release;
+    solved.emplace(run());
+  }
+  const general::GeneralSolution<M>& s = *solved;
+  py::dict d;
+  d["status"] = std::string(to_string(s.status));
+  d["message"] = s.message;
+  d["success"] = s.converged();
+  d["method"] = std::string(to_string(s.method));
+  d["order"] = s.order;
+  d["branch"] = s.branch;
+  d["manifold"] = std::string(manifold.name());
+  d["T"] = problem.T;
+  d["N"] = problem.N;
+  d["q0"] = to_numpy(problem.q0);
+  d["qT"] = to_numpy(problem.qT);
+  d["tol"] = options.tol;
+  const auto& tr = s.trajectory;
+  d["t"] = to_numpy(tr.t);
+  d["q"] = to_numpy(tr.q);
+  d["frame"] = to_numpy(tr.frame);
+  d["v"] = to_numpy(tr.v);
+  d["mu"] = to_numpy(tr.mu);
+  d["Xi"] = to_numpy(tr.Xi);
+  d["v0"] = to_numpy(s.v0);
+  d["Xi0"] = to_numpy(s.Xi0);
+  d["terminal_error"] = s.terminal_error;
+  d["xi_terminal"] = s.xi_terminal;
+  d["iterations"] = s.iterations;
+  d["sweeps"] = s.sweeps;
+  d["residual_history"] = to_numpy(s.residual_history);
+  d["solve_time"] = s.solve_time_s;
+  add_collocation_fields(d, s.collocation);
+  return d;
+}
+
+/// The library's general verifier (general/verify.hpp) on `result` (any object with T, q0, qT,
+/// tol, order, status, t, q, frame, v, mu, Xi, e.g. a GeneralSolveResult) for the Lagrangian of
+/// the request (as solve_general takes it).
+template <class M>
+py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object& result, ChartCallbacks* chart) {
+  constexpr const char* where = "cartan.verify_general";
+  const auto field = [&](const char* name) { return field_of(result, name, where, "result"); };
+  const Status status = parse_enum<Status>(py::cast<std::string>(field("status")), where);
+  if (py::len(field("t")) == 0 && status != Status::Converged) return report_dict(verify::unchecked_failure(status));
+  const general::GeneralTrajectory<M> x = trajectory_of(manifold, result, where, "result");
+  if (x.t.empty()) throw_invalid(where, "result.t", "(empty)", "needs the samples of a solution");
+  auto state = std::make_shared<CallbackState>();
+  std::optional<PythonManifoldLagrangian<M>> python_object;
+  bool python = false;
+  const general::GeneralProblem<M, AnyLagrangian<M>> problem{
+      manifold, request_lagrangian(manifold, r, state, python_object, python), number_arg<double>(field("T"), where, "T"),
+      static_cast<int>(std::max<std::size_t>(x.t.size(), 2) - 1), point_arg(manifold, field("q0"), where, "q0"),
+      point_arg(manifold, field("qT"), where, "qT"), x.frame.front()};
+  const int order = py::cast<int>(field("order"));
+  const double tol = number_arg<double>(field("tol"), where, "tol");
+  const auto run = [&] { return general::verify_general(problem, x, order, tol, status); };
+  if (python || chart != nullptr) {
+    return report_dict(
+        run_on_chart(chart, [&] { return run_with_callbacks(python_object ? python_object->state() : *state, run); }));
+  }
+  return report_dict(run());
+}
+
+// Instantiated in bind_general_groups.cpp.
+extern template py::dict solve_on(const OnGroup<groups::SO3>&, const GeneralRequest&, ChartCallbacks*);
+extern template py::dict verify_on(const OnGroup<groups::SO3>&, const GeneralRequest&, const py::object&,
+                                   ChartCallbacks*);
+extern template py::dict solve_on(const OnGroup<groups::Heisenberg>&, const GeneralRequest&, ChartCallbacks*);
+extern template py::dict verify_on(const OnGroup<groups::Heisenberg>&, const GeneralRequest&, const py::object&,
+                                   ChartCallbacks*);
+extern template py::dict solve_on(const OnGroup<groups::SE2>&, const GeneralRequest&, ChartCallbacks*);
+extern template py::dict verify_on(const OnGroup<groups::SE2>&, const GeneralRequest&, const py::object&,
+                                   ChartCallbacks*);
+extern template py::dict solve_on(const OnGroup<groups::SE3>&, const GeneralRequest&, ChartCallbacks*);
+extern template py::dict verify_on(const OnGroup<groups::SE3>&, const GeneralRequest&, const py::object&,
+                                   ChartCallbacks*);
+
+}  // namespace cartan::python::general_binding
