@@ -4,16 +4,6 @@
 
 namespace cartan::groups {
 
-Heisenberg::Element Heisenberg::compose(const Element& g, const Element& h) {
-  return Element(g[0] + h[0], g[1] + h[1], g[2] + h[2] + g[0] * h[1]);
-}
-
-Heisenberg::Element Heisenberg::inverse(const Element& g) {
-  return Element(-g[0], -g[1], g[0] * g[1] - g[2]);
-}
-
-Heisenberg::Element Heisenberg::exp(const Tangent& v) { return Element(v[0], v[1], v[2] + v[0] * v[1] / 2); }
-
 Heisenberg::Tangent Heisenberg::log(const Element& g) { return Tangent(g[0], g[1], g[2] - g[0] * g[1] / 2); }
 
 Heisenberg::MatrixRep Heisenberg::hat(const Tangent& v) {
@@ -31,20 +21,6 @@ Heisenberg::MatrixRep Heisenberg::matrix(const Element& g) {
   m << 1, g[0], g[2],  //
       0, 1, g[1],      //
       0, 0, 1;
-  return m;
-}
-
-Heisenberg::AlgebraMatrix Heisenberg::Ad(const Element& g) {
-  AlgebraMatrix m = AlgebraMatrix::Identity();
-  m(2, 0) = -g[1];
-  m(2, 1) = g[0];
-  return m;
-}
-
-Heisenberg::AlgebraMatrix Heisenberg::ad(const Tangent& u) {
-  AlgebraMatrix m = AlgebraMatrix::Zero();
-  m(2, 0) = -u[1];
-  m(2, 1) = u[0];
   return m;
 }
 

@@ -73,6 +73,18 @@ SE2::AlgebraMatrix SE2::ad(const Tangent& v) {
   return m;
 }
 
+SE2::AlgebraMatrix SE2::left_jacobian(const Tangent& v) {
+  const AlgebraMatrix x = ad(v);
+  const Eigen::Matrix2d a = x.topLeftCorner<2, 2>();
+  const SO3::AngleCoefficients k = SO3::angle_coefficients(v[2]);
+  AlgebraMatrix j = AlgebraMatrix::Zero();
+  j.topLeftCorner<2, 2>() = k.sin_over_t * Eigen::Matrix2d::Identity() + k.one_minus_cos_over_t2 * a;
+  j.topRightCorner<2, 1>() =
+      (k.one_minus_cos_over_t2 * Eigen::Matrix2d::Identity() + k.t_minus_sin_over_t3 * a) * x.topRightCorner<2, 1>();
+  j(2, 2) = 1;
+  return j;
+}
+
 void SE2::validate(const Element& g, std::string_view name) { validate(g, name, kDefaultTolerance); }
 
 void SE2::validate(const Element& g, std::string_view name, double tolerance) {

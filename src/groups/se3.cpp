@@ -51,6 +51,30 @@ SE3::AlgebraMatrix SE3::Ad(const Element& g) {
   return m;
 }
 
+SE3::AlgebraMatrix SE3::left_jacobian(const Tangent& v) {
+  const Eigen::Matrix3d w = SO3::hat(omega(v)), r = SO3::hat(rho(v));
+  const double t = omega(v).norm(), t2 = t * t;
+  double c1, c2, c3;
+  if (t < 1e-2) {  // next terms: t^4/5040, t^4/40320, t^4/~2e5 relative; they multiply W^2.. of size t^2
+    c1 = 1.0 / 6 - t2 / 120;
+    c2 = 1.0 / 24 - t2 / 720;
+    c3 = 1.0 / 120 - t2 / 2520;
+  } else {
+    const double s = std::sin(t), c = std::cos(t);
+    c1 = (t - s) / (t2 * t);
+    c2 = (t2 + 2 * c - 2) / (2 * t2 * t2);
+    c3 = (2 * t - 3 * s + t * c) / (2 * t2 * t2 * t);
+  }
+  const Eigen::Matrix3d wr = w * r, rw = r * w, wrw = wr * w, ww = w * w;
+  const Eigen::Matrix3d q = r / 2 + c1 * (wr + rw + wrw) + c2 * (ww * r + rw * w - 3 * wrw) + c3 * (wrw * w + w * wrw);
+  const Eigen::Matrix3d j = SO3::left_jacobian(omega(v));
+  AlgebraMatrix out = AlgebraMatrix::Zero();
+  out.topLeftCorner<3, 3>() = j;
+  out.topRightCorner<3, 3>() = q;
+  out.bottomRightCorner<3, 3>() = j;
+  return out;
+}
+
 SE3::AlgebraMatrix SE3::ad(const Tangent& v) {
   const Eigen::Matrix3d w = SO3::hat(omega(v));
   AlgebraMatrix m = AlgebraMatrix::Zero();

@@ -8,18 +8,6 @@
 
 namespace cartan::groups {
 
-SO3::MatrixRep SO3::hat(const Tangent& v) {
-  MatrixRep x;
-  x << 0, -v.z(), v.y(),  //
-      v.z(), 0, -v.x(),   //
-      -v.y(), v.x(), 0;
-  return x;
-}
-
-SO3::Tangent SO3::vee(const MatrixRep& x) {
-  return Tangent(x(2, 1) - x(1, 2), x(0, 2) - x(2, 0), x(1, 0) - x(0, 1)) / 2;
-}
-
 SO3::AngleCoefficients SO3::angle_coefficients(double t) {
   const double t2 = t * t;
   if (std::abs(t) < kSmallAngle) {  // first omitted terms are O(t^6) relative
@@ -34,18 +22,6 @@ SO3::AngleCoefficients SO3::angle_coefficients(double t) {
   const double sin_half_over_half = std::sin(half) / half;
   return {std::sin(t) / t, sin_half_over_half * sin_half_over_half / 2, (t - std::sin(t)) / (t2 * t),
           (1 - half / std::tan(half)) / t2};
-}
-
-SO3::Element SO3::exp(const Tangent& v) {
-  const AngleCoefficients k = angle_coefficients(v.norm());
-  const MatrixRep w = hat(v);
-  return Element::Identity() + k.sin_over_t * w + k.one_minus_cos_over_t2 * w * w;
-}
-
-Eigen::Matrix3d SO3::left_jacobian(const Tangent& v) {
-  const AngleCoefficients k = angle_coefficients(v.norm());
-  const MatrixRep w = hat(v);
-  return Eigen::Matrix3d::Identity() + k.one_minus_cos_over_t2 * w + k.t_minus_sin_over_t3 * w * w;
 }
 
 Eigen::Matrix3d SO3::left_jacobian_inverse(const Tangent& v) {

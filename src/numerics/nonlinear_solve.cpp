@@ -26,10 +26,25 @@ ResidualFunction with_forward_difference_jacobian(std::function<bool(const Eigen
 
 namespace {
 
-bool evaluate(const ResidualFunction& f, const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd& jac,
+/// Evaluates r (and J when jac is set) at x; false when the evaluation failed or is not finite.
+bool evaluate(const ResidualFunction& f, const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac,
               NonlinearSolveReport& report) {
   ++report.evaluations;
-  return f(x, r, &jac) && r.allFinite() && jac.allFinite();
+  return f(x, r, jac) && r.allFinite() && (jac == nullptr || jac->allFinite());
+}
+
+/// Whether the trial point is expected to converge: |r| predicted by the rate of the last
+/// accepted step, quadratic (|r_new| ~ |r|^3 / |r_prev|^2) once the residual fell by more than
+/// 10 and linear before. A point that converges needs no Jacobian, so the residual alone is
+/// asked for there (a tangent-linear sweep costs several plain ones): a wrong guess costs one
+/// residual evaluation, a right one the Jacobian's extra cost.
+bool expected_to_converge(const std::vector<double>& history, double tolerance) {
+  if (history.size() < 2) return false;
+  const double now = history.back(), before = history[history.size() - 2];
+  if (!(now < before)) return false;
+  const double rate = now / before;
+  const double predicted = rate < 0.1 ? now * rate * rate : now * rate;
+  return predicted <= tolerance;
 }
 
 void finish(NonlinearSolveReport& report, Status status, const std::string& why) {
@@ -70,7 +85,7 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
   report.x = x0;
   Eigen::VectorXd r;
   Eigen::MatrixXd jac;
-  if (!evaluate(f, report.x, r, jac, report)) {
+  if (!evaluate(f, report.x, r, &jac, report)) {
     report.residual = r;
     report.residual_norm = r.size() ? r.norm() : std::nan("");
     finish(report, Status::NonFinite, "at the initial guess");
@@ -130,20 +145,30 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
     const Eigen::VectorXd x_new = report.x + step;
     const double predicted = step.dot(mu * step - grad);
     bool accepted = false;
-    if (evaluate(f, x_new, r_new, jac_new, report)) {
+    const bool with_jacobian = !expected_to_converge(report.residual_history, options.tolerance);
+    if (evaluate(f, x_new, r_new, with_jacobian ? &jac_new : nullptr, report)) {
       const double rho = (r.squaredNorm() - r_new.squaredNorm()) / std::max(predicted, 1e-300);
       if (rho > 0) {
         accepted = true;
         report.x = x_new;
         r = r_new;
-        jac = jac_new;
-        a = jac.transpose() * jac;
-        grad = jac.transpose() * r;
         report.residual = r;
         report.residual_norm = r.norm();
         report.residual_history.push_back(report.residual_norm);
         mu *= std::max(1.0 / 3.0, 1 - std::pow(2 * rho - 1, 3));
         nu = 2;
+        if (!with_jacobian && report.residual_norm > options.tolerance) {
+          // Not converged after all: the Jacobian at the accepted point (and its residual again).
+          if (!evaluate(f, report.x, r, &jac_new, report)) {
+            finish(report, Status::NonFinite, "the Jacobian at an accepted point failed");
+            return report;
+          }
+        }
+        if (with_jacobian || report.residual_norm > options.tolerance) {
+          jac = jac_new;
+          a = jac.transpose() * jac;
+          grad = jac.transpose() * r;
+        }
       }
     }
     best.push_back(std::min(best.back(), report.residual_norm));

@@ -14,6 +14,7 @@ TYPED_TEST(GroupTest, ExpLogAgainstMatrixExponential) { expect_exp_log<TypeParam
 TYPED_TEST(GroupTest, AdjointByConjugation) { expect_adjoint<TypeParam>(); }
 TYPED_TEST(GroupTest, AdIsDerivativeOfAdAndCoadIsDual) { expect_ad_and_coad<TypeParam>(); }
 TYPED_TEST(GroupTest, TranslationDifferentials) { expect_translations<TypeParam>(); }
+TYPED_TEST(GroupTest, LeftJacobianIsTheSeries) { expect_left_jacobian_is_the_series<TypeParam>(); }
 
 }  // namespace
 }  // namespace cartan::testing

@@ -1,6 +1,8 @@
 // Levenberg–Marquardt on systems with known roots, and its failure reports.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "cartan/numerics/nonlinear_solve.hpp"
 #include "test_support.hpp"
 
@@ -28,16 +30,39 @@ TEST(LevenbergMarquardt, SolvesRosenbrockWithAnalyticJacobian) {
 }
 
 TEST(LevenbergMarquardt, ForwardDifferenceJacobianCountsEvaluations) {
-  int calls = 0;
+  int calls = 0, with_jacobian = 0;
   auto f = [&calls](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
     ++calls;
     return rosenbrock(x, r, nullptr);
   };
-  const auto report =
-      levenberg_marquardt(with_forward_difference_jacobian(f, 1e-7), Eigen::Vector2d(-1.2, 1.0), {.tolerance = 1e-12});
+  const ResidualFunction fd = with_forward_difference_jacobian(f, 1e-7);
+  const ResidualFunction counted = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
+    with_jacobian += jac != nullptr;
+    return fd(x, r, jac);
+  };
+  const auto report = levenberg_marquardt(counted, Eigen::Vector2d(-1.2, 1.0), {.tolerance = 1e-12});
   ASSERT_EQ(report.status, Status::Converged) << report.message;
-  EXPECT_EQ(calls, 3 * report.evaluations);  // residual + one per unknown, per evaluation
+  // residual + one per unknown where a Jacobian was asked for, the residual alone elsewhere
+  EXPECT_EQ(calls, report.evaluations + 2 * with_jacobian);
   EXPECT_NEAR(report.x[0], 1.0, 1e-11);
+}
+
+// Where the last step's rate predicts convergence, the trial point is evaluated without its
+// Jacobian (a tangent-linear sweep costs several plain ones): on Rosenbrock, whose Newton phase
+// converges quadratically, the converged point is such an evaluation; every point that was not
+// the last got its Jacobian (the solve continued from it).
+TEST(LevenbergMarquardt, AsksNoJacobianWhereItExpectsConvergence) {
+  std::vector<bool> asked;
+  const ResidualFunction f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
+    asked.push_back(jac != nullptr);
+    return rosenbrock(x, r, jac);
+  };
+  const auto report = levenberg_marquardt(f, Eigen::Vector2d(-1.2, 1.0), {.tolerance = 1e-12});
+  ASSERT_EQ(report.status, Status::Converged) << report.message;
+  ASSERT_GE(asked.size(), 3u);
+  EXPECT_FALSE(asked.back());
+  EXPECT_TRUE(asked.front());
+  EXPECT_EQ(static_cast<int>(asked.size()), report.evaluations);
 }
 
 TEST(LevenbergMarquardt, ReportsStallAtNonZeroMinimum) {

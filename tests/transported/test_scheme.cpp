@@ -3,6 +3,7 @@
 #include <limits>
 #include <string>
 
+#include "cartan/mechanics/free_body.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/two_level.hpp"
@@ -46,6 +47,23 @@ void expect_tangent_matches_differences(const transported::TransportedProblem<G,
   }
 }
 
+/// A model with its declared Hessian structure hidden (mechanics/lagrangian_hessian.hpp), so that
+/// the general path of the tangent-linear step - every block, d^2 l/dv^2 factorised at each node -
+/// is checked on the same problems as the structured one.
+template <class L>
+struct WithoutStructure : L {
+  explicit WithoutStructure(const L& l) : L(l) {}
+  static constexpr bool kConstantMomentumHessian = false;
+  static constexpr bool kGroupGradientIndependentOfVelocity = false;
+  static constexpr bool kZeroGroupGradient = false;
+};
+template <groups::LieGroup G, class L>
+transported::TransportedProblem<G, WithoutStructure<L>> without_structure(const transported::TransportedProblem<G, L>& p) {
+  static_assert(mechanics::HessianStructure<L>::constant_momentum_hessian);
+  static_assert(!mechanics::HessianStructure<WithoutStructure<L>>::constant_momentum_hessian);
+  return {WithoutStructure<L>(p.lagrangian), p.lambda, p.T, p.N, p.g0, p.gT};
+}
+
 TEST(TransportedScheme, TangentLinearMatchesFiniteDifferences) {
   std::mt19937 rng(kSeed);
   for (double lambda : {0.0, 0.5, 1.0, 1.4, -0.2}) {
@@ -58,6 +76,18 @@ TEST(TransportedScheme, TangentLinearMatchesFiniteDifferences) {
                                                                     groups::Heisenberg::Element(0.2, -0.1, 0.3),
                                                                     groups::Heisenberg::Element(1.0, 0.5, 0.8)};
       expect_tangent_matches_differences(h3, order, rng);
+      expect_tangent_matches_differences(without_structure(oscillator), order, rng);
+      expect_tangent_matches_differences(without_structure(free_body), order, rng);
+      // The closed-form left Jacobians of SE(2) and SE(3) inside the step.
+      const transported::TransportedProblem<groups::SE2, mechanics::SE2FreeBody> se2{
+          mechanics::SE2FreeBody(Eigen::Vector3d(2, 1, 3).asDiagonal()), lambda, 2.0, 40, groups::SE2::identity(),
+          groups::SE2::exp(Eigen::Vector3d(0.7, 1.0, -0.4))};
+      expect_tangent_matches_differences(se2, order, rng);
+      using V6 = Eigen::Matrix<double, 6, 1>;
+      const transported::TransportedProblem<groups::SE3, mechanics::SE3FreeBody> se3{
+          mechanics::SE3FreeBody(V6(1, 2, 3, 4, 4, 4).asDiagonal()), lambda, 2.0, 40, groups::SE3::identity(),
+          groups::SE3::exp((V6() << 0.3, -0.2, 0.5, 1.0, 0.4, -0.6).finished())};
+      expect_tangent_matches_differences(se3, order, rng);
     }
   }
 }

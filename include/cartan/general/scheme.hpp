@@ -50,6 +50,10 @@ struct GeneralTrajectory {
     t.push_back(node.t), q.push_back(node.q), frame.push_back(node.frame), v.push_back(node.v);
     mu.push_back(node.mu), Xi.push_back(node.Xi);
   }
+  /// Empties the trajectory and keeps its storage (a sweep that records reuses it).
+  void clear() { t.clear(), q.clear(), frame.clear(), v.clear(), mu.clear(), Xi.clear(); }
+  /// The last node.
+  GeneralNode<M> back() const { return {t.back(), q.back(), frame.back(), mu.back(), Xi.back(), v.back()}; }
 };
 
 /// Throws std::invalid_argument naming `what` unless x has times from 0 to the problem's T

@@ -80,7 +80,7 @@ std::optional<GeneralNode<M>> general_sweep(const GeneralScheme<M, L>& scheme, c
     GeneralNode<M> node = scheme.initial(v0, Xi0), next;
     GeneralNodeTangent<M> dnode, dnext;
     if (tangent) dnode = tangent->initial(node);
-    if (trajectory) *trajectory = {}, trajectory->push(node);
+    if (trajectory) trajectory->clear(), trajectory->push(node);
     for (int k = 0; k < scheme.problem().N; ++k) {
       tangent ? tangent->step(node, dnode, next, dnext) : scheme.step(node, next);
       if (!next.q.allFinite() || !next.frame.allFinite() || !next.mu.allFinite() || !next.Xi.allFinite() ||
@@ -130,12 +130,19 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   // (1 / T, s) and its Xi rows by 1 / s.
   Eigen::VectorXd scaling(m + m * m);
   scaling << Eigen::VectorXd::Constant(m, 1 / T), Eigen::VectorXd::Constant(m * m, s);
+  // As in transported/shooting.hpp: the residual-only sweeps of the analytic path record their
+  // trajectory, so that the final point (asked for without a Jacobian) needs no further sweep.
+  GeneralTrajectory<M> recorded;
+  Eigen::VectorXd recorded_x;
   auto residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian) {
     const auto [v0, Xi0] = unpack(x);
     ++solution.sweeps;
-    const auto last = general_sweep(scheme, v0, Xi0, failure, static_cast<GeneralTrajectory<M>*>(nullptr),
+    const bool record = jacobian == nullptr && options.analytic_jacobian;
+    if (record) recorded_x.resize(0);
+    const auto last = general_sweep(scheme, v0, Xi0, failure, record ? &recorded : nullptr,
                                     jacobian ? &tangent : nullptr, jacobian);
     if (!last) return false;
+    if (record) recorded_x = x;
     r.resize(m + m * m);
     r << scheme.terminal_residual(*last), last->Xi.reshaped() / s;
     if (jacobian) {
@@ -160,9 +167,15 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   solution.iterations = report.iterations;
   solution.residual_history = report.residual_history;
   const auto [v0, Xi0] = unpack(report.x);
-  ++solution.sweeps;
-  std::string record_failure;
-  const auto last = general_sweep(scheme, v0, Xi0, record_failure, &solution.trajectory);
+  std::optional<GeneralNode<M>> last;
+  if (recorded_x.size() == report.x.size() && recorded_x == report.x) {
+    solution.trajectory = std::move(recorded);
+    last = solution.trajectory.back();
+  } else {
+    ++solution.sweeps;
+    std::string record_failure;
+    last = general_sweep(scheme, v0, Xi0, record_failure, &solution.trajectory);
+  }
   if (last) {
     solution.v0 = v0;
     solution.Xi0 = Xi0;

@@ -6,6 +6,7 @@
 // so that log(g exp(s w)) = log(g) + s J_r(log g)^{-1} w + O(s^2).
 
 #include <unsupported/Eigen/MatrixFunctions>
+#include <utility>
 
 #include "cartan/groups/group.hpp"
 
@@ -35,6 +36,17 @@ AlgebraMatrixOf<G> left_jacobian(const TangentOf<G>& x) {
 template <LieGroup G>
 AlgebraMatrixOf<G> right_jacobian(const TangentOf<G>& x) {
   return left_jacobian<G>(TangentOf<G>(-x));
+}
+
+/// exp(x) and J_l(x) together: the group's fused `exp_and_left_jacobian` when it has one (they
+/// share the trigonometric work on SO(3)), else the two computed apart.
+template <LieGroup G>
+std::pair<ElementOf<G>, AlgebraMatrixOf<G>> exp_and_left_jacobian(const TangentOf<G>& x) {
+  if constexpr (requires { G::exp_and_left_jacobian(x); }) {
+    return G::exp_and_left_jacobian(x);
+  } else {
+    return {G::exp(x), left_jacobian<G>(x)};
+  }
 }
 
 template <LieGroup G>

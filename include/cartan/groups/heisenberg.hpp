@@ -20,11 +20,13 @@ struct Heisenberg {
 
   static constexpr std::string_view name() { return "heisenberg"; }
   static Element identity() { return Element::Zero(); }
-  static Element compose(const Element& g, const Element& h);
-  static Element inverse(const Element& g);
+  static Element compose(const Element& g, const Element& h) {
+    return Element(g[0] + h[0], g[1] + h[1], g[2] + h[2] + g[0] * h[1]);
+  }
+  static Element inverse(const Element& g) { return Element(-g[0], -g[1], g[0] * g[1] - g[2]); }
 
   /// exp(v) = (v1, v2, v3 + v1 v2 / 2), exact (hat(v)^3 = 0); log is its inverse.
-  static Element exp(const Tangent& v);
+  static Element exp(const Tangent& v) { return Element(v[0], v[1], v[2] + v[0] * v[1] / 2); }
   static Tangent log(const Element& g);
 
   static MatrixRep hat(const Tangent& v);
@@ -32,9 +34,23 @@ struct Heisenberg {
   static MatrixRep matrix(const Element& g);
 
   /// Ad_g v = (v1, v2, v3 + a v2 - b v1).
-  static AlgebraMatrix Ad(const Element& g);
+  static AlgebraMatrix Ad(const Element& g) {
+    AlgebraMatrix m = AlgebraMatrix::Identity();
+    m(2, 0) = -g[1];
+    m(2, 1) = g[0];
+    return m;
+  }
   /// (ad-Heis)
-  static AlgebraMatrix ad(const Tangent& u);
+  static AlgebraMatrix ad(const Tangent& u) {
+    AlgebraMatrix m = AlgebraMatrix::Zero();
+    m(2, 0) = -u[1];
+    m(2, 1) = u[0];
+    return m;
+  }
+  /// Left Jacobian of exp, sum_k ad_v^k / (k+1)! = I + ad_v / 2 exactly (ad_v^2 = 0: ad_v maps into
+  /// the centre, which it annihilates), and its inverse I - ad_v / 2.
+  static AlgebraMatrix left_jacobian(const Tangent& v) { return AlgebraMatrix::Identity() + ad(v) / 2; }
+  static AlgebraMatrix left_jacobian_inverse(const Tangent& v) { return AlgebraMatrix::Identity() - ad(v) / 2; }
 
   /// d(L_g)_e v = (v1, v2, v3 + a v2)  (left-Heis).
   static Element left_translate(const Element& g, const Tangent& v);

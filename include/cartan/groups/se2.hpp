@@ -51,6 +51,11 @@ struct SE2 {
   static AlgebraMatrix Ad(const Element& g);
   /// ad(x, y, theta) = [[0, -theta, y], [theta, 0, -x], [0, 0, 0]].
   static AlgebraMatrix ad(const Tangent& v);
+  /// Left Jacobian of exp, sum_k ad_v^k / (k+1)!, in closed form. With ad_v = [[A, c], [0, 0]]
+  /// (A = theta J, A^2 = -theta^2 I) it is [[phi1(A), phi2(A) c], [0, 1]], where
+  /// phi1(A) = (sin t / t) I + ((1 - cos t)/t^2) A and phi2(A) = ((1 - cos t)/t^2) I + ((t - sin t)/t^3) A
+  /// (the series of e^z with z^2 = -t^2; coefficients from SO3::angle_coefficients).
+  static AlgebraMatrix left_jacobian(const Tangent& v);
 
   static Element left_translate(const Element& g, const Tangent& v) { return g * hat(v); }
   static Element right_translate(const Element& g, const Tangent& v) { return hat(v) * g; }

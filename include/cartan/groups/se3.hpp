@@ -58,6 +58,12 @@ struct SE3 {
   static AlgebraMatrix Ad(const Element& g);
   /// ad(rho, omega) = [[hat(omega), hat(rho)], [0, hat(omega)]].
   static AlgebraMatrix ad(const Tangent& v);
+  /// Left Jacobian of exp, sum_k ad_v^k / (k+1)!, in closed form: [[J(omega), Q], [0, J(omega)]]
+  /// with J the SO(3) left Jacobian and Q the derivative of J at hat(omega) along hat(rho),
+  ///   Q = R/2 + c1 (W R + R W + W R W) + c2 (W^2 R + R W^2 - 3 W R W) + c3 (W R W^2 + W^2 R W),
+  /// W = hat(omega), R = hat(rho), t = |omega|, c1 = (t - sin t)/t^3,
+  /// c2 = (t^2 + 2 cos t - 2)/(2 t^4), c3 = (2 t - 3 sin t + t cos t)/(2 t^5) (series below t = 1e-2).
+  static AlgebraMatrix left_jacobian(const Tangent& v);
 
   static Element left_translate(const Element& g, const Tangent& v) { return g * hat(v); }
   static Element right_translate(const Element& g, const Tangent& v) { return hat(v) * g; }

@@ -7,7 +7,9 @@
 // Class invariant: an Element R satisfies R^T R = I and det R = 1 (to rounding).
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <string_view>
+#include <utility>
 
 namespace cartan::groups {
 
@@ -38,12 +40,48 @@ struct SO3 {
   };
   static AngleCoefficients angle_coefficients(double t);
 
+  /// sin t / t and (1 - cos t)/t^2, the two coefficients of Rodrigues' formula, from one sine and
+  /// cosine of t/2: sin t / t = (sin(t/2)/(t/2)) cos(t/2) and (1 - cos t)/t^2 = (sin(t/2)/(t/2))^2 / 2,
+  /// the latter without the cancellation of 1 - cos t. Taylor series when t < kSmallAngle.
+  struct ExpCoefficients {
+    double sin_over_t;
+    double one_minus_cos_over_t2;
+  };
+  static ExpCoefficients exp_coefficients(double t) {
+    if (std::abs(t) < kSmallAngle) {
+      const double t2 = t * t;
+      return {1 - t2 / 6 * (1 - t2 / 20), 0.5 - t2 / 24 * (1 - t2 / 30)};
+    }
+    const double half = t / 2;
+    const double sinc_half = std::sin(half) / half;
+    return {sinc_half * std::cos(half), sinc_half * sinc_half / 2};
+  }
+
   /// Rodrigues' formula exp(hat(v)) = I + (sin t / t) hat(v) + ((1 - cos t)/t^2) hat(v)^2.
-  static Element exp(const Tangent& v);
+  static Element exp(const Tangent& v) {
+    const ExpCoefficients k = exp_coefficients(v.norm());
+    const MatrixRep w = hat(v);
+    const MatrixRep w2 = w * w;  // evaluated as in exp_and_left_jacobian, so that both agree to the bit
+    return Element::Identity() + k.sin_over_t * w + k.one_minus_cos_over_t2 * w2;
+  }
   /// Left Jacobian of exp, J(v) = sum_k ad_v^k / (k+1)!
   ///   = I + ((1 - cos t)/t^2) hat(v) + ((t - sin t)/t^3) hat(v)^2,
   /// so that d/ds exp(v + s w) at s = 0 equals hat(J(v) w) exp(v).
-  static Eigen::Matrix3d left_jacobian(const Tangent& v);
+  static Eigen::Matrix3d left_jacobian(const Tangent& v) { return exp_and_left_jacobian(v).second; }
+  /// exp(v) and J(v) together: one sine and cosine for both (the tangent-linear scheme needs both
+  /// at every step). exp(v) is the same, to the last bit, as `exp`; and exp(-v) = exp(v)^T exactly.
+  static std::pair<Element, Eigen::Matrix3d> exp_and_left_jacobian(const Tangent& v) {
+    const double t = v.norm();
+    const ExpCoefficients k = exp_coefficients(t);
+    // (t - sin t)/t^3 = (1 - sin t / t)/t^2: series below 1e-2, where the difference would lose
+    // more than 4 digits (it multiplies hat(v)^2, of size t^2: the absolute error stays O(eps)).
+    const double t2 = t * t;
+    const double c3 = t < 1e-2 ? (1 - t2 / 20 * (1 - t2 / 42 * (1 - t2 / 72))) / 6 : (1 - k.sin_over_t) / t2;
+    const MatrixRep w = hat(v);
+    const MatrixRep w2 = w * w;
+    return {Element::Identity() + k.sin_over_t * w + k.one_minus_cos_over_t2 * w2,
+            Eigen::Matrix3d::Identity() + k.one_minus_cos_over_t2 * w + c3 * w2};
+  }
   /// J(v)^{-1} = I - hat(v)/2 + ((1 - (t/2) cot(t/2))/t^2) hat(v)^2, for t = |v| < 2 pi.
   static Eigen::Matrix3d left_jacobian_inverse(const Tangent& v);
   /// Principal logarithm, |log R| in [0, pi]. Stable near 0 (series) and near pi (axis from
@@ -53,8 +91,15 @@ struct SO3 {
   /// during Newton iterations, off the group). Validate user input with validate/from_matrix.
   static Tangent log(const Element& r);
 
-  static MatrixRep hat(const Tangent& v);
-  static Tangent vee(const MatrixRep& x);  // reads the skew-symmetric part of x
+  static MatrixRep hat(const Tangent& v) {
+    MatrixRep x;
+    x << 0, -v.z(), v.y(),  //
+        v.z(), 0, -v.x(),   //
+        -v.y(), v.x(), 0;
+    return x;
+  }
+  /// Reads the skew-symmetric part of x.
+  static Tangent vee(const MatrixRep& x) { return Tangent(x(2, 1) - x(1, 2), x(0, 2) - x(2, 0), x(1, 0) - x(0, 1)) / 2; }
   static MatrixRep matrix(const Element& r) { return r; }
 
   static AlgebraMatrix Ad(const Element& r) { return r; }

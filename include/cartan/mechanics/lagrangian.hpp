@@ -47,9 +47,12 @@ concept ReducedHamiltonian =
     };
 
 inline bool all_finite(double x) { return std::isfinite(x); }
+/// A finite sum proves every entry finite (one pass of additions, cheaper than a comparison per
+/// entry); an infinite or NaN sum may still come from finite entries that overflow, so then the
+/// entries are checked one by one.
 template <class Derived>
 bool all_finite(const Eigen::MatrixBase<Derived>& x) {
-  return x.allFinite();
+  return std::isfinite(x.sum()) || x.allFinite();
 }
 
 /// Arguments up to this size are "moderate": a polynomial model of degree <= 3 cannot overflow

@@ -24,6 +24,22 @@ bool all_finite(const LagrangianHessian<G>& h) {
   return h.momentum_v.allFinite() && h.momentum_g.allFinite() && h.gradient_v.allFinite() && h.gradient_g.allFinite();
 }
 
+/// What a model may declare about its second derivatives, as static constexpr bool members
+/// (absent: no structure), so that tangent-linear sweeps skip the zero blocks and invert a
+/// constant d^2 l/dv^2 once instead of at every step:
+///   kConstantMomentumHessian             mu = M v with a constant M: d mu/dv = M, d mu/d gamma = 0
+///   kGroupGradientIndependentOfVelocity  d zeta/dv = 0
+///   kZeroGroupGradient                   zeta = 0 everywhere (so d zeta = 0)
+/// A declaration is a promise: the tangent-linear tests compare the sweeps that use it with
+/// differences of the scheme (tests/transported/test_scheme.cpp).
+template <class L>
+struct HessianStructure {
+  static constexpr bool constant_momentum_hessian = requires { requires L::kConstantMomentumHessian; };
+  static constexpr bool gradient_independent_of_velocity =
+      requires { requires L::kGroupGradientIndependentOfVelocity; };
+  static constexpr bool zero_group_gradient = requires { requires L::kZeroGroupGradient; };
+};
+
 /// Central-difference step: truncation ~ step^2 |l'''|, rounding ~ 1e-16 / step: both ~1e-10.
 inline constexpr double kHessianStep = 1e-5;
 

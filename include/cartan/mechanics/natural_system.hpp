@@ -14,6 +14,7 @@
 #include <Eigen/Eigenvalues>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 
 #include "cartan/errors.hpp"
@@ -121,6 +122,10 @@ class NaturalLagrangian : public NaturalSystem<G, V> {
  public:
   explicit NaturalLagrangian(const groups::AlgebraMatrixOf<G>& inertia, V potential = {})
       : NaturalSystem<G, V>(inertia, std::move(potential), "NaturalLagrangian") {}
+  // Hessian structure (lagrangian_hessian.hpp): mu = I v; zeta = -dV depends on g only.
+  static constexpr bool kConstantMomentumHessian = true;
+  static constexpr bool kGroupGradientIndependentOfVelocity = true;
+  static constexpr bool kZeroGroupGradient = std::is_same_v<V, ZeroPotential<G>>;
 
   double value(double, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) const {
     return this->kinetic_energy_of_velocity(v) - this->potential().value(g);

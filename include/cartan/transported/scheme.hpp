@@ -30,7 +30,6 @@
 #include "cartan/groups/exp_jacobian.hpp"
 #include "cartan/mechanics/lagrangian_hessian.hpp"
 #include "cartan/transported/problem.hpp"
-#include "cartan/transport/disc_exp.hpp"
 
 namespace cartan::transported {
 
@@ -55,6 +54,8 @@ struct TransportedTrajectory {
   std::vector<groups::CovectorOf<G>> mu;
   std::vector<groups::CovectorOf<G>> xi;
 
+  /// Empties the trajectory and keeps its storage (a sweep that records reuses it).
+  void clear() { t.clear(), g.clear(), v.clear(), mu.clear(), xi.clear(); }
   void reserve(std::size_t n) {
     t.reserve(n), g.reserve(n), v.reserve(n), mu.reserve(n), xi.reserve(n);
   }
@@ -96,8 +97,12 @@ class TransportedScheme {
   using Covector = groups::CovectorOf<G>;
   using Matrix = groups::AlgebraMatrixOf<G>;
   using Node = SchemeNode<G>;
-  /// Perturbation directions, one column per unknown.
-  using Directions = Eigen::Matrix<double, n, Eigen::Dynamic>;
+  /// Perturbation directions, one column per unknown: at most 4n (a node's whole state, for
+  /// multiple shooting), a bound that keeps every tangent-linear temporary off the heap.
+  static constexpr int kMaxColumns = 4 * n;
+  using Directions = Eigen::Matrix<double, n, Eigen::Dynamic, Eigen::ColMajor, n, kMaxColumns>;
+  /// The model's declared Hessian structure (mechanics/lagrangian_hessian.hpp).
+  using Structure = mechanics::HessianStructure<L>;
 
   /// Linearisation of a node: gamma (left-trivialised dg), chi (dh = chi h), dmu, dxi, dv.
   struct NodeTangent {
@@ -112,6 +117,10 @@ class TransportedScheme {
     problem.validate();
     if (order != SchemeOrder::First && order != SchemeOrder::Second) {
       throw_invalid("TransportedScheme", "order", std::to_string(static_cast<int>(order)), "must be 1 or 2");
+    }
+    if constexpr (Structure::constant_momentum_hessian) {
+      momentum_v_inverse_ = mechanics::lagrangian_hessian<G>(problem.lagrangian, 0.0, problem.g0, Tangent::Zero())
+                                .momentum_v.inverse();
     }
   }
 
@@ -140,6 +149,10 @@ class TransportedScheme {
   /// Tangent of the initial node along `columns` directions: the first n columns perturb v0,
   /// the next n (if present) perturb xi0.
   NodeTangent initial_tangent(const Node& node, int columns) const {
+    if (columns < 1 || columns > kMaxColumns) {
+      throw_invalid("TransportedScheme::initial_tangent", "columns", std::to_string(columns),
+                    "must be between 1 and " + std::to_string(kMaxColumns));
+    }
     NodeTangent d;
     for (Directions* m : {&d.gamma, &d.chi, &d.mu, &d.xi, &d.v}) m->setZero(n, columns);
     d.v.leftCols(n).setIdentity();
@@ -160,7 +173,7 @@ class TransportedScheme {
     d.mu.middleCols(2 * n, n).setIdentity();
     d.xi.rightCols(n).setIdentity();
     d.hessian = mechanics::lagrangian_hessian<G>(problem_.lagrangian, node.t, node.g, node.v);
-    d.v = d.hessian.momentum_v.lu().solve(Directions(d.mu - d.hessian.momentum_g * d.gamma));
+    d.v = velocity_tangent(d.hessian, d.mu, d.gamma);
     return d;
   }
 
@@ -168,39 +181,42 @@ class TransportedScheme {
   /// xi_k and the result gets xi_{k+1} = *xi_next. Returns the effective xi rate used, so that
   /// xi_{k+1} = xi_k + h * rate.
   Covector step(const Node& node, Node& out, const Covector* xi_next = nullptr) const {
-    const Rates r1 = rates(node);
+    const NodeRates r1 = rates(node);
     if (order_ == SchemeOrder::First) {
-      advance(node, r1, out, xi_next);
+      advance(node, r1, step_elements(r1.u), out, xi_next);
       return r1.dxi;
     }
     Node predictor;
-    advance(node, r1, predictor, nullptr);
+    advance(node, r1, step_elements(r1.u), predictor, nullptr);
     const Rates r2 = rates(predictor);
-    const Rates mean{(r1.u + r2.u) / 2, (r1.dmu + r2.dmu) / 2, (r1.dxi + r2.dxi) / 2};
-    advance(node, mean, out, xi_next);
+    const Rates mean = average(r1, r2);
+    advance(node, mean, step_elements(mean.u), out, xi_next);
     return mean.dxi;
   }
 
   /// The step together with its tangent-linear map (d -> dout); returns the xi rate as `step`.
   Covector step_tangent(const Node& node, const NodeTangent& d, Node& out, NodeTangent& dout,
                         const Covector* xi_next = nullptr) const {
-    const Rates r1 = rates(node);
+    const NodeRates r1 = rates(node);
     const RatesTangent dr1 = rates_tangent(node, d, r1);
     if (order_ == SchemeOrder::First) {
-      advance(node, r1, out, xi_next);
-      advance_tangent(d, r1, dr1, out, dout, xi_next != nullptr);
+      const StepLinearisation step = step_linearisation(r1.u);
+      advance(node, r1, step.elements, out, xi_next);
+      advance_tangent(d, dr1, step, out, dout, xi_next != nullptr);
       return r1.dxi;
     }
     Node predictor;
     NodeTangent dpredictor;
-    advance(node, r1, predictor, nullptr);
-    advance_tangent(d, r1, dr1, predictor, dpredictor, false);
-    const Rates r2 = rates(predictor);
+    const StepLinearisation first = step_linearisation(r1.u);
+    advance(node, r1, first.elements, predictor, nullptr);
+    advance_tangent(d, dr1, first, predictor, dpredictor, false);
+    const NodeRates r2 = rates(predictor);
     const RatesTangent dr2 = rates_tangent(predictor, dpredictor, r2);
-    const Rates mean{(r1.u + r2.u) / 2, (r1.dmu + r2.dmu) / 2, (r1.dxi + r2.dxi) / 2};
+    const Rates mean = average(r1, r2);
     const RatesTangent dmean{(dr1.u + dr2.u) / 2, (dr1.dmu + dr2.dmu) / 2, (dr1.dxi + dr2.dxi) / 2};
-    advance(node, mean, out, xi_next);
-    advance_tangent(d, mean, dmean, out, dout, xi_next != nullptr);
+    const StepLinearisation second = step_linearisation(mean.u);
+    advance(node, mean, second.elements, out, xi_next);
+    advance_tangent(d, dmean, second, out, dout, xi_next != nullptr);
     return mean.dxi;
   }
 
@@ -218,9 +234,35 @@ class TransportedScheme {
     Tangent u;
     Covector dmu, dxi;
   };
+  /// The rates at a node with what their tangent-linear map reuses: P = Ad(h), zeta, ad*_v.
+  struct NodeRates : Rates {
+    Matrix p, coad_v;
+    Covector zeta;
+  };
   struct RatesTangent {
     Directions u, dmu, dxi;
   };
+  /// The group elements of a step with velocity u: exp(h u) (disc-grp) and exp(a), a = -lambda h u
+  /// (disc-exp).
+  struct StepElements {
+    groups::ElementOf<G> exp_u, exp_a;
+  };
+  /// The same with what the step's linearisation needs: Ad(exp(-h u)), h J_r(h u), Ad(exp(a)) and
+  /// -lambda h J_l(a), each exponential computed once with its Jacobian.
+  struct StepLinearisation {
+    StepElements elements;
+    Matrix ad_exp_minus_u, jacobian_u, ad_exp_a, jacobian_a;
+  };
+
+  /// a x as a lazy (coefficient-based) product: Eigen's default product takes a runtime-size kernel
+  /// for the bounded column count; lazily, a sum of such products is one loop over the columns
+  /// into the destination, without temporaries (bench_scheme measures the step). The argument
+  /// may be a temporary: the expression is used within the full expression that creates it.
+  static auto times(const Matrix& a, const Directions& x) { return a.lazyProduct(x); }
+
+  static Rates average(const Rates& r1, const Rates& r2) {
+    return {(r1.u + r2.u) / 2, (r1.dmu + r2.dmu) / 2, (r1.dxi + r2.dxi) / 2};
+  }
 
   /// Matrix of x -> ad*_x mu = ad(x)^T mu (linear in the first argument).
   static Matrix coad_first(const Covector& mu) {
@@ -230,56 +272,87 @@ class TransportedScheme {
   }
 
   Covector group_gradient(const Node& node) const {
-    return mechanics::require_finite_result(Covector(problem_.lagrangian.group_gradient(node.t, node.g, node.v)),
-                                            "lagrangian.group_gradient", node.t, node.g, node.v);
+    if constexpr (Structure::zero_group_gradient) {
+      return Covector::Zero();
+    } else {
+      return mechanics::require_finite_result(Covector(problem_.lagrangian.group_gradient(node.t, node.g, node.v)),
+                                              "lagrangian.group_gradient", node.t, node.g, node.v);
+    }
   }
 
-  Rates rates(const Node& node) const {
-    const Matrix p = G::Ad(node.transport);
-    const Covector zeta = group_gradient(node);
-    const Matrix coad_v = G::ad(node.v).transpose();
-    const Covector coad_v_mu = coad_v * node.mu;
-    Rates r;
-    r.u = p * node.v;
-    r.dmu = p.transpose() * zeta - c_torsion_ * coad_v_mu - c_curvature_ * (coad_v * node.xi);
+  NodeRates rates(const Node& node) const {
+    NodeRates r;
+    r.p = G::Ad(node.transport);
+    r.zeta = group_gradient(node);
+    r.coad_v = G::ad(node.v).transpose();
+    const Covector coad_v_mu = r.coad_v * node.mu;
+    r.u = r.p * node.v;
+    r.dmu = r.p.transpose() * r.zeta - c_torsion_ * coad_v_mu - c_curvature_ * (r.coad_v * node.xi);
     r.dxi = -coad_v_mu;
     return r;
   }
 
-  RatesTangent rates_tangent(const Node& node, const NodeTangent& d, const Rates& r) const {
-    const Matrix p = G::Ad(node.transport);
-    const Covector zeta = group_gradient(node);
-    const Matrix coad_v = G::ad(node.v).transpose();
-    const Directions dcoad_v_mu = coad_v * d.mu + coad_first(node.mu) * d.v;
-    const Directions dzeta = d.hessian.gradient_g * d.gamma + d.hessian.gradient_v * d.v;
+  RatesTangent rates_tangent(const Node& node, const NodeTangent& d, const NodeRates& r) const {
+    const Directions dcoad_v_mu = times(r.coad_v, d.mu) + times(coad_first(node.mu), d.v);
     RatesTangent dr;
     // u = Ad(h) v with d Ad(h) = ad(chi) Ad(h): du = [chi, u] + P dv = -ad(u) chi + P dv.
-    dr.u = -G::ad(r.u) * d.chi + p * d.v;
-    // eta = P^T zeta: d eta = P^T (ad(chi)^T zeta + dzeta).
-    dr.dmu = p.transpose() * (coad_first(zeta) * d.chi + dzeta) - c_torsion_ * dcoad_v_mu -
-             c_curvature_ * (coad_v * d.xi + coad_first(node.xi) * d.v);
+    dr.u = times(r.p, d.v) - times(G::ad(r.u), d.chi);
     dr.dxi = -dcoad_v_mu;
+    dr.dmu = c_torsion_ * dr.dxi;
+    if (c_curvature_ != 0) dr.dmu -= c_curvature_ * (times(r.coad_v, d.xi) + times(coad_first(node.xi), d.v));
+    if constexpr (!Structure::zero_group_gradient) {
+      // eta = P^T zeta: d eta = P^T (ad(chi)^T zeta + dzeta).
+      Directions deta = times(coad_first(r.zeta), d.chi) + times(d.hessian.gradient_g, d.gamma);
+      if constexpr (!Structure::gradient_independent_of_velocity) deta += times(d.hessian.gradient_v, d.v);
+      dr.dmu += times(r.p.transpose(), deta);
+    }
     return dr;
   }
 
-  void advance(const Node& node, const Rates& r, Node& out, const Covector* xi_next) const {
+  StepElements step_elements(const Tangent& u) const {
+    const Tangent hu = dt_ * u;
+    return {G::exp(hu), G::exp(Tangent(-problem_.lambda * hu))};
+  }
+
+  /// exp(h u) = exp(-h u)^{-1}, so that one fused exponential gives it with J_l(-h u) = J_r(h u).
+  StepLinearisation step_linearisation(const Tangent& u) const {
+    const Tangent hu = dt_ * u;
+    const auto [exp_minus_u, right_jacobian] = groups::exp_and_left_jacobian<G>(Tangent(-hu));
+    const auto [exp_a, left_jacobian] = groups::exp_and_left_jacobian<G>(Tangent(-problem_.lambda * hu));
+    return {{G::inverse(exp_minus_u), exp_a},
+            G::Ad(exp_minus_u),
+            dt_ * right_jacobian,
+            G::Ad(exp_a),
+            -problem_.lambda * dt_ * left_jacobian};
+  }
+
+  void advance(const Node& node, const Rates& r, const StepElements& step, Node& out, const Covector* xi_next) const {
     out.t = node.t + dt_;
-    out.g = G::compose(node.g, G::exp(Tangent(dt_ * r.u)));
-    out.transport = transport::disc_exp_update<G>(problem_.lambda, dt_, r.u, node.transport);
+    out.g = G::compose(node.g, step.exp_u);
+    out.transport = G::compose(step.exp_a, node.transport);  // disc_exp_update (transport/disc_exp.hpp)
     out.mu = node.mu + dt_ * r.dmu;
     out.xi = xi_next ? *xi_next : Covector(node.xi + dt_ * r.dxi);
     out.v = velocity(out.t, out.g, out.mu);
   }
 
+  /// dv = M_v^{-1} (dmu - M_g gamma), the derivative of v = (dl/dv)^{-1}(mu); M_v^{-1} computed
+  /// once when the model declares it constant (then M_g = 0).
+  Directions velocity_tangent(const mechanics::LagrangianHessian<G>& hessian, const Directions& dmu,
+                              const Directions& gamma) const {
+    if constexpr (Structure::constant_momentum_hessian) {
+      return times(momentum_v_inverse_, dmu);
+    } else {
+      return hessian.momentum_v.partialPivLu().solve(Directions(dmu - times(hessian.momentum_g, gamma)));
+    }
+  }
+
   /// Linearisation of `advance`: g' = g exp(h u) gives gamma' = Ad(exp(-h u)) gamma + h J_r(h u) du;
   /// h' = exp(a) h with a = -lambda h u gives chi' = Ad(exp(a)) chi + J_l(a) da; and
   /// v' = (dl/dv)^{-1}(mu') gives dv' = M_v^{-1} (dmu' - M_g gamma').
-  void advance_tangent(const NodeTangent& d, const Rates& r, const RatesTangent& dr, const Node& out,
+  void advance_tangent(const NodeTangent& d, const RatesTangent& dr, const StepLinearisation& step, const Node& out,
                        NodeTangent& dout, bool xi_given) const {
-    const Tangent hu = dt_ * r.u;
-    const Tangent a = -problem_.lambda * hu;
-    dout.gamma = G::Ad(G::exp(Tangent(-hu))) * d.gamma + dt_ * (groups::right_jacobian<G>(hu) * dr.u);
-    dout.chi = G::Ad(G::exp(a)) * d.chi - problem_.lambda * dt_ * (groups::left_jacobian<G>(a) * dr.u);
+    dout.gamma = times(step.ad_exp_minus_u, d.gamma) + times(step.jacobian_u, dr.u);
+    dout.chi = times(step.ad_exp_a, d.chi) + times(step.jacobian_a, dr.u);
     dout.mu = d.mu + dt_ * dr.dmu;
     if (xi_given) {
       dout.xi.setZero(n, d.xi.cols());
@@ -287,7 +360,7 @@ class TransportedScheme {
       dout.xi = d.xi + dt_ * dr.dxi;
     }
     dout.hessian = mechanics::lagrangian_hessian<G>(problem_.lagrangian, out.t, out.g, out.v);
-    dout.v = dout.hessian.momentum_v.lu().solve(Directions(dout.mu - dout.hessian.momentum_g * dout.gamma));
+    dout.v = velocity_tangent(dout.hessian, dout.mu, dout.gamma);
   }
 
   TransportedProblem<G, L> problem_;
@@ -295,6 +368,7 @@ class TransportedScheme {
   double dt_;
   double c_torsion_;    // 2 lambda - 1
   double c_curvature_;  // lambda (1 - lambda)
+  Matrix momentum_v_inverse_ = Matrix::Identity();  // (d^2 l/dv^2)^{-1} when constant (Structure)
 };
 
 }  // namespace cartan::transported

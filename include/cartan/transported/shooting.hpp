@@ -62,21 +62,28 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// Final recorded sweep shared by the solvers: fills trajectory and terminal figures.
+/// Final recorded sweep shared by the solvers: fills trajectory and terminal figures. With
+/// `recorded` (the trajectory of a sweep from the same v0 and xi0), takes it instead of sweeping.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 bool record_solution(const TransportedScheme<G, L>& scheme, const groups::TangentOf<G>& v0, const groups::CovectorOf<G>& xi0,
-                     const std::vector<groups::CovectorOf<G>>* given_xi, TransportedSolution<G>& solution) {
-  SweepOutput<G, L> out;
-  out.trajectory = &solution.trajectory;
-  ++solution.sweeps;
-  if (!forward_sweep(scheme, v0, xi0, given_xi, 0, out)) {
-    solution.trajectory = {};  // never a partial trajectory
-    return false;
+                     const std::vector<groups::CovectorOf<G>>* given_xi, TransportedSolution<G>& solution,
+                     TransportedTrajectory<G>* recorded = nullptr) {
+  if (recorded != nullptr) {
+    solution.trajectory = std::move(*recorded);
+  } else {
+    SweepOutput<G, L> out;
+    out.trajectory = &solution.trajectory;
+    ++solution.sweeps;
+    if (!forward_sweep(scheme, v0, xi0, given_xi, 0, out)) {
+      solution.trajectory = {};  // never a partial trajectory
+      return false;
+    }
   }
+  const TransportedTrajectory<G>& tr = solution.trajectory;
   solution.v0 = v0;
-  solution.xi0 = out.trajectory->xi.front();
-  solution.terminal_error = scheme.terminal_residual(out.last).norm();
-  solution.xi_terminal = out.last.xi.norm();
+  solution.xi0 = tr.xi.front();
+  solution.terminal_error = groups::log_between<G>(scheme.problem().gT, tr.g.back()).norm();  // terminal_residual
+  solution.xi_terminal = tr.xi.back().norm();
   return true;
 }
 
@@ -102,9 +109,15 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   auto unpack = [&](const Eigen::VectorXd& x) {
     return std::pair<groups::TangentOf<G>, groups::CovectorOf<G>>(x.head<n>() / T, x.tail<n>() * s);
   };
-  auto residual_only = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+  // The trajectory of the last residual-only sweep of the analytic path and its unknowns: the
+  // Levenberg–Marquardt solver asks for the residual alone where it expects convergence, so
+  // that the final point's trajectory is recorded there and no sweep is repeated for it.
+  TransportedTrajectory<G> recorded;
+  Eigen::VectorXd recorded_x;
+  auto residual_only = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, TransportedTrajectory<G>* trajectory = nullptr) {
     const auto [v0, xi0] = unpack(x);
     SweepOutput<G, L> out;
+    out.trajectory = trajectory;
     ++solution.sweeps;
     if (!forward_sweep(scheme, v0, xi0, nullptr, 0, out)) {
       failure = out.failure;
@@ -117,7 +130,12 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   numerics::ResidualFunction f;
   if (options.analytic_jacobian) {
     f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
-      if (jac == nullptr) return residual_only(x, r);
+      if (jac == nullptr) {
+        recorded_x.resize(0);
+        if (!residual_only(x, r, &recorded)) return false;
+        recorded_x = x;
+        return true;
+      }
       const auto [v0, xi0] = unpack(x);
       SweepOutput<G, L> out;
       ++solution.sweeps;
@@ -137,7 +155,8 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
       return true;
     };
   } else {
-    f = numerics::with_forward_difference_jacobian(residual_only, 1e-7);
+    f = numerics::with_forward_difference_jacobian(
+        [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) { return residual_only(x, r); }, 1e-7);
   }
   Eigen::VectorXd x0(2 * n);
   x0 << v0_guess * T, xi0_guess / s;
@@ -147,8 +166,9 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   solution.inner_iterations = report.iterations;
   solution.residual_history = report.residual_history;
   const auto [v0, xi0] = unpack(report.x);
-  const bool recorded = detail::record_solution(scheme, v0, xi0, nullptr, solution);
-  solution.status = recorded ? report.status : Status::NonFinite;
+  const bool reuse = recorded_x.size() == report.x.size() && recorded_x == report.x;
+  const bool ok = detail::record_solution(scheme, v0, xi0, nullptr, solution, reuse ? &recorded : nullptr);
+  solution.status = ok ? report.status : Status::NonFinite;
   std::ostringstream message;
   message << "shooting (" << (options.analytic_jacobian ? "analytic" : "finite-difference")
           << " Jacobian, xi scale " << format_value(s) << "): " << report.message << ", " << solution.sweeps

@@ -1,6 +1,7 @@
 #pragma once
 // Forward sweeps of the discrete scheme from (v0, xi0): the shooting map of every solver.
 
+#include <array>
 #include <exception>
 #include <optional>
 #include <string>
@@ -17,7 +18,7 @@ struct SweepOutput {
   SchemeNode<G> last;
   std::optional<typename Scheme::NodeTangent> tangent;  ///< filled when tangent columns > 0
   std::vector<groups::CovectorOf<G>>* xi_rates = nullptr;     ///< if set: xi rate of every step (N entries)
-  TransportedTrajectory<G>* trajectory = nullptr;     ///< if set: every node
+  TransportedTrajectory<G>* trajectory = nullptr;     ///< if set: every node (its storage reused)
   std::string failure;                                ///< why the sweep stopped early
 };
 
@@ -30,32 +31,35 @@ bool sweep_segment(const TransportedScheme<G, L>& scheme, SchemeNode<G> node,
                    std::optional<typename TransportedScheme<G, L>::NodeTangent> tangent, int first, int last,
                    const std::vector<groups::CovectorOf<G>>* given_xi, SweepOutput<G, L>& out) {
   try {
-    SchemeNode<G> next;
-    typename TransportedScheme<G, L>::NodeTangent dnext;
+    // Two nodes (and tangents) used in turn, so that a step writes its result in place of the
+    // node before last instead of copying it.
+    std::array<SchemeNode<G>, 2> nodes{std::move(node), SchemeNode<G>{}};
+    std::array<typename TransportedScheme<G, L>::NodeTangent, 2> tangents;
+    if (tangent) tangents[0] = std::move(*tangent);
     if (out.trajectory) {
-      *out.trajectory = {};
+      out.trajectory->clear();
       out.trajectory->reserve(static_cast<std::size_t>(last - first) + 1);
-      out.trajectory->push(node);
+      out.trajectory->push(nodes[0]);
     }
+    std::size_t current = 0;
     for (int k = first; k < last; ++k) {
       const groups::CovectorOf<G>* xi_next = given_xi ? &(*given_xi)[static_cast<std::size_t>(k) + 1] : nullptr;
-      groups::CovectorOf<G> rate;
-      if (tangent) {
-        rate = scheme.step_tangent(node, *tangent, next, dnext, xi_next);
-        std::swap(*tangent, dnext);
-      } else {
-        rate = scheme.step(node, next, xi_next);
-      }
-      if (!next.g.allFinite() || !next.mu.allFinite() || !next.v.allFinite() || !next.xi.allFinite()) {
+      const std::size_t next = 1 - current;
+      SchemeNode<G>& to = nodes[next];
+      const groups::CovectorOf<G> rate =
+          tangent ? scheme.step_tangent(nodes[current], tangents[current], to, tangents[next], xi_next)
+                  : scheme.step(nodes[current], to, xi_next);
+      if (!mechanics::all_finite(to.g) || !mechanics::all_finite(to.mu) || !mechanics::all_finite(to.v) ||
+          !mechanics::all_finite(to.xi)) {
         out.failure = "non-finite state at step " + std::to_string(k + 1);
         return false;
       }
       if (out.xi_rates) (*out.xi_rates)[static_cast<std::size_t>(k)] = rate;
-      node = next;
-      if (out.trajectory) out.trajectory->push(node);
+      current = next;
+      if (out.trajectory) out.trajectory->push(to);
     }
-    out.last = node;
-    out.tangent = std::move(tangent);
+    out.last = std::move(nodes[current]);
+    if (tangent) out.tangent = std::move(tangents[current]);
     return true;
   } catch (const ModelError&) {
     throw;  // the model's defect, not a failed iterate
