@@ -1,5 +1,6 @@
 #include "cartan/numerics/nonlinear_solve.hpp"
 
+#include <limits>
 #include <sstream>
 
 #include "cartan/errors.hpp"
@@ -33,18 +34,22 @@ bool evaluate(const ResidualFunction& f, const Eigen::VectorXd& x, Eigen::Vector
   return f(x, r, jac) && r.allFinite() && (jac == nullptr || jac->allFinite());
 }
 
-/// Whether the trial point is expected to converge: |r| predicted by the rate of the last
-/// accepted step, quadratic (|r_new| ~ |r|^3 / |r_prev|^2) once the residual fell by more than
-/// 10 and linear before. A point that converges needs no Jacobian, so the residual alone is
-/// asked for there (a tangent-linear sweep costs several plain ones): a wrong guess costs one
-/// residual evaluation, a right one the Jacobian's extra cost.
-bool expected_to_converge(const std::vector<double>& history, double tolerance) {
-  if (history.size() < 2) return false;
+/// What the last accepted step predicts. In Newton's quadratic phase (|r| fell by more than 10)
+/// r_next ~ K r^2 with K = |r| / |r_prev|^2; before it, linearly, r_next ~ |r| rate. A chord
+/// step from the next point with the present Jacobian then gives about 2 K r r_next (the error
+/// of the stale Jacobian, K |r|, times the residual it corrects).
+struct Prediction {
+  double next = std::numeric_limits<double>::infinity();
+  double after_chord = std::numeric_limits<double>::infinity();
+};
+Prediction predict(const std::vector<double>& history) {
+  if (history.size() < 2) return {};
   const double now = history.back(), before = history[history.size() - 2];
-  if (!(now < before)) return false;
+  if (!(now < before)) return {};
   const double rate = now / before;
-  const double predicted = rate < 0.1 ? now * rate * rate : now * rate;
-  return predicted <= tolerance;
+  if (!(rate < 0.1)) return {now * rate, std::numeric_limits<double>::infinity()};
+  const double next = now * rate * rate;
+  return {next, 2 * (rate / before) * now * next};
 }
 
 void finish(NonlinearSolveReport& report, Status status, const std::string& why) {
@@ -100,6 +105,19 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
   double nu = 2;
   Eigen::VectorXd r_new;
   Eigen::MatrixXd jac_new;
+  bool stale_jacobian = false;  // jac belongs to an earlier point than report.x (a chord step)
+  bool rejected_before = false;  // the last trial was rejected
+  // The Jacobian (and the residual again) at the current point, after a residual-only evaluation.
+  const auto fresh_jacobian = [&] {
+    if (!evaluate(f, report.x, r, &jac, report)) {
+      finish(report, Status::NonFinite, "the Jacobian at an accepted point failed");
+      return false;
+    }
+    a = jac.transpose() * jac;
+    grad = jac.transpose() * r;
+    stale_jacobian = false;
+    return true;
+  };
   // best[i]: the best |r| after i iterations (the no-progress test compares across a window).
   std::vector<double> best{report.residual_norm};
   while (true) {
@@ -145,7 +163,16 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
     const Eigen::VectorXd x_new = report.x + step;
     const double predicted = step.dot(mu * step - grad);
     bool accepted = false;
-    const bool with_jacobian = !expected_to_converge(report.residual_history, options.tolerance);
+    // A Jacobian is asked for at the trial point unless the point is predicted to converge, or to
+    // converge after one chord step (the present Jacobian reused): where a tangent-linear sweep
+    // costs several plain ones, the residual alone is then evaluated. A wrong prediction costs
+    // the Jacobian at the accepted point (one residual more), or a fresh one after a rejection.
+    // The chord step itself is one of these: a trial from a stale Jacobian is evaluated alone; so
+    // is a trial after a rejected one (far from a root, where the model fails, rejections come
+    // in runs).
+    const Prediction prediction = stale_jacobian ? Prediction{} : predict(report.residual_history);
+    const bool with_jacobian = !stale_jacobian && !rejected_before &&
+                               !(prediction.next <= options.tolerance || prediction.after_chord <= options.tolerance);
     if (evaluate(f, x_new, r_new, with_jacobian ? &jac_new : nullptr, report)) {
       const double rho = (r.squaredNorm() - r_new.squaredNorm()) / std::max(predicted, 1e-300);
       if (rho > 0) {
@@ -157,21 +184,23 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
         report.residual_history.push_back(report.residual_norm);
         mu *= std::max(1.0 / 3.0, 1 - std::pow(2 * rho - 1, 3));
         nu = 2;
-        if (!with_jacobian && report.residual_norm > options.tolerance) {
-          // Not converged after all: the Jacobian at the accepted point (and its residual again).
-          if (!evaluate(f, report.x, r, &jac_new, report)) {
-            finish(report, Status::NonFinite, "the Jacobian at an accepted point failed");
+        if (with_jacobian) {
+          jac = jac_new;
+          a = jac.transpose() * jac;
+          stale_jacobian = false;
+        } else if (report.residual_norm > options.tolerance) {
+          if (prediction.after_chord <= options.tolerance && !stale_jacobian) {
+            stale_jacobian = true;  // one chord step: the Jacobian of the previous point
+          } else if (!fresh_jacobian()) {
             return report;
           }
         }
-        if (with_jacobian || report.residual_norm > options.tolerance) {
-          jac = jac_new;
-          a = jac.transpose() * jac;
-          grad = jac.transpose() * r;
-        }
+        grad = jac.transpose() * r;
       }
     }
     best.push_back(std::min(best.back(), report.residual_norm));
+    if (!accepted && stale_jacobian && !fresh_jacobian()) return report;
+    rejected_before = !accepted;
     if (!accepted) {
       mu *= nu;
       nu *= 2;
