@@ -47,7 +47,7 @@ def continuation(lam, jacobian, h=0.015, T_start=3.0, T_end=12.0, dT=0.5, max_ou
     T = 10)."""
     v0 = None
     xi_prev = None
-    total_sweeps, total_time, steps = 0, 0.0, 0
+    total_sweeps, total_time, total_cpu, steps = 0, 0.0, 0.0, 0
     T = T_start
     res = None
     while T <= T_end + 1e-12:
@@ -62,6 +62,7 @@ def continuation(lam, jacobian, h=0.015, T_start=3.0, T_end=12.0, dT=0.5, max_ou
                        xi_guess=xi0, jacobian=jacobian)
         total_sweeps += res["sweeps"]
         total_time += res["solve_time_s"]
+        total_cpu += res["cpu_time_s"]
         steps += 1
         if res["status"] != "converged":
             break
@@ -73,8 +74,8 @@ def continuation(lam, jacobian, h=0.015, T_start=3.0, T_end=12.0, dT=0.5, max_ou
                 message=res["message"] + f" ({steps} horizons, dT = {dT})",
                 outer=res["outer"], inner=res["inner"], jacobians=res["jacobians"],
                 sweeps=total_sweeps, terminal_error=res["terminal_error"],
-                solve_time_s=total_time, cpu_time_s=float("nan"), v0=res["v"][0].tolist(),
-                ms_per_sweep=float("nan"))
+                solve_time_s=total_time, cpu_time_s=total_cpu, v0=res["v"][0].tolist(),
+                ms_per_sweep=1e3 * total_cpu / max(total_sweeps, 1))
 
 
 def main():

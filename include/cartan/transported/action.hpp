@@ -38,10 +38,13 @@ double transported_action(const L& lagrangian, double lambda, const std::vector<
     if (!(h > 0)) throw_invalid("transported_action", "t", format_value(t[k + 1]), "must increase");
     const groups::TangentOf<G> u = groups::log_between<G>(g[k], g[k + 1]) / h;
     const groups::ElementOf<G> g_mid = G::compose(g[k], G::exp(groups::TangentOf<G>(h / 2 * u)));
-    const groups::ElementOf<G> transport_mid = transport::disc_exp_update<G>(lambda, h / 2, u, transport);
+    // (disc-exp) over each half step: exp(-lambda h u) = exp(-lambda (h/2) u)^2 (a one-parameter
+    // subgroup), so one exponential serves both halves.
+    const groups::ElementOf<G> half_step = transport::disc_exp_update<G>(lambda, h / 2, u, G::identity());
+    const groups::ElementOf<G> transport_mid = G::compose(half_step, transport);
     const groups::TangentOf<G> v_mid = G::Ad(G::inverse(transport_mid)) * u;
     action += h * lagrangian.value(t[k] + h / 2, g_mid, v_mid);
-    transport = transport::disc_exp_update<G>(lambda, h, u, transport);
+    transport = G::compose(half_step, transport_mid);
   }
   return action;
 }

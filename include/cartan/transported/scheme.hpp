@@ -162,6 +162,22 @@ class TransportedScheme {
     return d;
   }
 
+  /// Whether xi never feeds back into g, the transport, mu and v: the curvature term
+  /// lambda (1 - lambda) ad*_v xi vanishes (lambda = 0 or 1, exactly). Then a node's derivative
+  /// along xi0 is exactly dxi = I and zero elsewhere, and need not be propagated.
+  bool xi_decoupled() const { return c_curvature_ == 0; }
+
+  /// Appends the n columns of the directions along xi0 to a tangent propagated along v0 alone
+  /// (n columns) in the augmented mode when xi_decoupled(): zero, and dxi = I.
+  static void append_decoupled_xi_columns(NodeTangent& d) {
+    for (Directions* m : {&d.gamma, &d.chi, &d.mu, &d.v}) {
+      m->conservativeResize(n, 2 * n);
+      m->rightCols(n).setZero();
+    }
+    d.xi.conservativeResize(n, 2 * n);
+    d.xi.rightCols(n).setIdentity();
+  }
+
   /// Tangent of an arbitrary node along its own state, 4n columns: gamma, chi, mu, xi in turn
   /// (identity blocks), and v = (dl/dv)^{-1}(mu) follows: dv = M_v^{-1} (dmu - M_g gamma).
   /// Multiple shooting starts its segments with it.

@@ -78,9 +78,13 @@ bool forward_sweep(const TransportedScheme<G, L>& scheme, const groups::TangentO
                    const std::vector<groups::CovectorOf<G>>* given_xi, int tangent_columns, SweepOutput<G, L>& out) {
   SchemeNode<G> node;
   std::optional<typename TransportedScheme<G, L>::NodeTangent> tangent;
+  // Where xi does not feed back (lambda = 0 or 1), only the v0 directions are propagated and the
+  // xi0 directions appended at the end: the same Jacobian for half the work.
+  constexpr int n = G::kDim;
+  const bool decoupled = tangent_columns == 2 * n && given_xi == nullptr && scheme.xi_decoupled();
   try {
     node = scheme.initial(v0, given_xi ? (*given_xi)[0] : xi0);
-    if (tangent_columns > 0) tangent = scheme.initial_tangent(node, tangent_columns);
+    if (tangent_columns > 0) tangent = scheme.initial_tangent(node, decoupled ? n : tangent_columns);
   } catch (const ModelError&) {
     throw;  // the model's defect, not a failed iterate
   } catch (const std::exception& e) {
@@ -89,7 +93,9 @@ bool forward_sweep(const TransportedScheme<G, L>& scheme, const groups::TangentO
   }
   const int steps = scheme.problem().N;
   if (out.xi_rates) out.xi_rates->resize(static_cast<std::size_t>(steps));
-  return sweep_segment(scheme, std::move(node), std::move(tangent), 0, steps, given_xi, out);
+  if (!sweep_segment(scheme, std::move(node), std::move(tangent), 0, steps, given_xi, out)) return false;
+  if (decoupled) TransportedScheme<G, L>::append_decoupled_xi_columns(*out.tangent);
+  return true;
 }
 
 }  // namespace cartan::transported
