@@ -18,7 +18,8 @@ process CPU time of each of --cartan-repeats solves after an untimed warm-up sol
 this process, --scipy-repeats solves after an untimed warm-up, each timed with time.process_time
 (BLAS limited to one thread, so process time is the solve's own). Each of --rounds rounds visits
 every case, the two sides one after the other (SciPy first in even rounds, cartan first in odd
-ones), so both see the same machine load. Per case: median of all of SciPy's solves over the
+ones), so both see the same machine load; a case where either side fails in a first screening
+solve is reported and not timed. Per case: median of all of SciPy's solves over the
 median of all of cartan's; reported: every case's ratio, their median and minimum. The solutions
 are compared at 11 uniform times (max |difference| column).
 
