@@ -1,6 +1,6 @@
 """The paper's H3 oscillator BVP (appendix sec-app-H3, g0 = e, unit inertia) solved with SciPy's
 solve_bvp, as in the paper: the reference for cartan's collocation solver (tests/cli) and the
-baseline of bench/compare_collocation.py."""
+baseline of bench/compare_collocation.py and bench/compare_collocation_warm.py."""
 import numpy as np
 from scipy.integrate import solve_bvp
 
@@ -16,11 +16,26 @@ def printed_system(lam):
     return f
 
 
-def solve(lam, gT, tol, T=1.0, nodes=11):
-    """solve_bvp from the geodesic guess (g = t gT / T, v = gT / T; exact geodesic of H3 from e
-    up to the c-coordinate) on `nodes` uniform nodes."""
+def straight_guess(gT, T, x):
+    """g = t gT / T, v = gT / T: the exact geodesic of H3 from e up to the c-coordinate."""
+    gT = np.asarray(gT, dtype=float)
+    return np.vstack([np.outer(gT, x / T), np.repeat(gT[:, None] / T, x.size, axis=1)])
+
+
+def geodesic_guess(gT, T, x):
+    """cartan's guess (transported/heisenberg_collocation.hpp, heisenberg_geodesic_guess):
+    g(t) = exp(t w / T), v = w / T with w = log(gT) = (a, b, c - a b / 2) and
+    exp(w) = (w1, w2, w3 + w1 w2 / 2) (groups/heisenberg.hpp)."""
+    a, b, c = np.asarray(gT, dtype=float)
+    w = np.array([a, b, c - a * b / 2])
+    s = x / T
+    g = np.vstack([s * w[0], s * w[1], s * w[2] + s * s * w[0] * w[1] / 2])
+    return np.vstack([g, np.repeat(w[:, None] / T, x.size, axis=1)])
+
+
+def solve(lam, gT, tol, T=1.0, nodes=11, guess=straight_guess):
+    """solve_bvp from `guess` (straight_guess or geodesic_guess) on `nodes` uniform nodes."""
     gT = np.asarray(gT, dtype=float)
     x = np.linspace(0, T, nodes)
-    guess = np.vstack([np.outer(gT, x / T), np.repeat(gT[:, None] / T, x.size, axis=1)])
     bc = lambda ya, yb: np.concatenate([ya[:3], yb[:3] - gT])
-    return solve_bvp(printed_system(lam), bc, x, guess, tol=tol, max_nodes=100000)
+    return solve_bvp(printed_system(lam), bc, x, guess(gT, T, x), tol=tol, max_nodes=100000)

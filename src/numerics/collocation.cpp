@@ -47,20 +47,30 @@ class Model {
     ++evaluations_;
     s_.rhs(t, y, p, out);
   }
-  void bc(ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p, VectorRef out) const { s_.bc(ya, yb, p, out); }
-
-  /// df/dy and df/dp at (t, y, p), where f0 = f(t, y, p).
-  void rhs_jacobian(double t, ConstVectorRef y, ConstVectorRef p, ConstVectorRef f0, MatrixXd& dfdy,
-                    MatrixXd& dfdp) {
-    dfdy.resize(n(), n());
-    dfdp.resize(n(), k());
-    if (s_.rhs_jacobian) {
-      s_.rhs_jacobian(t, y, p, dfdy, dfdp);
+  /// Column j of out (n x m, sized) = f(t[j], y.col(j), p): one call of rhs_batch when set.
+  void rhs(const VectorXd& t, const MatrixXd& y, const VectorXd& p, MatrixXd& out) {
+    evaluations_ += static_cast<int>(t.size());
+    if (s_.rhs_batch) {
+      s_.rhs_batch(t, y, p, out);
       return;
     }
-    VectorXd f(n());
-    difference(y, dfdy, f0, [&](const VectorXd& yy) { rhs(t, yy, p, f); return f; });
-    difference(p, dfdp, f0, [&](const VectorXd& pp) { rhs(t, y, pp, f); return f; });
+    for (Index j = 0; j < t.size(); ++j) s_.rhs(t[j], y.col(j), p, out.col(j));
+  }
+  void bc(ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p, VectorRef out) const { s_.bc(ya, yb, p, out); }
+
+  /// df/dy (n x n m) and df/dp (n x k m) at the columns of y, where f0 = f(t, y, p) columnwise.
+  void rhs_jacobian(const VectorXd& t, const MatrixXd& y, const VectorXd& p, const MatrixXd& f0, MatrixXd& dfdy,
+                    MatrixXd& dfdp) {
+    const Index m = t.size();
+    dfdy.resize(n(), n() * m);
+    dfdp.resize(n(), k() * m);
+    if (s_.rhs_jacobian_batch) {
+      s_.rhs_jacobian_batch(t, y, p, dfdy, dfdp);
+      return;
+    }
+    for (Index j = 0; j < m; ++j) {
+      rhs_jacobian(t[j], y.col(j), p, f0.col(j), dfdy.middleCols(n() * j, n()), dfdp.middleCols(k() * j, k()));
+    }
   }
 
   /// d bc / d(ya, yb, p) at a point where bc = r0.
@@ -81,9 +91,20 @@ class Model {
   }
 
  private:
+  /// df/dy and df/dp at one point (t, y, p), where f0 = f(t, y, p).
+  void rhs_jacobian(double t, ConstVectorRef y, ConstVectorRef p, ConstVectorRef f0, MatrixRef dfdy, MatrixRef dfdp) {
+    if (s_.rhs_jacobian) {
+      s_.rhs_jacobian(t, y, p, dfdy, dfdp);
+      return;
+    }
+    VectorXd f(n());
+    difference(y, dfdy, f0, [&](const VectorXd& yy) { rhs(t, yy, p, f); return f; });
+    difference(p, dfdp, f0, [&](const VectorXd& pp) { rhs(t, y, pp, f); return f; });
+  }
+
   /// Forward differences of g at x (g(x) = g0), column j with step fd_step max(1, |x_j|).
   template <class Function>
-  void difference(ConstVectorRef x, MatrixXd& out, ConstVectorRef g0, const Function& g) const {
+  void difference(ConstVectorRef x, MatrixRef out, ConstVectorRef g0, const Function& g) const {
     VectorXd xx = x;
     for (Index j = 0; j < x.size(); ++j) {
       xx[j] = x[j] + fd_step_ * std::max(1.0, std::abs(x[j]));
@@ -98,9 +119,21 @@ class Model {
   int evaluations_ = 0;
 };
 
+/// Column i of an n-row matrix, and the n x n block i of an n x n m one, with the compile-time
+/// size N (Eigen::Dynamic: n at run time).
+template <int N, class Matrix>
+auto column(Matrix& x, Index i) {
+  return x.template block<N, 1>(0, i, x.rows(), 1);
+}
+template <int N, class Matrix>
+auto square(Matrix& x, Index i) {
+  const Index n = x.rows();
+  return x.template block<N, N>(0, n * i, n, n);
+}
+
 /// The collocation system at one iterate on one mesh.
 struct Iterate {
-  VectorXd t, h;
+  VectorXd t, h, tmid;  // nodes, steps, midpoints t_i + h_i / 2
   MatrixXd y, f;        // n x m
   MatrixXd ymid, fmid;  // n x (m - 1)
   VectorXd p;
@@ -115,53 +148,72 @@ struct Iterate {
 };
 
 /// Evaluates f, the midpoint values and the residual; false if anything is not finite.
+/// N: the state dimension at compile time (Eigen::Dynamic: model.n() at run time).
+template <int N>
 bool evaluate(Model& model, const VectorXd& t, const MatrixXd& y, const VectorXd& p, Iterate& it) {
   const int n = model.n();
   const Index m = t.size();
   it.t = t;
   it.h = t.tail(m - 1) - t.head(m - 1);
+  it.tmid = t.head(m - 1) + it.h / 2;
   it.y = y;
   it.p = p;
   it.f.resize(n, m);
   it.ymid.resize(n, m - 1);
   it.fmid.resize(n, m - 1);
   it.residual.resize(n * m + model.k());
-  for (Index i = 0; i < m; ++i) model.rhs(t[i], y.col(i), p, it.f.col(i));
+  model.rhs(it.t, it.y, it.p, it.f);
   for (Index i = 0; i + 1 < m; ++i) {
     const double h = it.h[i];
-    it.ymid.col(i) = (y.col(i) + y.col(i + 1)) / 2 - h / 8 * (it.f.col(i + 1) - it.f.col(i));
-    model.rhs(t[i] + h / 2, it.ymid.col(i), p, it.fmid.col(i));
-    it.residual.segment(n * i, n) =
-        y.col(i + 1) - y.col(i) - h / 6 * (it.f.col(i) + 4 * it.fmid.col(i) + it.f.col(i + 1));
+    column<N>(it.ymid, i) =
+        (column<N>(it.y, i) + column<N>(it.y, i + 1)) / 2 - h / 8 * (column<N>(it.f, i + 1) - column<N>(it.f, i));
   }
-  model.bc(y.col(0), y.col(m - 1), p, it.residual.tail(n + model.k()));
+  model.rhs(it.tmid, it.ymid, it.p, it.fmid);
+  for (Index i = 0; i + 1 < m; ++i) {
+    const double h = it.h[i];
+    it.residual.template segment<N>(n * i, n) =
+        column<N>(it.y, i + 1) - column<N>(it.y, i) -
+        h / 6 * (column<N>(it.f, i) + 4 * column<N>(it.fmid, i) + column<N>(it.f, i + 1));
+  }
+  model.bc(it.y.col(0), it.y.col(m - 1), it.p, it.residual.tail(n + model.k()));
   return it.f.allFinite() && it.fmid.allFinite() && it.residual.allFinite();
 }
 
+template <int N>
 bool evaluate(Model& model, const Iterate& shape, const VectorXd& z, Iterate& it) {
   const Index ny = shape.y.size();
-  return evaluate(model, shape.t, z.head(ny).reshaped(shape.y.rows(), shape.y.cols()), z.tail(z.size() - ny), it);
+  return evaluate<N>(model, shape.t, z.head(ny).reshaped(shape.y.rows(), shape.y.cols()), z.tail(z.size() - ny), it);
 }
 
+/// df/dy and df/dp at the nodes and at the midpoints of one iterate.
+struct RateJacobians {
+  MatrixXd dy_nodes, dp_nodes;  // n x n m, n x k m
+  MatrixXd dy_mid, dp_mid;      // n x n (m - 1), n x k (m - 1)
+};
+
 /// The Jacobian of the residual with respect to (y_0, ..., y_{m-1}, p), blockwise.
-void jacobian(Model& model, const Iterate& it, CollocationJacobian& jac) {
+template <int N>
+void jacobian(Model& model, const Iterate& it, RateJacobians& rates, CollocationJacobian& jac) {
+  using Square = Eigen::Matrix<double, N, N>;
   const int n = model.n(), k = model.k();
   const Index m = it.nodes();
   jac.resize(n, k, m);
-  const MatrixXd eye = MatrixXd::Identity(n, n);
-  MatrixXd jy_left, jp_left, jy_right, jp_right, jmy, jmp;
-  model.rhs_jacobian(it.t[0], it.y.col(0), it.p, it.f.col(0), jy_right, jp_right);
+  model.rhs_jacobian(it.t, it.y, it.p, it.f, rates.dy_nodes, rates.dp_nodes);
+  model.rhs_jacobian(it.tmid, it.ymid, it.p, it.fmid, rates.dy_mid, rates.dp_mid);
+  const Square eye = Square::Identity(n, n);
   for (Index i = 0; i + 1 < m; ++i) {
-    std::swap(jy_left, jy_right);
-    std::swap(jp_left, jp_right);
-    model.rhs_jacobian(it.t[i + 1], it.y.col(i + 1), it.p, it.f.col(i + 1), jy_right, jp_right);
+    const auto jy_left = square<N>(rates.dy_nodes, i), jy_right = square<N>(rates.dy_nodes, i + 1);
+    const auto jmy = square<N>(rates.dy_mid, i);
     const double h = it.h[i];
-    model.rhs_jacobian(it.t[i] + h / 2, it.ymid.col(i), it.p, it.fmid.col(i), jmy, jmp);
     // dy_mid/dy_i = I/2 + h/8 J_i, dy_mid/dy_{i+1} = I/2 - h/8 J_{i+1}, dy_mid/dp = -h/8 (P_{i+1} - P_i).
     // lazyProduct: coefficient-wise products, much faster than GEMM for these small blocks.
-    jac.a(i) = -eye - h / 6 * jy_left - h / 3 * jmy - h * h / 12 * jmy.lazyProduct(jy_left);
-    jac.b(i) = eye - h / 6 * jy_right - h / 3 * jmy + h * h / 12 * jmy.lazyProduct(jy_right);
-    if (k > 0) jac.c(i) = -h / 6 * (jp_left + 4 * jmp + jp_right) + h * h / 12 * jmy * (jp_right - jp_left);
+    square<N>(jac.A, i) = -eye - h / 6 * jy_left - h / 3 * jmy - h * h / 12 * jmy.lazyProduct(jy_left);
+    square<N>(jac.B, i) = eye - h / 6 * jy_right - h / 3 * jmy + h * h / 12 * jmy.lazyProduct(jy_right);
+    if (k > 0) {
+      const auto jp_left = rates.dp_nodes.middleCols(k * i, k), jp_right = rates.dp_nodes.middleCols(k * (i + 1), k);
+      const auto jmp = rates.dp_mid.middleCols(k * i, k);
+      jac.c(i) = -h / 6 * (jp_left + 4 * jmp + jp_right) + h * h / 12 * jmy * (jp_right - jp_left);
+    }
   }
   model.bc_jacobian(it.y.col(0), it.y.col(m - 1), it.p, it.residual.tail(n + k), jac.Da, jac.Db, jac.Dp);
 }
@@ -248,10 +300,12 @@ std::string describe(const ResidualSize& size, const CollocationOptions& options
 /// is the next step (a chord step, as in Deuflhard's NLEQ codes and COLNEW). A chord step is
 /// only taken in full; when it is not accepted, the iteration starts again from a fresh
 /// Jacobian at the same iterate.
+template <int N>
 NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& options, Counters& counters) {
   const int n = model.n();
   LinearSolver solver(options.linear_solver);
   CollocationJacobian jac;
+  RateJacobians rates;
   Iterate trial;
   VectorXd chord;  // the next step with the current factorisation, when reusing it
   bool reuse = false;
@@ -279,7 +333,7 @@ NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& option
     if (reuse) {
       reuse = false;
       const double norm = chord.norm();
-      if (evaluate(model, it, VectorXd(z - chord), trial)) {
+      if (evaluate<N>(model, it, VectorXd(z - chord), trial)) {
         VectorXd next = solver.solve(trial.residual);
         const double simplified = next.norm();
         if (acceptable(simplified, norm, 1)) {
@@ -290,7 +344,7 @@ NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& option
         }
       }
     }
-    jacobian(model, it, jac);
+    jacobian<N>(model, it, rates, jac);
     ++counters.jacobians;
     if (!solver.factorize(jac)) {
       return {Status::SingularJacobian, "the collocation Jacobian is singular on " + std::to_string(it.nodes()) +
@@ -305,7 +359,7 @@ NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& option
     double alpha = 1;
     bool accepted = false;
     for (int backtrack = 0; backtrack < kMaxBacktracks && !accepted; ++backtrack, alpha /= 2) {
-      if (!evaluate(model, it, VectorXd(z - alpha * step), trial)) continue;
+      if (!evaluate<N>(model, it, VectorXd(z - alpha * step), trial)) continue;
       chord = solver.solve(trial.residual);
       const double simplified = chord.norm();
       accepted = acceptable(simplified, norm, alpha);
@@ -322,26 +376,48 @@ NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& option
 
 /// Relative RMS residual of the cubic interpolant on each interval. rho = (S' - f(t, S)) / (1 + |f|)
 /// is integrated by 5-point Lobatto quadrature (nodes 0, 1/2 -+ sqrt(3/7)/2, 1 in units of h;
-/// weights 1/20, 49/180, 16/45, 49/180, 1/20); rho = 0 at the nodes, where S' = f.
+/// weights 1/20, 49/180, 16/45, 49/180, 1/20); rho = 0 at the nodes, where S' = f. The cubic S on
+/// interval i (CubicHermite's formulas, without its search for the interval) is evaluated at
+/// both inner points of every interval first, then f at all of them in one sweep.
+template <int N>
 VectorXd rms_residuals(Model& model, const Iterate& it) {
+  using Vector = Eigen::Matrix<double, N, 1>;
   const int n = model.n();
-  const CubicHermite s(it.t, it.y, it.f);
+  const Index intervals = it.nodes() - 1;
   const double offset = std::sqrt(3.0 / 7.0) / 2;
-  VectorXd rms(it.nodes() - 1);
-  VectorXd f(n), value(n), slope(n);
-  auto relative = [](const VectorXd& dS, ConstVectorRef rate) {
+  VectorXd times(2 * intervals);
+  MatrixXd value(n, 2 * intervals), slope(n, 2 * intervals), f(n, 2 * intervals);
+  for (Index i = 0; i < intervals; ++i) {
+    const double h = it.h[i], mid = it.t[i] + h / 2;
+    const auto y0 = column<N>(it.y, i), y1 = column<N>(it.y, i + 1);
+    const auto f0 = column<N>(it.f, i), f1 = column<N>(it.f, i + 1);
+    for (int side = 0; side < 2; ++side) {
+      const double tt = side == 0 ? mid - offset * h : mid + offset * h;
+      const double s = (tt - it.t[i]) / h;
+      const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
+      const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+      const double d00 = 6 * s * (s - 1), d10 = (1 - s) * (1 - 3 * s);
+      const double d01 = -d00, d11 = s * (3 * s - 2);
+      times[2 * i + side] = tt;
+      column<N>(value, 2 * i + side) = h00 * y0 + h * h10 * f0 + h01 * y1 + h * h11 * f1;
+      column<N>(slope, 2 * i + side) = (d00 * y0 + d01 * y1) / h + d10 * f0 + d11 * f1;
+    }
+  }
+  model.rhs(times, value, it.p, f);
+  auto relative = [](const auto& dS, const auto& rate) {
     return ((dS - rate).array() / (1 + rate.array().abs())).matrix().squaredNorm();
   };
-  for (Index i = 0; i + 1 < it.nodes(); ++i) {
+  VectorXd rms(intervals);
+  for (Index i = 0; i < intervals; ++i) {
     const double h = it.h[i], mid = it.t[i] + h / 2;
-    double outer = 0;
-    for (double tt : {mid - offset * h, mid + offset * h}) {
-      s.evaluate(tt, &value, &slope);
-      model.rhs(tt, value, it.p, f);
-      outer += relative(slope, f);
-    }
-    s.evaluate(mid, nullptr, &slope);
-    rms[i] = std::sqrt(49.0 / 180.0 * outer + 16.0 / 45.0 * relative(slope, it.fmid.col(i)));
+    const double s = (mid - it.t[i]) / h;  // S' at the midpoint
+    const double d00 = 6 * s * (s - 1), d10 = (1 - s) * (1 - 3 * s);
+    const double d01 = -d00, d11 = s * (3 * s - 2);
+    const Vector mid_slope = (d00 * column<N>(it.y, i) + d01 * column<N>(it.y, i + 1)) / h +
+                             d10 * column<N>(it.f, i) + d11 * column<N>(it.f, i + 1);
+    const double outer =
+        relative(column<N>(slope, 2 * i), column<N>(f, 2 * i)) + relative(column<N>(slope, 2 * i + 1), column<N>(f, 2 * i + 1));
+    rms[i] = std::sqrt(49.0 / 180.0 * outer + 16.0 / 45.0 * relative(mid_slope, column<N>(it.fmid, i)));
   }
   return rms;
 }
@@ -359,8 +435,10 @@ void refine(const Iterate& it, const std::vector<int>& pieces, VectorXd& t, Matr
   y = s.values(t);
 }
 
+/// The result from the last iterate; `rms`: its residuals when already computed (null: computed here).
+template <int N>
 void fill(BvpResult& result, Model& model, const Iterate& it, const Counters& counters, Status status,
-          const std::string& message) {
+          const std::string& message, const VectorXd* rms = nullptr) {
   result.status = status;
   result.t = it.t;
   result.y = it.y;
@@ -368,8 +446,11 @@ void fill(BvpResult& result, Model& model, const Iterate& it, const Counters& co
   result.p = it.p;
   result.newton_iterations = counters.newton;
   result.jacobian_evaluations = counters.jacobians;
-  if (it.f.allFinite() && it.fmid.allFinite()) {
-    result.rms_residual = rms_residuals(model, it);
+  if (rms != nullptr) {
+    result.rms_residual = *rms;
+    result.max_rms_residual = result.rms_residual.maxCoeff();
+  } else if (it.f.allFinite() && it.fmid.allFinite()) {
+    result.rms_residual = rms_residuals<N>(model, it);
     result.max_rms_residual = result.rms_residual.maxCoeff();
   }
   result.max_bc_residual = it.residual.tail(model.n() + model.k()).cwiseAbs().maxCoeff();
@@ -407,9 +488,9 @@ void validate_input(const BvpSystem& system, const VectorXd& t, const MatrixXd& 
   require_finite(p, kWhere, "p");
 }
 
+template <int N>
 BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p, const CollocationOptions& options,
               bool adapt) {
-  validate_input(system, t, y, p, options);
   Model model(system, options.fd_step);
   Counters counters;
   BvpResult result;
@@ -417,15 +498,15 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
   for (int round = 0;; ++round) {
     result.refinements = round;
     const VectorXd params = round == 0 ? p : it.p;
-    if (!evaluate(model, t, y, params, it)) {
-      fill(result, model, it, counters, Status::NotConverged,
+    if (!evaluate<N>(model, t, y, params, it)) {
+      fill<N>(result, model, it, counters, Status::NotConverged,
            "f or bc is not finite at the " + std::string(round == 0 ? "initial guess" : "refined mesh's start"));
       return result;
     }
-    const NewtonOutcome outcome = newton(model, it, options, counters);
+    const NewtonOutcome outcome = newton<N>(model, it, options, counters);
     if (outcome.status == Status::SingularJacobian || outcome.status == Status::Interrupted ||
         (outcome.status != Status::Converged && !adapt)) {
-      fill(result, model, it, counters, outcome.status, outcome.message);
+      fill<N>(result, model, it, counters, outcome.status, outcome.message);
       return result;
     }
     const Index m = it.nodes();
@@ -433,12 +514,12 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
     std::string why = outcome.message;
     if (outcome.status == Status::Converged) {
       if (!adapt) {
-        fill(result, model, it, counters, Status::Converged, "collocation equations solved on the given mesh");
+        fill<N>(result, model, it, counters, Status::Converged, "collocation equations solved on the given mesh");
         return result;
       }
-      const VectorXd rms = rms_residuals(model, it);
+      const VectorXd rms = rms_residuals<N>(model, it);
       if (rms.maxCoeff() <= options.tol) {
-        fill(result, model, it, counters, Status::Converged, "residual below tol = " + format_value(options.tol));
+        fill<N>(result, model, it, counters, Status::Converged, "residual below tol = " + format_value(options.tol), &rms);
         return result;
       }
       for (Index i = 0; i + 1 < m; ++i) {
@@ -453,17 +534,31 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
     if (needed > options.max_nodes) {
       const Status status =
           outcome.status == Status::Converged ? Status::MaxNodesExceeded : Status::NotConverged;
-      fill(result, model, it, counters, status,
+      fill<N>(result, model, it, counters, status,
            why + "; refining needs " + std::to_string(needed) + " nodes > max_nodes = " +
                std::to_string(options.max_nodes));
       return result;
     }
     if (round == options.max_refinements) {
-      fill(result, model, it, counters, Status::NotConverged,
+      fill<N>(result, model, it, counters, Status::NotConverged,
            why + " after max_refinements = " + std::to_string(options.max_refinements));
       return result;
     }
     refine(it, pieces, t, y);
+  }
+}
+
+/// The solve with the state dimension fixed at compile time where it is one of the transported
+/// systems' (6: H3 in closed form; 12, 24: the generic form on H3 and SO(3)), so that the
+/// per-interval blocks have fixed sizes; any other n at run time.
+BvpResult dispatch(const BvpSystem& system, const VectorXd& t, const MatrixXd& y, const VectorXd& p,
+                   const CollocationOptions& options, bool adapt) {
+  validate_input(system, t, y, p, options);
+  switch (system.n) {
+    case 6: return run<6>(system, t, y, p, options, adapt);
+    case 12: return run<12>(system, t, y, p, options, adapt);
+    case 24: return run<24>(system, t, y, p, options, adapt);
+    default: return run<Eigen::Dynamic>(system, t, y, p, options, adapt);
   }
 }
 
@@ -491,16 +586,16 @@ void CollocationOptions::validate() const {
 
 BvpResult solve_collocation(const BvpSystem& system, const Eigen::VectorXd& t, const Eigen::MatrixXd& y,
                             const Eigen::VectorXd& p, const CollocationOptions& options) {
-  return run(system, t, y, p, options, true);
+  return dispatch(system, t, y, p, options, true);
 }
 
 BvpResult solve_collocation(const BvpSystem& system, const BvpResult& previous, const CollocationOptions& options) {
-  return run(system, previous.t, previous.y, previous.p, options, true);
+  return dispatch(system, previous.t, previous.y, previous.p, options, true);
 }
 
 BvpResult solve_collocation_on_mesh(const BvpSystem& system, const Eigen::VectorXd& t, const Eigen::MatrixXd& y,
                                     const Eigen::VectorXd& p, const CollocationOptions& options) {
-  return run(system, t, y, p, options, false);
+  return dispatch(system, t, y, p, options, false);
 }
 
 }  // namespace cartan::numerics

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "cartan/numerics/collocation.hpp"
@@ -131,6 +132,53 @@ TEST(Collocation, EigenvalueProblemWithUnknownParameter) {
   EXPECT_NEAR(r.p[0], M_PI, 10 * tol);
   const auto exact = [](double x) { return VectorXd{{std::sin(M_PI * x), M_PI * std::cos(M_PI * x)}}; };
   EXPECT_LE(max_error_at(r, uniform(0, 1, 51), exact), 10 * tol * M_PI);
+}
+
+/// The same system with the batched forms of rhs and rhs_jacobian (BvpSystem::rhs_batch)
+/// built from its per-point functions.
+BvpSystem with_batches(BvpSystem s) {
+  s.rhs_batch = [f = s.rhs](ConstVectorRef t, ConstMatrixRef y, ConstVectorRef p, MatrixRef dy) {
+    for (Eigen::Index j = 0; j < t.size(); ++j) f(t[j], y.col(j), p, dy.col(j));
+  };
+  if (s.rhs_jacobian) {
+    s.rhs_jacobian_batch = [J = s.rhs_jacobian, n = s.n, k = s.k](ConstVectorRef t, ConstMatrixRef y, ConstVectorRef p,
+                                                                   MatrixRef dfdy, MatrixRef dfdp) {
+      for (Eigen::Index j = 0; j < t.size(); ++j) J(t[j], y.col(j), p, dfdy.middleCols(n * j, n), dfdp.middleCols(k * j, k));
+    };
+  }
+  return s;
+}
+
+// The batched forms only change how f and its Jacobian are called: the same mesh, iterations,
+// evaluation count and solution to the last bit, with and without a parameter (dfdp batched).
+TEST(Collocation, BatchedCallbacksTakeTheSamePath) {
+  BvpSystem eigen;
+  eigen.n = 2;
+  eigen.k = 1;
+  eigen.rhs = [](double, ConstVectorRef y, ConstVectorRef p, VectorRef dy) { dy << y[1], -p[0] * p[0] * y[0]; };
+  eigen.rhs_jacobian = [](double, ConstVectorRef y, ConstVectorRef p, MatrixRef dfdy, MatrixRef dfdp) {
+    dfdy << 0, 1, -p[0] * p[0], 0;
+    dfdp << 0, -2 * p[0] * y[0];
+  };
+  eigen.bc = [](ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p, VectorRef r) { r << ya[0], yb[0], ya[1] - p[0]; };
+  const VectorXd t = uniform(0, 1, 6);
+  MatrixXd guess(2, t.size());
+  for (Eigen::Index i = 0; i < t.size(); ++i) guess.col(i) << 4 * t[i] * (1 - t[i]), 4 - 8 * t[i];
+  const std::vector<std::pair<BvpSystem, VectorXd>> problems{{quadratic_problem(true), VectorXd(0)},
+                                                             {quadratic_problem(false), VectorXd(0)},
+                                                             {eigen, VectorXd{{2.5}}}};
+  for (const auto& [system, p] : problems) {
+    const MatrixXd y0 = system.k == 0 ? MatrixXd(perturbed_guess(t, quadratic_exact, 0.1)) : guess;
+    const BvpResult a = solve_collocation(system, t, y0, p, {.tol = 1e-8});
+    const BvpResult b = solve_collocation(with_batches(system), t, y0, p, {.tol = 1e-8});
+    ASSERT_TRUE(a.success() && b.success()) << a.message << b.message;
+    EXPECT_EQ(a.t, b.t);
+    EXPECT_EQ(a.y, b.y);
+    EXPECT_EQ(a.p, b.p);
+    EXPECT_EQ(a.newton_iterations, b.newton_iterations);
+    EXPECT_EQ(a.rhs_evaluations, b.rhs_evaluations);
+    EXPECT_EQ(a.rms_residual, b.rms_residual);
+  }
 }
 
 /// eps y'' + t y' = -eps pi^2 cos(pi t) - pi t sin(pi t) on [-1, 1], y(-1) = -2, y(1) = 0 (SciPy's

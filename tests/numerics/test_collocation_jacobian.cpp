@@ -20,10 +20,12 @@ CollocationJacobian random_jacobian(int n, int k, Eigen::Index m, std::mt19937& 
 }
 
 // Random blocks (so pivoting is exercised; the matrices are well conditioned with probability
-// one): the solution matches Eigen's dense PartialPivLU to a residual of 1e-12 relative.
+// one): the solution matches Eigen's dense PartialPivLU to a residual of 1e-12 relative. The
+// sizes include the fixed-size panels' (k = 0 and n = 6, 12, 24) and runtime-size ones.
 TEST(BlockLU, MatchesDenseLU) {
   std::mt19937 rng(cartan::testing::kSeed);
-  for (auto [n, k, m] : {std::tuple{1, 0, 2}, {2, 0, 3}, {2, 1, 5}, {3, 2, 7}, {9, 0, 20}, {4, 3, 2}}) {
+  for (auto [n, k, m] : {std::tuple{1, 0, 2}, {2, 0, 3}, {2, 1, 5}, {3, 2, 7}, {9, 0, 20}, {4, 3, 2}, {6, 0, 2},
+                         {6, 0, 15}, {6, 1, 6}, {12, 0, 5}, {24, 0, 3}}) {
     const CollocationJacobian j = random_jacobian(n, k, m, rng);
     const Eigen::MatrixXd dense = j.sparse().toDense();
     Eigen::VectorXd b(dense.rows());

@@ -36,17 +36,27 @@ namespace cartan::numerics {
 using VectorRef = Eigen::Ref<Eigen::VectorXd>;
 using ConstVectorRef = const Eigen::Ref<const Eigen::VectorXd>&;
 using MatrixRef = Eigen::Ref<Eigen::MatrixXd>;
+using ConstMatrixRef = const Eigen::Ref<const Eigen::MatrixXd>&;
 
-/// The problem. `rhs` and `bc` are required; the Jacobians are optional.
+/// The problem. `rhs` and `bc` are required; the Jacobians and the batched forms are optional.
 struct BvpSystem {
   int n = 0;  ///< state dimension
   int k = 0;  ///< number of unknown parameters
   /// dydt = f(t, y, p)  (dydt has size n).
   std::function<void(double t, ConstVectorRef y, ConstVectorRef p, VectorRef dydt)> rhs;
+  /// Optional, f at many points in one call: column j of dydt (n x m) is f(t[j], y.col(j), p).
+  /// When set, the solver evaluates each mesh sweep (nodes, midpoints, quadrature points) with
+  /// one call instead of one per point; it must agree with rhs.
+  std::function<void(ConstVectorRef t, ConstMatrixRef y, ConstVectorRef p, MatrixRef dydt)> rhs_batch;
   /// residual = bc(ya, yb, p)  (residual has size n + k).
   std::function<void(ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p, VectorRef residual)> bc;
   /// dfdy (n x n) and dfdp (n x k).
   std::function<void(double t, ConstVectorRef y, ConstVectorRef p, MatrixRef dfdy, MatrixRef dfdp)> rhs_jacobian;
+  /// Optional, rhs_jacobian at many points in one call: columns n j .. n j + n - 1 of dfdy
+  /// (n x n m) and k j .. k j + k - 1 of dfdp (n x k m) at (t[j], y.col(j), p). Used instead of
+  /// rhs_jacobian when set; must agree with it.
+  std::function<void(ConstVectorRef t, ConstMatrixRef y, ConstVectorRef p, MatrixRef dfdy, MatrixRef dfdp)>
+      rhs_jacobian_batch;
   /// d bc / d ya, d bc / d yb ((n + k) x n) and d bc / dp ((n + k) x k).
   std::function<void(ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p, MatrixRef dya, MatrixRef dyb,
                      MatrixRef dp)>

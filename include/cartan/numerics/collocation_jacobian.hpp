@@ -12,6 +12,9 @@
 // LU with partial pivoting would consider. What is left is a dense (n + k) x (n + k) system for
 // (y_0, p). Work and storage are O(m n^2 (n + k)); the result equals Eigen's SparseLU up to
 // rounding (tests/numerics/test_collocation_jacobian.cpp), without its per-factorisation overhead on small blocks.
+// Where the block size is known (k = 0 and n = 6, 12 or 24: the H3 and SO(3) transported
+// systems) the panels have compile-time shapes and each column's elimination is unrolled: the
+// same factors, bit for bit, in a third of the instructions (bench/README.md, "Collocation").
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
@@ -43,14 +46,24 @@ class BlockLU {
   const std::string& error() const { return error_; }
 
  private:
-  struct Step {
-    Eigen::MatrixXd panel;    ///< rows after elimination: multipliers (left n columns, below the
-                              ///< diagonal), U (top n rows: current | next | border)
-    std::vector<int> swaps;   ///< row interchanges, in order
-  };
+  // The panels' shapes are compile-time constants where the block size is known (no parameters
+  // and n in kFixedStates, e.g. the six states of the closed-form H3 system): the same
+  // elimination, in the same order, on fixed-size panels. Other sizes take the runtime-size path.
+  template <int N, int Q>
+  bool factorize_panels(const CollocationJacobian& jacobian);
+  template <int N, int Q>
+  Eigen::VectorXd solve_panels(const Eigen::VectorXd& rhs) const;
+
   int n_ = 0, k_ = 0;
-  std::vector<Step> steps_;
+  Eigen::Index steps_ = 0;
+  int fixed_ = 0;                  ///< the fixed-size path factorised (its n), 0 for the generic one
+  /// The panels after elimination, one after the other (column-major; steps_ - 1 of 2n rows, the
+  /// last n + q): multipliers (left n columns, below the diagonal), U (top n rows:
+  /// current | next | border).
+  Eigen::VectorXd panels_;
+  std::vector<int> swaps_;         ///< row interchanges, n per step, in order
   Eigen::FullPivLU<Eigen::MatrixXd> border_;
+  mutable Eigen::VectorXd pivot_rhs_;  ///< solve's workspace
   std::string error_;
 };
 

@@ -48,47 +48,96 @@ inline groups::Heisenberg::AlgebraMatrix coad_first(const groups::Heisenberg::Ta
 /// gives d/dg = P^T dzeta/dg - lambda coad_first(zeta), where dzeta/dg = -H L(g)^{-1} (H the
 /// potential's left Hessian: g exp(e E_i) moves the coordinates by L(g) E_i); and
 /// d(ad*_v I v)/dv = ad(v)^T I + coad_first(I v).
+/// On H3 ad(x) w = (0, 0, x1 w2 - x2 w1) (groups/heisenberg.hpp; 1-based components), so every
+/// product with ad, L(g) or P touches one row or column: they are written out below (the same
+/// terms as the matrix products, without their multiplications by structural zeros).
 template <mechanics::Potential<groups::Heisenberg> V>
-void heisenberg_transported_jacobian(const HeisenbergNaturalProblem<V>& problem,
-                                     const groups::Heisenberg::AlgebraMatrix& inertia_inverse, double t, numerics::ConstVectorRef y,
-                                     numerics::MatrixRef dfdy) {
+Eigen::Matrix<double, 6, 6> heisenberg_transported_jacobian(const HeisenbergNaturalProblem<V>& problem,
+                                                            const groups::Heisenberg::AlgebraMatrix& inertia_inverse,
+                                                            double t, const Eigen::Matrix<double, 6, 1>& y) {
   using M3 = groups::Heisenberg::AlgebraMatrix;
   const groups::Heisenberg::Element g = y.head<3>();
   const groups::Heisenberg::Tangent v = y.segment<3>(3);
   const auto& l = problem.lagrangian;
   const double lambda = problem.lambda;
-  const M3 transport = heisenberg_transport(lambda, problem.g0, g);
-  const groups::Heisenberg::Tangent u = transport * v, mu = l.momentum(t, g, v);
+  const double d1 = g[0] - problem.g0[0], d2 = g[1] - problem.g0[1];  // Delta's a and b
+  const groups::Heisenberg::Tangent mu = l.momentum(t, g, v);
   const groups::Heisenberg::Tangent zeta = l.group_gradient(t, g, v);
-  M3 translate = M3::Identity(), translate_inverse = M3::Identity();  // L(g) and its inverse, closed form
-  translate(2, 1) = g[0];
-  translate_inverse(2, 1) = -g[0];
-  const M3 dzeta_dg = -mechanics::potential_left_hessian<groups::Heisenberg>(l.potential(), g) * translate_inverse;
-  const M3 dcoad_dv = groups::Heisenberg::ad(v).transpose() * l.inertia() + coad_first(mu);
-  dfdy.setZero();
-  M3 dgdot_dg = lambda * translate * groups::Heisenberg::ad(v);
-  dgdot_dg(2, 0) += u[1];
-  dfdy.block<3, 3>(0, 0) = dgdot_dg;
-  dfdy.block<3, 3>(0, 3) = translate * transport;
-  dfdy.block<3, 3>(3, 0) = inertia_inverse * (transport.transpose() * dzeta_dg - lambda * coad_first(zeta));
+  const M3& inertia = l.inertia();
+  // dzeta/dg = -H L(g)^{-1}, L(g)^{-1} = I - a E_3 E_2^T.
+  const M3 hessian = mechanics::potential_left_hessian<groups::Heisenberg>(l.potential(), g);
+  M3 force = -hessian;
+  force.col(1) += g[0] * hessian.col(2);
+  // P^T dzeta/dg (P^T = I - lambda ad(Delta)^T: rows 1 and 2 gain multiples of row 3), then
+  // - lambda coad_first(zeta), whose columns 1 and 2 are (0, zeta3, 0) and (-zeta3, 0, 0).
+  force.row(0) += lambda * d2 * force.row(2);
+  force.row(1) -= lambda * d1 * force.row(2);
+  force(1, 0) -= lambda * zeta[2];
+  force(0, 1) += lambda * zeta[2];
+  // d(ad*_v I v)/dv = ad(v)^T I + coad_first(I v): rows -v2 I_3. and v1 I_3., plus mu3 in (2, 1)
+  // and -mu3 in (1, 2).
+  M3 dcoad_dv = M3::Zero();
+  dcoad_dv.row(0) = -v[1] * inertia.row(2);
+  dcoad_dv.row(1) = v[0] * inertia.row(2);
+  dcoad_dv(0, 1) -= mu[2];
+  dcoad_dv(1, 0) += mu[2];
+  Eigen::Matrix<double, 6, 6> dfdy = Eigen::Matrix<double, 6, 6>::Zero();
+  // g' = L(g) P v = (v1, v2, v3 - lambda (d1 v2 - d2 v1) + a v2).
+  dfdy(2, 0) = (1 - lambda) * v[1];
+  dfdy(2, 1) = lambda * v[0];
+  dfdy(0, 3) = 1;
+  dfdy(1, 4) = 1;
+  dfdy(2, 3) = lambda * d2;
+  dfdy(2, 4) = g[0] - lambda * d1;
+  dfdy(2, 5) = 1;
+  dfdy.block<3, 3>(3, 0) = inertia_inverse * force;
   dfdy.block<3, 3>(3, 3) = -(2 * lambda - 1) * inertia_inverse * dcoad_dv;
+  return dfdy;
 }
 
-/// The system above for the collocation solver (n = 6, no parameters). The Jacobian of f is
-/// analytic unless `analytic_jacobian` is false (forward differences then).
+/// The same into dfdy (6 x 6).
+template <mechanics::Potential<groups::Heisenberg> V>
+void heisenberg_transported_jacobian(const HeisenbergNaturalProblem<V>& problem,
+                                     const groups::Heisenberg::AlgebraMatrix& inertia_inverse, double t, numerics::ConstVectorRef y,
+                                     numerics::MatrixRef dfdy) {
+  dfdy = heisenberg_transported_jacobian(problem, inertia_inverse, t, Eigen::Matrix<double, 6, 1>(y));
+}
+
+/// f of the system above at one point y = (a, b, c, v), with ad, P and L(g) written out as in
+/// the Jacobian: u = P v = (v1, v2, v3 - lambda (d1 v2 - d2 v1)), g' = L(g) u = u + a u2 E_3,
+/// P^T zeta = zeta + lambda zeta3 (d2, -d1, 0), ad*_v mu = mu3 (-v2, v1, 0).
+template <mechanics::Potential<groups::Heisenberg> V>
+Eigen::Matrix<double, 6, 1> heisenberg_transported_rate(const HeisenbergNaturalProblem<V>& problem, double t,
+                                                        const Eigen::Matrix<double, 6, 1>& y) {
+  const groups::Heisenberg::Element g = y.head<3>();
+  const groups::Heisenberg::Tangent v = y.segment<3>(3);
+  const auto& l = problem.lagrangian;
+  const double lambda = problem.lambda;
+  const double d1 = g[0] - problem.g0[0], d2 = g[1] - problem.g0[1];
+  const groups::Heisenberg::Tangent mu = l.momentum(t, g, v);
+  const groups::Heisenberg::Tangent zeta = l.group_gradient(t, g, v);
+  const groups::Heisenberg::Tangent coad_v_mu(-v[1] * mu[2], v[0] * mu[2], 0);
+  const groups::Heisenberg::Tangent transported(zeta[0] + lambda * d2 * zeta[2], zeta[1] - lambda * d1 * zeta[2],
+                                                zeta[2]);
+  Eigen::Matrix<double, 6, 1> dy;
+  dy << v[0], v[1], v[2] - lambda * (d1 * v[1] - d2 * v[0]) + g[0] * v[1],
+      l.velocity(t, g, groups::Heisenberg::Tangent(transported - (2 * lambda - 1) * coad_v_mu));
+  return dy;
+}
+
+/// The system above for the collocation solver (n = 6, no parameters), with f and its Jacobian
+/// also in batched form (one call per mesh sweep; numerics::BvpSystem::rhs_batch). The Jacobian
+/// of f is analytic unless `analytic_jacobian` is false (forward differences then).
 template <mechanics::Potential<groups::Heisenberg> V>
 numerics::BvpSystem heisenberg_transported_system(const HeisenbergNaturalProblem<V>& problem, bool analytic_jacobian = true) {
   numerics::BvpSystem s;
   s.n = 6;
   s.rhs = [problem](double t, numerics::ConstVectorRef y, numerics::ConstVectorRef, numerics::VectorRef dy) {
-    const groups::Heisenberg::Element g = y.head<3>();
-    const groups::Heisenberg::Tangent v = y.segment<3>(3);
-    const auto& l = problem.lagrangian;
-    const groups::Heisenberg::AlgebraMatrix transport = heisenberg_transport(problem.lambda, problem.g0, g);
-    const groups::Heisenberg::Tangent coad_v_mu = groups::coad<groups::Heisenberg>(v, l.momentum(t, g, v));
-    dy.head<3>() = groups::Heisenberg::left_translate(g, transport * v);
-    dy.segment<3>(3) =
-        l.velocity(t, g, transport.transpose() * l.group_gradient(t, g, v) - (2 * problem.lambda - 1) * coad_v_mu);
+    dy = heisenberg_transported_rate(problem, t, y);
+  };
+  s.rhs_batch = [problem](numerics::ConstVectorRef t, numerics::ConstMatrixRef y, numerics::ConstVectorRef,
+                          numerics::MatrixRef dy) {
+    for (Eigen::Index j = 0; j < t.size(); ++j) dy.col(j) = heisenberg_transported_rate(problem, t[j], y.col(j));
   };
   s.bc = [g0 = problem.g0, gT = problem.gT](numerics::ConstVectorRef ya, numerics::ConstVectorRef yb, numerics::ConstVectorRef, numerics::VectorRef r) {
     r << ya.head<3>() - g0, yb.head<3>() - gT;
@@ -100,9 +149,16 @@ numerics::BvpSystem heisenberg_transported_system(const HeisenbergNaturalProblem
     dyb.bottomLeftCorner<3, 3>().setIdentity();
   };
   if (analytic_jacobian) {
-    s.rhs_jacobian = [problem, inverse = groups::Heisenberg::AlgebraMatrix(problem.lagrangian.inertia().inverse())](
-                         double t, numerics::ConstVectorRef y, numerics::ConstVectorRef, numerics::MatrixRef dfdy, numerics::MatrixRef) {
+    const groups::Heisenberg::AlgebraMatrix inverse = problem.lagrangian.inertia().inverse();
+    s.rhs_jacobian = [problem, inverse](double t, numerics::ConstVectorRef y, numerics::ConstVectorRef,
+                                        numerics::MatrixRef dfdy, numerics::MatrixRef) {
       heisenberg_transported_jacobian(problem, inverse, t, y, dfdy);
+    };
+    s.rhs_jacobian_batch = [problem, inverse](numerics::ConstVectorRef t, numerics::ConstMatrixRef y,
+                                              numerics::ConstVectorRef, numerics::MatrixRef dfdy, numerics::MatrixRef) {
+      for (Eigen::Index j = 0; j < t.size(); ++j) {
+        dfdy.middleCols<6>(6 * j) = heisenberg_transported_jacobian(problem, inverse, t[j], y.col(j));
+      }
     };
   }
   return s;
