@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <vector>
 
@@ -221,7 +222,8 @@ void jacobian(Model& model, const Iterate& it, RateJacobians& rates, Collocation
 /// Factorises the Newton matrix with the chosen solver and solves with it.
 class LinearSolver {
  public:
-  explicit LinearSolver(LinearSolverKind kind) : kind_(kind) {}
+  /// `block`: the block LU to use (the workspace's, whose storage outlives the solve).
+  LinearSolver(LinearSolverKind kind, BlockLU& block) : kind_(kind), block_(block) {}
   bool factorize(const CollocationJacobian& jac) {
     if (kind_ == LinearSolverKind::BlockLU) {
       const bool ok = block_.factorize(jac);
@@ -244,10 +246,73 @@ class LinearSolver {
 
  private:
   LinearSolverKind kind_;
-  BlockLU block_;
+  BlockLU& block_;
   SparseSolver sparse_;
   bool analysed_ = false;
   std::string error_;
+};
+
+/// The solver's working memory: the iterates, the Newton matrix, the block LU's panels and the
+/// residual quadrature's points. Each thread keeps one across solves (WorkspaceLease), so that a
+/// warm solve reuses memory already mapped instead of allocating it anew: glibc returns freed
+/// blocks of this size to the system (trim, or munmap above the mmap threshold), and faulting
+/// them in again took half of a small warm solve (bench/README.md, "Cold and warm"). Every
+/// buffer is written before it is read, so results do not depend on what a previous solve left.
+struct Workspace {
+  Iterate it, trial;
+  CollocationJacobian jac;
+  RateJacobians rates;
+  BlockLU block;
+  VectorXd quadrature_times;                                  // rms_residuals' points ...
+  MatrixXd quadrature_value, quadrature_slope, quadrature_f;  // ... S, S' and f there
+  bool busy = false;  ///< in use by a solve on this thread
+
+  /// Doubles held in the dense buffers.
+  Index doubles() const {
+    const auto iterate = [](const Iterate& x) {
+      return x.t.size() + x.h.size() + x.tmid.size() + x.y.size() + x.f.size() + x.ymid.size() + x.fmid.size() +
+             x.p.size() + x.residual.size();
+    };
+    return iterate(it) + iterate(trial) + jac.A.size() + jac.B.size() + jac.C.size() + rates.dy_nodes.size() +
+           rates.dp_nodes.size() + rates.dy_mid.size() + rates.dp_mid.size() + block.storage() +
+           quadrature_times.size() + quadrature_value.size() + quadrature_slope.size() + quadrature_f.size();
+  }
+};
+
+/// A thread keeps at most this much working memory between solves; a larger workspace is
+/// released after the solve (there the faults cost little next to the solve).
+constexpr Index kMaxRetainedDoubles = Index{4} << 20;  // 32 MB
+
+/// The calling thread's workspace for one solve: the thread's own, or, when that is already in
+/// use (a solve called from a solve's callbacks on the same thread), a fresh one for this solve.
+class WorkspaceLease {
+ public:
+  WorkspaceLease() {
+    Workspace& shared = thread_workspace();
+    if (shared.busy) {
+      own_ = std::make_unique<Workspace>();
+      workspace_ = own_.get();
+    } else {
+      shared.busy = true;
+      workspace_ = &shared;
+    }
+  }
+  ~WorkspaceLease() {
+    if (own_) return;
+    if (workspace_->doubles() > kMaxRetainedDoubles) *workspace_ = Workspace{};
+    workspace_->busy = false;
+  }
+  WorkspaceLease(const WorkspaceLease&) = delete;
+  WorkspaceLease& operator=(const WorkspaceLease&) = delete;
+  Workspace& get() const { return *workspace_; }
+
+ private:
+  static Workspace& thread_workspace() {
+    thread_local Workspace workspace;
+    return workspace;
+  }
+  std::unique_ptr<Workspace> own_;
+  Workspace* workspace_ = nullptr;
 };
 
 /// Largest collocation residual relative to its Newton target, and largest |bc|.
@@ -301,12 +366,13 @@ std::string describe(const ResidualSize& size, const CollocationOptions& options
 /// only taken in full; when it is not accepted, the iteration starts again from a fresh
 /// Jacobian at the same iterate.
 template <int N>
-NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& options, Counters& counters) {
+NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOptions& options, Counters& counters) {
   const int n = model.n();
-  LinearSolver solver(options.linear_solver);
-  CollocationJacobian jac;
-  RateJacobians rates;
-  Iterate trial;
+  LinearSolver solver(options.linear_solver, workspace.block);
+  CollocationJacobian& jac = workspace.jac;
+  RateJacobians& rates = workspace.rates;
+  Iterate& it = workspace.it;
+  Iterate& trial = workspace.trial;
   VectorXd chord;  // the next step with the current factorisation, when reusing it
   bool reuse = false;
   // One acceptance test and one reuse test for Newton and chord steps alike.
@@ -380,13 +446,20 @@ NewtonOutcome newton(Model& model, Iterate& it, const CollocationOptions& option
 /// interval i (CubicHermite's formulas, without its search for the interval) is evaluated at
 /// both inner points of every interval first, then f at all of them in one sweep.
 template <int N>
-VectorXd rms_residuals(Model& model, const Iterate& it) {
+VectorXd rms_residuals(Model& model, Workspace& workspace) {
   using Vector = Eigen::Matrix<double, N, 1>;
+  const Iterate& it = workspace.it;
   const int n = model.n();
   const Index intervals = it.nodes() - 1;
   const double offset = std::sqrt(3.0 / 7.0) / 2;
-  VectorXd times(2 * intervals);
-  MatrixXd value(n, 2 * intervals), slope(n, 2 * intervals), f(n, 2 * intervals);
+  VectorXd& times = workspace.quadrature_times;
+  MatrixXd& value = workspace.quadrature_value;
+  MatrixXd& slope = workspace.quadrature_slope;
+  MatrixXd& f = workspace.quadrature_f;
+  times.resize(2 * intervals);
+  value.resize(n, 2 * intervals);
+  slope.resize(n, 2 * intervals);
+  f.resize(n, 2 * intervals);
   for (Index i = 0; i < intervals; ++i) {
     const double h = it.h[i], mid = it.t[i] + h / 2;
     const auto y0 = column<N>(it.y, i), y1 = column<N>(it.y, i + 1);
@@ -437,8 +510,9 @@ void refine(const Iterate& it, const std::vector<int>& pieces, VectorXd& t, Matr
 
 /// The result from the last iterate; `rms`: its residuals when already computed (null: computed here).
 template <int N>
-void fill(BvpResult& result, Model& model, const Iterate& it, const Counters& counters, Status status,
+void fill(BvpResult& result, Model& model, Workspace& workspace, const Counters& counters, Status status,
           const std::string& message, const VectorXd* rms = nullptr) {
+  const Iterate& it = workspace.it;
   result.status = status;
   result.t = it.t;
   result.y = it.y;
@@ -450,7 +524,7 @@ void fill(BvpResult& result, Model& model, const Iterate& it, const Counters& co
     result.rms_residual = *rms;
     result.max_rms_residual = result.rms_residual.maxCoeff();
   } else if (it.f.allFinite() && it.fmid.allFinite()) {
-    result.rms_residual = rms_residuals<N>(model, it);
+    result.rms_residual = rms_residuals<N>(model, workspace);
     result.max_rms_residual = result.rms_residual.maxCoeff();
   }
   result.max_bc_residual = it.residual.tail(model.n() + model.k()).cwiseAbs().maxCoeff();
@@ -494,19 +568,21 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
   Model model(system, options.fd_step);
   Counters counters;
   BvpResult result;
-  Iterate it;
+  const WorkspaceLease lease;
+  Workspace& workspace = lease.get();
+  Iterate& it = workspace.it;
   for (int round = 0;; ++round) {
     result.refinements = round;
     const VectorXd params = round == 0 ? p : it.p;
     if (!evaluate<N>(model, t, y, params, it)) {
-      fill<N>(result, model, it, counters, Status::NotConverged,
+      fill<N>(result, model, workspace, counters, Status::NotConverged,
            "f or bc is not finite at the " + std::string(round == 0 ? "initial guess" : "refined mesh's start"));
       return result;
     }
-    const NewtonOutcome outcome = newton<N>(model, it, options, counters);
+    const NewtonOutcome outcome = newton<N>(model, workspace, options, counters);
     if (outcome.status == Status::SingularJacobian || outcome.status == Status::Interrupted ||
         (outcome.status != Status::Converged && !adapt)) {
-      fill<N>(result, model, it, counters, outcome.status, outcome.message);
+      fill<N>(result, model, workspace, counters, outcome.status, outcome.message);
       return result;
     }
     const Index m = it.nodes();
@@ -514,12 +590,12 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
     std::string why = outcome.message;
     if (outcome.status == Status::Converged) {
       if (!adapt) {
-        fill<N>(result, model, it, counters, Status::Converged, "collocation equations solved on the given mesh");
+        fill<N>(result, model, workspace, counters, Status::Converged, "collocation equations solved on the given mesh");
         return result;
       }
-      const VectorXd rms = rms_residuals<N>(model, it);
+      const VectorXd rms = rms_residuals<N>(model, workspace);
       if (rms.maxCoeff() <= options.tol) {
-        fill<N>(result, model, it, counters, Status::Converged, "residual below tol = " + format_value(options.tol), &rms);
+        fill<N>(result, model, workspace, counters, Status::Converged, "residual below tol = " + format_value(options.tol), &rms);
         return result;
       }
       for (Index i = 0; i + 1 < m; ++i) {
@@ -534,13 +610,13 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
     if (needed > options.max_nodes) {
       const Status status =
           outcome.status == Status::Converged ? Status::MaxNodesExceeded : Status::NotConverged;
-      fill<N>(result, model, it, counters, status,
+      fill<N>(result, model, workspace, counters, status,
            why + "; refining needs " + std::to_string(needed) + " nodes > max_nodes = " +
                std::to_string(options.max_nodes));
       return result;
     }
     if (round == options.max_refinements) {
-      fill<N>(result, model, it, counters, Status::NotConverged,
+      fill<N>(result, model, workspace, counters, Status::NotConverged,
            why + " after max_refinements = " + std::to_string(options.max_refinements));
       return result;
     }

@@ -155,7 +155,7 @@ bool BlockLU::factorize_panels(const CollocationJacobian& J) {
   const Index steps = steps_;
   const Index stride = Index{2} * n * width;  // doubles per panel before the last
   const Index size = stride * (steps - 1) + Index{n + q} * width;
-  if (panels_.size() != size) panels_.resize(size);
+  panels_.resize(static_cast<std::size_t>(size));  // keeps its capacity when smaller
   swaps_.resize(static_cast<std::size_t>(n * steps));
   for (Index j = 0; j < steps; ++j) {
     const bool last = j + 1 == steps;

@@ -44,6 +44,11 @@ class BlockLU {
   bool factorize(const CollocationJacobian& jacobian);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
   const std::string& error() const { return error_; }
+  /// Doubles held by the factors (their storage is kept when a smaller matrix is factorised next,
+  /// so that a solver reusing this object does not allocate again).
+  Eigen::Index storage() const {
+    return static_cast<Eigen::Index>(panels_.capacity() + swaps_.capacity() / 2) + pivot_rhs_.size();
+  }
 
  private:
   // The panels' shapes are compile-time constants where the block size is known (no parameters
@@ -60,7 +65,7 @@ class BlockLU {
   /// The panels after elimination, one after the other (column-major; steps_ - 1 of 2n rows, the
   /// last n + q): multipliers (left n columns, below the diagonal), U (top n rows:
   /// current | next | border).
-  Eigen::VectorXd panels_;
+  std::vector<double> panels_;
   std::vector<int> swaps_;         ///< row interchanges, n per step, in order
   Eigen::FullPivLU<Eigen::MatrixXd> border_;
   mutable Eigen::VectorXd pivot_rhs_;  ///< solve's workspace
