@@ -1,9 +1,11 @@
 """The documents that tie the code to the paper stay complete:
 
-* docs/equations.md has a row for every paper label cited in the code's comments: every
-  `\\label{...}` of the paper (listed in docs/paper-labels.txt), prefixed (eq:, disc-, ...) or not
-  (CS-conn, cor-parr, para-trans-Heis, ...), and every prefixed label-like token (so a misspelt
-  label is reported too);
+* every `\\label{...}` of the paper (listed in docs/paper-labels.txt) appears as a whole token in a
+  table row of docs/equations.md: with its implementation and test, as a label without computable
+  content, or as not yet implemented; a label named only in a heading or the prose is missing;
+* docs/equations.md has a row for every paper label cited in the code's comments, prefixed (eq:,
+  disc-, ...) or not (CS-conn, cor-parr, para-trans-Heis, ...), and for every prefixed label-like
+  token (so a misspelt label is reported too);
 * every citation `docs/paper-notes.md#<anchor>` in the repository names an anchor of
   docs/paper-notes.md, and the notes kept outside the repository (../shared) are no longer cited.
 
@@ -113,10 +115,39 @@ def test_prefixed_labels_cited_in_code_are_paper_labels():
     assert not unknown, f"labels cited in code that the paper does not define: {unknown}"
 
 
+def table_rows(text):
+    """The lines of a Markdown text that are table rows."""
+    return "\n".join(line for line in text.splitlines() if line.startswith("|"))
+
+
 def equation_rows():
     """The table rows of docs/equations.md (a label named only in a heading or the prose is not mapped)."""
-    text = (ROOT / "docs" / "equations.md").read_text()
-    return "\n".join(line for line in text.splitlines() if line.startswith("|"))
+    return table_rows((ROOT / "docs" / "equations.md").read_text())
+
+
+def test_every_paper_label_is_mapped():
+    table = equation_rows()
+    missing = [label for label in paper_labels() if not mapped(label, table)]
+    assert not missing, f"paper labels with no table row in docs/equations.md: {missing}"
+
+
+def test_paper_label_removed_from_the_table_is_reported():
+    """A label deleted from its row, or left only in a heading or the prose, is reported; the
+    other labels of the same row, and a longer label that contains it, do not hide it."""
+    labels = ["CS-conn", "CS-conn-right", "eq:HE-1", "fig:trajectories"]
+    document = "\n".join([
+        "## Connections (CS-conn)",
+        "| label | implementation | checked by |",
+        "|---|---|---|",
+        "| (CS-conn), (CS-conn-right) | `cartan_schouten` | ... |",
+        "| (fig:trajectories) | figure label |",
+        "| (eq:HE-1) | not yet implemented |",
+    ])
+    assert unmapped(labels, table_rows(document)) == set()
+    removed = document.replace("| (CS-conn), (CS-conn-right) |", "| (CS-conn-right) |")
+    assert unmapped(labels, table_rows(removed)) == {"CS-conn"}
+    moved_to_prose = document.replace("| (eq:HE-1) | not yet implemented |", "(eq:HE-1) is not yet implemented.")
+    assert unmapped(labels, table_rows(moved_to_prose)) == {"eq:HE-1"}
 
 
 def test_every_cited_label_is_mapped():
