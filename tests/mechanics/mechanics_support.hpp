@@ -6,12 +6,48 @@
 #include <functional>
 #include <iostream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
+#include "cartan/connections/cartan_schouten.hpp"
 #include "cartan/mechanics/lie_group_integrator.hpp"
 #include "test_support.hpp"
 
 namespace cartan::testing {
+
+/// A non-Cartan bilinear map with a symmetric part: 0.3 [u, w] + (u . A w) c + (u . w) d with A
+/// symmetric, plus a non-symmetric, non-bracket part u1 w3 e.
+template <groups::LieGroup G>
+connections::InvariantConnection<G> non_cartan_connection(groups::Side side) {
+  const Eigen::Matrix3d a = (Eigen::Matrix3d() << 1.0, 0.4, -0.2, 0.4, -0.7, 0.5, -0.2, 0.5, 0.9).finished();
+  const groups::TangentOf<G> c(0.5, -1.0, 0.8), d(-0.6, 0.3, 1.1), e(0.2, 0.9, -0.4);
+  return connections::InvariantConnection<G>::from_bilinear(side, [&](const groups::TangentOf<G>& u, const groups::TangentOf<G>& w) {
+    return groups::TangentOf<G>(0.3 * groups::bracket<G>(u, w) + u.dot(a * w) * c + u.dot(w) * d + u[0] * w[2] * e);
+  });
+}
+
+template <groups::LieGroup G>
+std::vector<std::pair<std::string, connections::InvariantConnection<G>>> connections_on(groups::Side side) {
+  std::vector<std::pair<std::string, connections::InvariantConnection<G>>> out;
+  for (double lambda : {0.0, 0.5, 1.0}) {
+    out.emplace_back("Cartan-Schouten lambda " + std::to_string(lambda), connections::cartan_schouten<G>(lambda, side));
+  }
+  out.emplace_back("non-Cartan", non_cartan_connection<G>(side));
+  return out;
+}
+
+/// d/de f(e) at 0 by the fourth-order central difference (error ~ step^4 f^(5) + eps |f| / step).
+template <class F>
+auto derivative(const F& f, double step) {
+  using Value = std::decay_t<decltype(f(0.0))>;
+  return Value(((f(-2 * step) - f(2 * step)) + 8 * (f(step) - f(-step))) / (12 * step));
+}
+
+/// Expects two trajectories on the same grid to agree in g and mu to `tolerance`, printing the
+/// measured differences under `what`.
+template <groups::LieGroup G>
+void expect_same_trajectory(const std::string& what, const mechanics::Trajectory<G>& reference,
+                            const mechanics::Trajectory<G>& other, double tolerance);
 
 /// zeta_i = d/de f(exp(e E_i) g), the right-trivialised derivative of f at g (central differences).
 template <groups::LieGroup G, class F>
@@ -57,6 +93,15 @@ double max_momentum_difference(const mechanics::Trajectory<G>& a, const mechanic
   double diff = 0;
   for (std::size_t k = 0; k < a.mu.size(); ++k) diff = std::max(diff, max_abs_diff(a.mu[k], b.mu[k]));
   return diff;
+}
+
+template <groups::LieGroup G>
+void expect_same_trajectory(const std::string& what, const mechanics::Trajectory<G>& reference,
+                            const mechanics::Trajectory<G>& other, double tolerance) {
+  const double dg = max_group_difference(reference, other), dmu = max_momentum_difference(reference, other);
+  std::cout << "[ measured ] " << what << ": max|dg| = " << dg << ", max|dmu| = " << dmu << '\n';
+  EXPECT_LE(dg, tolerance) << what;
+  EXPECT_LE(dmu, tolerance) << what;
 }
 
 /// Orders log2(e_k / e_{k+1}) of errors measured at step counts doubling from one to the next;

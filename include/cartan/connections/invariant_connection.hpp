@@ -105,6 +105,13 @@ class InvariantConnection {
     return nabla(v, w) - nabla(w, v) - sign() * groups::bracket<G>(v, w);
   }
 
+  /// The covector w -> alpha . T(v, w) (the torsion term alpha(i_v T) of eq:EL-1 and eq:HE-1).
+  Covector torsion_dual(const Tangent& v, const Covector& alpha) const {
+    Covector out;
+    for (int i = 0; i < kDim; ++i) out[i] = alpha.dot(torsion(v, Tangent::Unit(i)));
+    return out;
+  }
+
   /// Curvature on invariant fields (cur-tor-left; right version from the appendix):
   ///   left:  R(u,v)w = nabla_u nabla_v w - nabla_v nabla_u w - nabla_[u,v] w;  right: ... + nabla_[u,v] w.
   Tangent curvature(const Tangent& u, const Tangent& v, const Tangent& w) const {

@@ -33,9 +33,7 @@ EulerLagrangeTerms<G> euler_lagrange_terms(const connections::InvariantConnectio
                                            const groups::CovectorOf<G>& mu, const groups::CovectorOf<G>& zeta) {
   EulerLagrangeTerms<G> terms;
   terms.covariant = -connection.nabla_dual(v, mu);
-  for (int i = 0; i < G::kDim; ++i) {
-    terms.torsion[i] = mu.dot(connection.torsion(v, groups::TangentOf<G>::Unit(i)));
-  }
+  terms.torsion = connection.torsion_dual(v, mu);
   terms.horizontal = zeta - connection.nabla_operator_first(v).transpose() * mu;
   return terms;
 }

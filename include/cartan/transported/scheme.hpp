@@ -245,7 +245,7 @@ class TransportedScheme {
     return groups::right_jacobian_inverse<G>(residual) * d.gamma;
   }
 
- private:
+  /// The rates of eq:reduced-system at a node (header comment): u = P v, mu' and xi'.
   struct Rates {
     Tangent u;
     Covector dmu, dxi;
@@ -255,6 +255,24 @@ class TransportedScheme {
     Matrix p, coad_v;
     Covector zeta;
   };
+
+  NodeRates rates(const Node& node) const {
+    NodeRates r;
+    r.p = G::Ad(node.transport);
+    r.zeta = group_gradient(node);
+    r.coad_v = G::ad(node.v).transpose();
+    const Covector coad_v_mu = r.coad_v * node.mu;
+    r.u = r.p * node.v;
+    r.dxi = -coad_v_mu;
+    // The terms whose coefficients vanish are skipped (P^T zeta for a declared zero gradient,
+    // torsion at lambda = 1/2, curvature at lambda = 0, 1): the same values, fewer products.
+    r.dmu = c_torsion_ * r.dxi;
+    if constexpr (!Structure::zero_group_gradient) r.dmu += r.p.transpose() * r.zeta;
+    if (c_curvature_ != 0) r.dmu -= c_curvature_ * (r.coad_v * node.xi);
+    return r;
+  }
+
+ private:
   struct RatesTangent {
     Directions u, dmu, dxi;
   };
@@ -294,22 +312,6 @@ class TransportedScheme {
       return mechanics::require_finite_result(Covector(problem_.lagrangian.group_gradient(node.t, node.g, node.v)),
                                               "lagrangian.group_gradient", node.t, node.g, node.v);
     }
-  }
-
-  NodeRates rates(const Node& node) const {
-    NodeRates r;
-    r.p = G::Ad(node.transport);
-    r.zeta = group_gradient(node);
-    r.coad_v = G::ad(node.v).transpose();
-    const Covector coad_v_mu = r.coad_v * node.mu;
-    r.u = r.p * node.v;
-    r.dxi = -coad_v_mu;
-    // The terms whose coefficients vanish are skipped (P^T zeta for a declared zero gradient,
-    // torsion at lambda = 1/2, curvature at lambda = 0, 1): the same values, fewer products.
-    r.dmu = c_torsion_ * r.dxi;
-    if constexpr (!Structure::zero_group_gradient) r.dmu += r.p.transpose() * r.zeta;
-    if (c_curvature_ != 0) r.dmu -= c_curvature_ * (r.coad_v * node.xi);
-    return r;
   }
 
   RatesTangent rates_tangent(const Node& node, const NodeTangent& d, const NodeRates& r) const {
