@@ -72,6 +72,9 @@ void NonlinearSolveOptions::validate() const {
   positive(initial_damping, "initial_damping");
   positive(step_tolerance, "step_tolerance");
   positive(fd_step, "fd_step");
+  if (!(max_initial_residual > 0)) {  // +inf (no limit) allowed; NaN is not
+    throw_invalid("NonlinearSolveOptions", "max_initial_residual", format_value(max_initial_residual), "must be positive");
+  }
   if (max_iterations < 1) {
     throw_invalid("NonlinearSolveOptions", "max_iterations", std::to_string(max_iterations), "must be at least 1");
   }
@@ -99,6 +102,11 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
   report.residual = r;
   report.residual_norm = r.norm();
   report.residual_history.push_back(report.residual_norm);
+  if (report.residual_norm > options.max_initial_residual) {
+    finish(report, Status::NoProgress, "|r| at the start above max_initial_residual = " +
+                                           format_value(options.max_initial_residual));
+    return report;
+  }
   Eigen::MatrixXd a = jac.transpose() * jac;
   Eigen::VectorXd grad = jac.transpose() * r;
   double mu = options.initial_damping * std::max(a.diagonal().maxCoeff(), 1e-300);

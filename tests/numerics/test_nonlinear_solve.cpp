@@ -47,6 +47,23 @@ TEST(LevenbergMarquardt, ForwardDifferenceJacobianCountsEvaluations) {
   EXPECT_NEAR(report.x[0], 1.0, 1e-11);
 }
 
+// max_initial_residual: a start whose |r| exceeds it is abandoned after that one evaluation
+// (status NoProgress, the start returned unchanged); a start below it solves as without it.
+TEST(LevenbergMarquardt, AbandonsAStartAboveMaxInitialResidual) {
+  const Eigen::Vector2d start(-1.2, 1.0);  // |r| = |(-4.4, 2.2)| = 4.92
+  const auto abandoned = levenberg_marquardt(rosenbrock, start, {.tolerance = 1e-12, .max_initial_residual = 4.0});
+  EXPECT_EQ(abandoned.status, Status::NoProgress) << abandoned.message;
+  EXPECT_EQ(abandoned.evaluations, 1);
+  EXPECT_EQ(abandoned.x, Eigen::VectorXd(start));
+  EXPECT_NE(abandoned.message.find("max_initial_residual"), std::string::npos) << abandoned.message;
+  const auto solved = levenberg_marquardt(rosenbrock, start, {.tolerance = 1e-12, .max_initial_residual = 5.0});
+  const auto plain = levenberg_marquardt(rosenbrock, start, {.tolerance = 1e-12});
+  ASSERT_EQ(solved.status, Status::Converged) << solved.message;
+  EXPECT_EQ(solved.x, plain.x);
+  testing::expect_invalid([] { levenberg_marquardt(rosenbrock, Eigen::Vector2d(0, 0), {.max_initial_residual = 0.0}); },
+                 {"max_initial_residual", "0"});
+}
+
 // Where the last step's rate predicts convergence, the trial point is evaluated without its
 // Jacobian (a tangent-linear sweep costs several plain ones): on Rosenbrock, whose Newton phase
 // converges quadratically, the converged point is such an evaluation; every point that was not

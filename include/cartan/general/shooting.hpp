@@ -158,6 +158,7 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   lm.tolerance = options.tolerance;
   lm.max_iterations = options.max_iterations;
   lm.no_progress_window = options.no_progress_window;
+  lm.max_initial_residual = options.max_initial_residual;
   lm.monitor = options.monitor;
   const numerics::NonlinearSolveReport report =
       numerics::levenberg_marquardt(options.analytic_jacobian

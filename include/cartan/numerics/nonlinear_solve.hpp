@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,8 @@ namespace cartan::numerics {
 // Outcomes (cartan/status.hpp): Converged (|r| <= tolerance), MaxIterations, Stalled (steps
 // negligible while |r| > tolerance: a local minimum of |r|), NonFinite (residual or Jacobian
 // NaN/inf), SingularJacobian (damped normal equations not solvable), NoProgress (best |r| not
-// halved within no_progress_window iterations), Interrupted (the monitor asked to stop).
+// halved within no_progress_window iterations, or |r| at x0 above max_initial_residual),
+// Interrupted (the monitor asked to stop).
 
 struct NonlinearSolveOptions {
   double tolerance = 1e-12;      ///< stop when |r|_2 <= tolerance
@@ -35,6 +37,10 @@ struct NonlinearSolveOptions {
   /// iterations; a start outside Newton's basin is then abandoned early, while a converging
   /// solve (which gains far more than a factor 2 per few iterations) finishes.
   int no_progress_window = 0;
+  /// Give up (Status::NoProgress) at once when |r| at x0 exceeds this: a continuation stage whose
+  /// predictor is this far off has taken too large an increment, and is cheaper to retry with a
+  /// smaller one than to solve (continuation.hpp). Infinite (the default): no limit.
+  double max_initial_residual = std::numeric_limits<double>::infinity();
   /// Progress reports (one per iteration) and stop requests (Status::Interrupted); may be null.
   const SolveMonitor* monitor = nullptr;
 

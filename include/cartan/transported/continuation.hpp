@@ -37,6 +37,14 @@ struct ContinuationOptions {
   /// A stage is accepted only if its solution lies within this relative distance of the
   /// predictor (continue_parameter); farther means it jumped to another branch.
   double max_correction = 0.1;
+  /// Increment control by the predictor's quality: a stage whose scaled residual at the
+  /// prediction exceeds this is abandoned after that one evaluation and retried with half the
+  /// increment (solving from a poor prediction costs many damped iterations; bench/README.md,
+  /// "Continuation increments"). Infinite: no limit.
+  double max_stage_residual = 1.0;
+  /// Intermediate stages only feed the predictor: they are solved to
+  /// max(shooting tolerance, stage_tolerance); the last stage to the shooting tolerance.
+  double stage_tolerance = 1e-4;
 
   void validate() const {
     shooting.validate();
@@ -50,6 +58,12 @@ struct ContinuationOptions {
     }
     if (initial_stages < 1) {
       throw_invalid("ContinuationOptions", "initial_stages", std::to_string(initial_stages), "must be >= 1");
+    }
+    if (!(max_stage_residual > 0)) {
+      throw_invalid("ContinuationOptions", "max_stage_residual", format_value(max_stage_residual), "must be positive");
+    }
+    if (!(stage_tolerance > 0)) {
+      throw_invalid("ContinuationOptions", "stage_tolerance", format_value(stage_tolerance), "must be positive");
     }
   }
 };
@@ -101,9 +115,11 @@ struct PathEnd {
 
 /// Walks a scalar parameter from `from` to `to` along one solution branch; `make(s)` builds the
 /// problem at parameter s. Predictor: the secant through the last two accepted solutions (the
-/// previous solution for the first stage). Corrector: shooting from the prediction. A stage is
-/// accepted when it converges *and* lands within max_correction of the prediction (in the
-/// relative norm of `distance` below); otherwise the increment is halved. On a smooth branch the
+/// previous solution for the first stage). Corrector: shooting from the prediction, abandoned
+/// at once when the residual at the prediction exceeds max_stage_residual, and to
+/// stage_tolerance except at the last stage. A stage is accepted when it converges *and* lands
+/// within max_correction of the prediction (in the relative norm of `distance` below); otherwise
+/// the increment is halved. On a smooth branch the
 /// correction shrinks with the increment (quadratically after the first stage), so a small
 /// enough stage is always accepted; a corrector that converges far from the prediction has
 /// jumped to another branch (bench/README.md, "continuation acceptance"). Accumulates work into
@@ -147,7 +163,10 @@ PathEnd continue_parameter(const MakeProblem& make, double from, double to, Solu
       v_pred += ratio * (Family::velocity(current) - previous->first);
       aux_pred += ratio * (Family::auxiliary(current) - previous->second);
     }
-    Solution trial = Family::shoot(make(next), path, v_pred, aux_pred);
+    ShootingOptions stage = path;
+    stage.max_initial_residual = options.max_stage_residual;
+    if (next != to) stage.tolerance = std::max(path.tolerance, options.stage_tolerance);
+    Solution trial = Family::shoot(make(next), stage, v_pred, aux_pred);
     sweeps += trial.sweeps;
     iterations += Family::inner_iterations(trial);
     if (trial.converged() &&

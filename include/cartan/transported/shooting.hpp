@@ -29,6 +29,8 @@ struct ShootingOptions {
   int max_iterations = 100;     ///< Levenberg–Marquardt iterations
   bool analytic_jacobian = true;
   int no_progress_window = 0;   ///< > 0: abandon when |r| has not halved in this many iterations
+  /// Abandon at once when the scaled |r| of the guess exceeds this (continuation stages).
+  double max_initial_residual = std::numeric_limits<double>::infinity();
   const SolveMonitor* monitor = nullptr;  ///< progress and stop requests; may be null
 
   void validate() const {
@@ -36,6 +38,9 @@ struct ShootingOptions {
     if (!(tolerance > 0)) throw_invalid("ShootingOptions", "tolerance", format_value(tolerance), "must be positive");
     if (max_iterations < 1) {
       throw_invalid("ShootingOptions", "max_iterations", std::to_string(max_iterations), "must be at least 1");
+    }
+    if (!(max_initial_residual > 0)) {
+      throw_invalid("ShootingOptions", "max_initial_residual", format_value(max_initial_residual), "must be positive");
     }
   }
 };
@@ -162,7 +167,8 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   x0 << v0_guess * T, xi0_guess / s;
   const numerics::NonlinearSolveReport report =
       numerics::levenberg_marquardt(f, x0, {.tolerance = options.tolerance, .max_iterations = options.max_iterations,
-                                  .no_progress_window = options.no_progress_window, .monitor = options.monitor});
+                                  .no_progress_window = options.no_progress_window,
+                                  .max_initial_residual = options.max_initial_residual, .monitor = options.monitor});
   solution.inner_iterations = report.iterations;
   solution.residual_history = report.residual_history;
   const auto [v0, xi0] = unpack(report.x);
