@@ -36,9 +36,10 @@ The transported-velocity problem on any of them (general/solve.hpp)
     :func:`solve_general` with l = 1/2 v.A v - V(q) or a Python Lagrangian; returns a
     :class:`GeneralSolveResult`.
 General two-point boundary-value problems
-    :func:`solve_bvp`, fourth-order adaptive collocation with scipy.integrate.solve_bvp's
-    arguments (fun, bc, x, y, p, fun_jac, bc_jac, tol, max_nodes, bc_tol); returns a
-    :class:`BvpResult` whose ``sol`` is the dense output (:class:`BvpSolution`).
+    :func:`solve_bvp`: scipy.integrate.solve_bvp's signature, arguments, result and behaviour
+    (python/cartan/_bvp.py) on cartan's fourth-order collocation solver; returns a
+    :class:`BvpResult` (a scipy.optimize.OptimizeResult whose ``sol`` is a
+    scipy.interpolate.PPoly).
 
 Errors: invalid input raises ValueError with the C++ library's message; an exception raised in
 a Python callback during a solve is re-raised unchanged when the solver returns.
@@ -48,10 +49,10 @@ from typing import Optional
 
 import numpy as np
 
-from . import _cartan
+from . import _bvp, _cartan
+from ._bvp import solve_bvp  # noqa: F401  (re-exported)
 from ._cartan import (  # noqa: F401  (re-exported)
     SE2,
-    BvpSolution,
     Chart,
     Euclidean,
     GroupManifold,
@@ -89,7 +90,7 @@ __all__ = [
     "SE2FreeBodyHamiltonian", "SE3FreeBodyHamiltonian",
     "Trajectory", "SolveResult", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve",
     "VerifyReport", "verify",
-    "BvpResult", "BvpSolution", "solve_bvp",
+    "BvpResult", "solve_bvp",
     "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "Chart", "MANIFOLDS", "GeneralSolveResult", "solve_general",
     "verify_general",
 ]
@@ -411,58 +412,8 @@ def verify(result, lagrangian, *, group=None):
     return VerifyReport(**d)
 
 
-@dataclass
-class BvpResult:
-    """The result of :func:`solve_bvp`, with scipy.integrate.solve_bvp's fields:
-
-    status: 0 success, 1 max_nodes exceeded, 2 singular collocation Jacobian, 3 not converged
-    (Newton or mesh refinement failed, or f/bc not finite; SciPy's 3 is the narrower "bc_tol not
-    met"); status_name: "converged", "max-nodes-exceeded", "singular-jacobian", "not-converged";
-    message; success: status == 0; x (m,) the final mesh; y (n, m) and yp (n, m) = f(x, y, p) at
-    it; p (k,) or None; sol: the C^1 cubic dense output (sol(x), sol(x, 1) for y');
-    rms_residuals (m - 1,) relative RMS residual per interval; niter: meshes solved.
-    cartan's counters: max_rms_residual, max_bc_residual, newton_iterations,
-    jacobian_evaluations, rhs_evaluations (calls of fun, finite differences included),
-    solve_time (seconds).
-    """
-    status: int
-    status_name: str
-    message: str
-    success: bool
-    x: np.ndarray = field(repr=False)
-    y: np.ndarray = field(repr=False)
-    yp: np.ndarray = field(repr=False)
-    p: Optional[np.ndarray]
-    sol: BvpSolution = field(repr=False)
-    rms_residuals: np.ndarray = field(repr=False)
-    niter: int
-    max_rms_residual: float
-    max_bc_residual: float
-    newton_iterations: int
-    jacobian_evaluations: int
-    rhs_evaluations: int
-    solve_time: float
-
-
-def solve_bvp(fun, bc, x, y, p=None, *, fun_jac=None, bc_jac=None, tol=1e-3, max_nodes=1000, bc_tol=None,
-              max_newton_iterations=20, max_refinements=40, fd_step=2.0 ** -26, linear_solver="block-lu"):
-    """Solves y' = fun(x, y[, p]) on [x[0], x[-1]] with bc(y(a), y(b)[, p]) = 0 (n + k conditions)
-    by fourth-order adaptive collocation (the three-stage Lobatto IIIA scheme of SciPy's solve_bvp;
-    include/cartan/numerics/collocation.hpp) from the guess y (n, m) on the mesh x (m,) and p (k,).
-
-    Arguments follow scipy.integrate.solve_bvp, so a SciPy script ports by changing the import:
-    fun(x, y[, p]) -> (n,) or (n, 1); bc(ya, yb[, p]) -> (n + k,); fun_jac(x, y[, p]) -> df_dy
-    (n, n[, 1]) or, with p, (df_dy, df_dp (n, k[, 1])); bc_jac(ya, yb[, p]) -> (dbc_dya, dbc_dyb[,
-    dbc_dp]). Without fun_jac/bc_jac the Jacobians are forward differences (relative step
-    fd_step). Differences from SciPy: fun and fun_jac are called for one point at a time, with
-    SciPy's vectorised shapes for m = 1 (x (1,), y (n, 1)), so a vectorised SciPy function works
-    unchanged, and so does a pointwise one; the singular term S and `verbose` are not supported.
-    tol bounds each interval's relative RMS residual of the collocation polynomial, bc_tol
-    (default tol) the boundary residuals, max_nodes the mesh; max_newton_iterations (per mesh),
-    max_refinements, linear_solver ("block-lu" or "sparse-lu") are cartan's.
-
-    Failures to converge are reported in the result's status; invalid arguments raise ValueError;
-    an exception raised by a callback stops the solve and is re-raised unchanged.
-    """
-    return BvpResult(**_cartan._solve_bvp(fun, bc, x, y, p, fun_jac, bc_jac, tol, max_nodes, bc_tol,
-                                          max_newton_iterations, max_refinements, fd_step, linear_solver))
+def __getattr__(name):
+    # BvpResult subclasses scipy.optimize.OptimizeResult: SciPy is imported on first use only.
+    if name == "BvpResult":
+        return _bvp.result_class()
+    raise AttributeError(f"module 'cartan' has no attribute {name!r}")

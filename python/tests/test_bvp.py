@@ -57,7 +57,7 @@ def test_closed_form_and_scipy_agree():
     tol = 1e-6
     r = cartan.solve_bvp(ascher_fun, ascher_bc, x, y, tol=tol)
     s = scipy.integrate.solve_bvp(ascher_fun, ascher_bc, x, y, tol=tol)
-    assert r.success and r.status == 0 and r.status_name == "converged" and s.success
+    assert r.success and r.status == 0 and s.success
     grid = np.linspace(0, 1, 101)
     error = np.abs(r.sol(grid) - ascher_exact(grid)).max()
     versus_scipy = np.abs(r.sol(grid) - s.sol(grid)).max()
@@ -148,8 +148,8 @@ def test_pointwise_functions_work_too():
 
 def test_max_nodes_exceeded_is_a_status():
     r = cartan.solve_bvp(ascher_fun, ascher_bc, *ascher_guess(5), tol=1e-10, max_nodes=8)
-    assert not r.success and r.status == 1 and r.status_name == "max-nodes-exceeded"
-    assert "max-nodes-exceeded" in r.message and r.x.size <= 8
+    assert not r.success and r.status == 1 and r.message == "The maximum number of mesh nodes is exceeded."
+    assert r.x.size <= 8
 
 
 def test_singular_jacobian_is_a_status():
@@ -157,7 +157,9 @@ def test_singular_jacobian_is_a_status():
     # Jacobian has a zero column for p (and y(0) = 1, y(1) = 0 are inconsistent anyway).
     r = cartan.solve_bvp(lambda x, y, p: np.zeros((1, 1)), lambda ya, yb, p: np.array([ya[0] - 1, yb[0]]),
                          np.linspace(0, 1, 4), np.zeros((1, 4)), p=[1.0])
-    assert not r.success and r.status == 2 and r.status_name == "singular-jacobian", r.message
+    assert not r.success and r.status == 2, r.message
+    assert r.message == "A singular Jacobian encountered when solving the collocation system."
+    assert "singular" in r.details  # the C++ solver's own report
 
 
 class CallbackError(Exception):
@@ -184,19 +186,35 @@ def test_callback_exception_propagates(where):
         cartan.solve_bvp(fun, bc, *ascher_guess(5), fun_jac=fun_jac)
 
 
+def wrong_after_first_call(n_good):
+    calls = {"n": 0}
+
+    def fun(x, y):
+        calls["n"] += 1
+        return ascher_fun(x, y) if calls["n"] <= n_good else np.zeros(3)
+    return fun
+
+
+# SciPy's messages for what SciPy checks (python/tests/test_solve_bvp_contract.py runs them on both);
+# the C++ solver's for the rest: options that SciPy does not have, and a callback's return checked
+# during the solve.
 @pytest.mark.parametrize("kwargs, message", [
-    (dict(x=[0, 1, 1, 2]), r"t = .* is not strictly increasing"),  # the C++ library names the mesh t
-    (dict(x=np.zeros((4, 1))), r"x = array of shape \(4, 1\) must be 1-D"),
-    (dict(y=np.zeros((2, 3))), r"y = .*"),
-    (dict(y=np.zeros(4)), r"y = array of shape \(4,\) must be 2-D"),
-    (dict(p=[[1.0]]), r"p = array of shape \(1, 1\) must be 1-D"),
-    (dict(tol=-1), r"tol = -1 must be positive"),
-    (dict(bc_tol=0), r"bc_tol = 0 must be positive"),
-    (dict(max_nodes=1), r"max_nodes = 1 must be at least 2"),
-    (dict(linear_solver="qr"), r"linear_solver = \"qr\" is not one of"),
-    (dict(fun=lambda x, y: np.zeros(3)), r"solve_bvp: fun: return value = array of shape \(3,\) must have shape \(2,\)"),
-    (dict(bc=lambda ya, yb: np.zeros(1)), r"solve_bvp: bc: return value = array of shape \(1,\) must have shape \(2,\)"),
+    (dict(x=[0, 1, 1, 2]), r"^`x` must be strictly increasing\.$"),
+    (dict(x=np.zeros((4, 1))), r"^`x` must be 1 dimensional\.$"),
+    (dict(y=np.zeros((2, 3))), r"^`y` is expected to have 4 columns, but actually has 3\.$"),
+    (dict(y=np.zeros(4)), r"^`y` must be 2 dimensional\.$"),
+    (dict(p=[[1.0]]), r"^`p` must be 1 dimensional\.$"),
+    (dict(verbose=3), r"^`verbose` must be in \[0, 1, 2\]\.$"),
+    (dict(S=np.zeros((1, 2))), r"^`S` is expected to have shape \(2, 2\), but actually has \(1, 2\)$"),
+    (dict(fun=lambda x, y: np.zeros(3)), r"^`fun` return is expected to have shape \(2, 1\), but actually has \(3,\)\.$"),
+    (dict(bc=lambda ya, yb: np.zeros(1)), r"^`bc` return is expected to have shape \(2,\), but actually has \(1,\)\.$"),
+    (dict(fun=wrong_after_first_call(1)),
+     r"solve_bvp: fun: return value = array of shape \(3,\) must have shape \(2,\)"),
     (dict(bc_jac=lambda ya, yb: np.eye(3)), r"bc_jac: return value = .* must be a sequence of 2 arrays"),
+    (dict(tol=np.nan), r"tol = nan"),
+    (dict(linear_solver="qr"), r"linear_solver = \"qr\" is not one of"),
+    (dict(fd_step=0.0), r"fd_step = 0 must be positive"),
+    (dict(max_newton_iterations=0), r"max_newton_iterations = 0 must be at least 1"),
 ])
 def test_bad_arguments_raise_value_error(kwargs, message):
     x, y = ascher_guess(4)
@@ -204,6 +222,28 @@ def test_bad_arguments_raise_value_error(kwargs, message):
     args.update(kwargs)
     with pytest.raises(ValueError, match=message):
         cartan.solve_bvp(**args)
+
+
+def test_sol_is_the_cpp_dense_output():
+    # The PPoly is built from the final mesh's x, y and yp = f(x, y) (SciPy's create_spline); the
+    # C++ solver's dense output (the binding's CubicHermite) is the same C^1 cubic: both agree to
+    # rounding (the PPoly's monomial coefficients cost a few ulps of |y| + h |y'|).
+    d = cartan._cartan._solve_bvp(ascher_fun, ascher_bc, *ascher_guess(5), None, None, None, 1e-6, 1000, None, 20,
+                                  40, 2.0 ** -26, "block-lu")
+    r = cartan.solve_bvp(ascher_fun, ascher_bc, d["x"], d["y"], tol=1e-6)
+    assert r.success and r.niter == 1 and np.array_equal(r.x, d["x"])  # already converged on that mesh
+    grid = np.linspace(0, 1, 1001)
+    np.testing.assert_allclose(r.sol(grid), d["sol"](grid), rtol=0, atol=1e-13)
+    np.testing.assert_allclose(r.sol(grid, 1), d["sol"](grid, 1), rtol=0, atol=1e-11)
+
+
+def test_cartan_counters_are_kept():
+    r = cartan.solve_bvp(ascher_fun, ascher_bc, *ascher_guess(5), tol=1e-6)
+    assert isinstance(r, cartan.BvpResult)
+    for key in ("newton_iterations", "jacobian_evaluations", "rhs_evaluations"):
+        assert isinstance(r[key], int) and r[key] > 0, key
+    assert r.max_rms_residual == r.rms_residuals.max() <= 1e-6 and r.max_bc_residual <= 1e-6
+    assert r.solve_time > 0 and isinstance(r.details, str) and r.details.startswith("converged")
 
 
 # --- The transported problem by collocation (cartan.solve(method="collocation")) ---------------
