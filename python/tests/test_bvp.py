@@ -246,6 +246,26 @@ def test_cartan_counters_are_kept():
     assert r.solve_time > 0 and isinstance(r.details, str) and r.details.startswith("converged")
 
 
+def test_the_callers_guess_is_not_modified():
+    # SciPy's S projection (y[:, 0] = B y[:, 0]) writes into a float guess passed to it; cartan copies.
+    x = np.linspace(0, 1, 10)
+    y = np.vstack((np.full(10, 0.9), np.full(10, 0.5)))  # y2(0) = 0.5 violates S y(a) = 0
+    before = y.copy()
+    r = cartan.solve_bvp(lambda x, y: np.vstack((y[1], -y[0] ** 5)), lambda ya, yb: np.array([ya[1], yb[0] - 0.75 ** 0.5]),
+                         x, y, S=np.array([[0, 0], [0, -2]]))
+    assert r.success and np.array_equal(y, before)
+
+
+def test_complex_problem_needs_no_complex_derivative_with_differences():
+    # y' = conj(y) is not complex differentiable: SciPy's complex differences assume it is; cartan's
+    # real system of (Re y, Im y) = (u, v), u' = u, v' = -v, is differentiated as it is.
+    x = np.linspace(0, 1, 5)
+    r = cartan.solve_bvp(lambda x, y: np.conj(y), lambda ya, yb: np.array([ya[0] - (1 + 1j)]), x,
+                         np.ones((1, 5), dtype=complex), tol=1e-6)
+    grid = np.linspace(0, 1, 11)
+    assert r.success and np.abs(r.sol(grid)[0] - (np.exp(grid) + 1j * np.exp(-grid))).max() < 1e-5
+
+
 # --- The transported problem by collocation (cartan.solve(method="collocation")) ---------------
 
 H3 = dict(lam=0.5, T=1.0, g0=[0.3, -0.2, 0.5], gT=[1.0, 0.5, 0.8])

@@ -816,12 +816,22 @@ def complex_rate_bc(ya, yb, p):
     return np.array([ya[0] - 1, yb[0] - np.exp(1 + 1j)])
 
 
+def complex_rate_fun_jac(x, y, p):
+    return np.full((1, 1, x.size), p[0]), y.reshape(1, 1, -1)
+
+
+def complex_rate_bc_jac(ya, yb, p):
+    return np.array([[1], [0]]), np.array([[0], [1]]), np.zeros((2, 1))
+
+
+@pytest.mark.parametrize("jacobians", JACOBIAN_CHOICES)
 @pytest.mark.parametrize("backend", backends(scipy_xfail=SCIPY_COMPLEX_NEWTON))
-def test_complex_parameter(backend):
+def test_complex_parameter(backend, jacobians):
     # y' = p y, y(0) = 1, y(1) = e^(1+i): p = 1 + i. Newton from p = (1 + i)/2 needs damping.
     x = np.linspace(0, 1, 5)
     res = solve(backend, complex_rate_fun, complex_rate_bc, x, np.ones((1, 5), dtype=complex), p=[0.5 + 0.5j],
-                tol=1e-6)
+                tol=1e-6, fun_jac=complex_rate_fun_jac if jacobians[0] else None,
+                bc_jac=complex_rate_bc_jac if jacobians[1] else None)
     assert res.status == 0 and res.p.dtype == np.complex128
     # K <= 10 (measured 2.4e-8 for p and 8e-8 for y, cartan; SciPy with a conjugated cost alike).
     assert abs(res.p[0] - (1 + 1j)) < 10 * 1e-6
