@@ -41,6 +41,8 @@ _MAX_ITERATION = 10
 _ANY_MESH = 2**31 - 1
 # A positive bc_tol for the C++ Newton that no nonzero |bc| meets (SciPy's bc_tol <= 0 is never met).
 _TINY = np.nextafter(0.0, 1.0)
+# A finite stand-in for an infinite tol or bc_tol.
+_HUGE = np.finfo(float).max
 
 _result_class = None
 
@@ -278,8 +280,8 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
       2k parameters); y, yp, p and sol are complex. Forward differences then need no complex
       differentiability; fun_jac and bc_jac, if given, must be complex derivatives, as in SciPy.
     * The caller's y is never modified (SciPy's S projection writes into a float array).
-    * A non-finite tol or bc_tol, a bad max_newton_iterations, fd_step or linear_solver ("block-lu"
-      or "sparse-lu") raise ValueError.
+    * x with fewer than 2 nodes or a non-finite node, and a bad max_newton_iterations, fd_step or
+      linear_solver ("block-lu" or "sparse-lu") raise ValueError.
 
     Invalid arguments raise ValueError with SciPy's messages (cartan's for the C++ solver's checks);
     an exception raised by a callback stops the solve and is re-raised unchanged.
@@ -288,9 +290,15 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
     x = np.asarray(x, dtype=float)
     if x.ndim != 1:
         raise ValueError("`x` must be 1 dimensional.")
+    # SciPy fails on these too, later (PPoly: "at least 2 breakpoints are needed", NaN), or
+    # solves towards an infinite end (status 2).
+    if not np.all(np.isfinite(x)):
+        raise ValueError("`x` must be finite.")
     h = np.diff(x)
     if np.any(h <= 0):
         raise ValueError("`x` must be strictly increasing.")
+    if x.size < 2:
+        raise ValueError("`x` must have at least 2 nodes.")
     a = x[0]
 
     y = np.asarray(y)
@@ -345,11 +353,13 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
     # The C++ Newton's tolerance on |bc|, componentwise on the real system: for a complex problem
     # |Re|, |Im| <= bc_tol / sqrt(2) gives the modulus <= bc_tol that SciPy's test below asks.
     # SciPy's bc_tol <= 0 is never met and inf always; NaN is refused by the C++ solver.
+    # The C++ options must be finite and positive (tol >= 100 eps); SciPy's comparisons below
+    # decide as SciPy does: bc_tol <= 0 or NaN is never met, inf always; with tol NaN no node is
+    # ever added and status 3 follows, with tol inf every residual is met.
+    newton_tol = tol if np.isfinite(tol) else (_HUGE if tol > 0 else 100 * EPS)
     newton_bc_tol = bc_tol / (2 ** 0.5 if complex_problem else 1)
-    if newton_bc_tol <= 0:
-        newton_bc_tol = _TINY
-    elif newton_bc_tol == np.inf:
-        newton_bc_tol = np.finfo(float).max
+    newton_bc_tol = newton_bc_tol if np.isfinite(newton_bc_tol) and newton_bc_tol > 0 else (
+        _HUGE if newton_bc_tol == np.inf else _TINY)
 
     def to_real(z):
         return _split(z) if complex_problem else z
@@ -365,8 +375,15 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
 
     while True:
         m = x.shape[0]
-        d = _cartan._solve_bvp(c_fun, c_bc, x, to_real(y), to_real(p) if k > 0 else None, c_fun_jac, c_bc_jac, tol,
-                               _ANY_MESH, newton_bc_tol, max_newton_iterations, 0, fd_step, linear_solver)
+        if np.all(np.isfinite(y)) and np.all(np.isfinite(p)):
+            d = _cartan._solve_bvp(c_fun, c_bc, x, to_real(y), to_real(p) if k > 0 else None, c_fun_jac, c_bc_jac,
+                                   newton_tol, _ANY_MESH, newton_bc_tol, max_newton_iterations, 0, fd_step,
+                                   linear_solver)
+        else:  # the C++ solver refuses a non-finite guess; SciPy's first factorisation fails: status 2
+            d = dict(y=to_real(y), yp=to_real(_pointwise_f(problem, x, y, p if k > 0 else None)),
+                     p=to_real(p), rms_residuals=np.empty(0), max_bc_residual=np.nan, status_name="not-converged",
+                     message="the guess is not finite", newton_iterations=0, jacobian_evaluations=0,
+                     rhs_evaluations=m)
         iteration += 1
         for key in ("newton_iterations", "jacobian_evaluations", "rhs_evaluations"):
             counters[key] += d[key]

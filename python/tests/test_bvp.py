@@ -211,7 +211,7 @@ def wrong_after_first_call(n_good):
     (dict(fun=wrong_after_first_call(1)),
      r"solve_bvp: fun: return value = array of shape \(3,\) must have shape \(2,\)"),
     (dict(bc_jac=lambda ya, yb: np.eye(3)), r"bc_jac: return value = .* must be a sequence of 2 arrays"),
-    (dict(tol=np.nan), r"tol = nan"),
+    (dict(x=[0, 0.5, 1, np.inf]), r"^`x` must be finite\.$"),  # SciPy: status 2 (solves towards inf)
     (dict(linear_solver="qr"), r"linear_solver = \"qr\" is not one of"),
     (dict(fd_step=0.0), r"fd_step = 0 must be positive"),
     (dict(max_newton_iterations=0), r"max_newton_iterations = 0 must be at least 1"),

@@ -631,6 +631,35 @@ def test_status_3_bc_tol_not_met(backend):
     np.testing.assert_allclose(res.sol(x)[0], nonlin_bc_sol(x), rtol=1e-5, atol=1e-5)
 
 
+@pytest.mark.parametrize("where", ["y", "p"])
+@pytest.mark.parametrize("value", [np.nan, np.inf])
+def test_status_2_when_the_guess_is_not_finite(backend, where, value):
+    x = np.linspace(0, np.pi, 5)
+    y = np.ones((2, 5))
+    p = [0.5]
+    if where == "y":
+        y[0, 2] = value
+    else:
+        p = [value]
+    with np.errstate(invalid="ignore"):
+        res = solve(backend, sl_fun, sl_bc, x, y, p=p)
+    assert res.status == 2 and res.message == MESSAGES[2] and res.niter == 1 and res.x.size == 5
+
+
+@pytest.mark.parametrize("tol, bc_tol, status, niter", [
+    (np.inf, None, 0, 1),  # every residual is below inf
+    (np.nan, None, 3, 10),  # no comparison with NaN holds: no node added, bc_tol = NaN never met
+    (1e-3, np.nan, 3, 10),
+    (1e-3, 0.0, 3, 10),  # |bc| < 0 never holds
+    (1e-3, -1.0, 3, 10),
+    (1e-3, np.inf, 0, 1),
+])
+def test_unusual_tolerances_are_compared_as_scipy_compares_them(backend, tol, bc_tol, status, niter):
+    x = np.linspace(0, 0.1, 5)
+    res = solve(backend, nonlin_bc_fun, nonlin_bc_bc, x, np.zeros((2, 5)), tol=tol, bc_tol=bc_tol)
+    assert (res.status, res.niter, res.x.size) == (status, niter, 5)
+
+
 @pytest.mark.parametrize("bc_tol", [1e-10, 1e-14])
 def test_bc_tol_is_met_on_success(backend, bc_tol):
     x = np.linspace(0, 0.1, 5)
@@ -928,6 +957,9 @@ def test_an_exception_in_a_callback_propagates(backend, where):
     (dict(y=np.zeros((2, 4))), r"^`y` is expected to have 5 columns, but actually has 4\.$"),
     (dict(y=np.zeros(5)), r"^`y` must be 2 dimensional\.$"),
     (dict(p=[[1.0]]), r"^`p` must be 1 dimensional\.$"),
+    # SciPy fails on these later, in the PPoly: "at least 2 breakpoints", "strictly increasing or decreasing".
+    (dict(x=[0.0], y=np.zeros((2, 1))), r"2 (breakpoints|nodes)"),
+    (dict(x=[0.0, np.nan, 1.0], y=np.zeros((2, 3))), r"`x` must be"),
     # SciPy calls fun on the whole mesh first (m = 5), cartan at the first node (m = 1).
     (dict(fun=lambda x, y: np.zeros(3)), r"^`fun` return is expected to have shape \(2, [15]\), but actually has \(3,\)\.$"),
     (dict(bc=lambda ya, yb: np.zeros(3)), r"^`bc` return is expected to have shape \(2,\), but actually has \(3,\)\.$"),
