@@ -110,7 +110,8 @@ def _print_termination(status, iteration, nodes, max_rms_res, max_bc_res):
         2: "Singular Jacobian encountered when solving the collocation system on iteration {}. \n".format(iteration),
         3: "The solver was unable to satisfy boundary conditions tolerance on iteration {}. \n".format(iteration),
     }[status]
-    print(head + "Maximum relative residual: {:.2e} \nMaximum boundary residual: {:.2e}".format(max_rms_res, max_bc_res))
+    print(head + "Maximum relative residual: {:.2e} \nMaximum boundary residual: {:.2e}".format(
+        max_rms_res, max_bc_res))
 
 
 class _Problem:
@@ -350,12 +351,11 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
     if bc0.shape != (n + k,):
         raise ValueError("`bc` return is expected to have shape {}, but actually has {}.".format((n + k,), bc0.shape))
 
-    # The C++ Newton's tolerance on |bc|, componentwise on the real system: for a complex problem
-    # |Re|, |Im| <= bc_tol / sqrt(2) gives the modulus <= bc_tol that SciPy's test below asks.
-    # SciPy's bc_tol <= 0 is never met and inf always; NaN is refused by the C++ solver.
-    # The C++ options must be finite and positive (tol >= 100 eps); SciPy's comparisons below
-    # decide as SciPy does: bc_tol <= 0 or NaN is never met, inf always; with tol NaN no node is
-    # ever added and status 3 follows, with tol inf every residual is met.
+    # The C++ Newton's tolerances. On |bc| it is componentwise on the real system: for a complex
+    # problem |Re|, |Im| <= bc_tol / sqrt(2) gives the modulus <= bc_tol that SciPy's test below
+    # asks. Both must be finite and positive (tol >= 100 eps) there, while the outer loop below
+    # compares with the user's values as SciPy does: bc_tol <= 0 or NaN is never met, inf always;
+    # with tol NaN no node is ever added (and status 3 follows), with tol inf every residual is met.
     newton_tol = tol if np.isfinite(tol) else (_HUGE if tol > 0 else 100 * EPS)
     newton_bc_tol = bc_tol / (2 ** 0.5 if complex_problem else 1)
     newton_bc_tol = newton_bc_tol if np.isfinite(newton_bc_tol) and newton_bc_tol > 0 else (

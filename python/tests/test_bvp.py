@@ -206,7 +206,8 @@ def wrong_after_first_call(n_good):
     (dict(p=[[1.0]]), r"^`p` must be 1 dimensional\.$"),
     (dict(verbose=3), r"^`verbose` must be in \[0, 1, 2\]\.$"),
     (dict(S=np.zeros((1, 2))), r"^`S` is expected to have shape \(2, 2\), but actually has \(1, 2\)$"),
-    (dict(fun=lambda x, y: np.zeros(3)), r"^`fun` return is expected to have shape \(2, 1\), but actually has \(3,\)\.$"),
+    (dict(fun=lambda x, y: np.zeros(3)),
+     r"^`fun` return is expected to have shape \(2, 1\), but actually has \(3,\)\.$"),
     (dict(bc=lambda ya, yb: np.zeros(1)), r"^`bc` return is expected to have shape \(2,\), but actually has \(1,\)\.$"),
     (dict(fun=wrong_after_first_call(1)),
      r"solve_bvp: fun: return value = array of shape \(3,\) must have shape \(2,\)"),
@@ -251,8 +252,8 @@ def test_the_callers_guess_is_not_modified():
     x = np.linspace(0, 1, 10)
     y = np.vstack((np.full(10, 0.9), np.full(10, 0.5)))  # y2(0) = 0.5 violates S y(a) = 0
     before = y.copy()
-    r = cartan.solve_bvp(lambda x, y: np.vstack((y[1], -y[0] ** 5)), lambda ya, yb: np.array([ya[1], yb[0] - 0.75 ** 0.5]),
-                         x, y, S=np.array([[0, 0], [0, -2]]))
+    r = cartan.solve_bvp(lambda x, y: np.vstack((y[1], -y[0] ** 5)),
+                         lambda ya, yb: np.array([ya[1], yb[0] - 0.75 ** 0.5]), x, y, S=np.array([[0, 0], [0, -2]]))
     assert r.success and np.array_equal(y, before)
 
 

@@ -961,7 +961,8 @@ def test_an_exception_in_a_callback_propagates(backend, where):
     (dict(x=[0.0], y=np.zeros((2, 1))), r"2 (breakpoints|nodes)"),
     (dict(x=[0.0, np.nan, 1.0], y=np.zeros((2, 3))), r"`x` must be"),
     # SciPy calls fun on the whole mesh first (m = 5), cartan at the first node (m = 1).
-    (dict(fun=lambda x, y: np.zeros(3)), r"^`fun` return is expected to have shape \(2, [15]\), but actually has \(3,\)\.$"),
+    (dict(fun=lambda x, y: np.zeros(3)),
+     r"^`fun` return is expected to have shape \(2, [15]\), but actually has \(3,\)\.$"),
     (dict(bc=lambda ya, yb: np.zeros(3)), r"^`bc` return is expected to have shape \(2,\), but actually has \(3,\)\.$"),
     # With parameters, bc must return n + k values.
     (dict(fun=lambda x, y, p: exp_fun(x, y), bc=lambda ya, yb, p: exp_bc(ya, yb), p=[1.0]),
