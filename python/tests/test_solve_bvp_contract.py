@@ -845,6 +845,14 @@ def complex_rate_bc(ya, yb, p):
     return np.array([ya[0] - 1, yb[0] - np.exp(1 + 1j)])
 
 
+def test_real_guess_with_complex_values_is_cast_with_a_warning(backend):
+    # SciPy's documented rule: a complex problem needs a complex guess. With a real one the
+    # complex values of bc are cast to real, with NumPy's ComplexWarning (never silently).
+    with pytest.warns(np.ComplexWarning):
+        res = SOLVERS[backend](exp_fun, exp_bc_complex, np.linspace(0, 1, 5), np.zeros((2, 5)))
+    assert res.success and res.y.dtype == np.float64 and res.y[0, 0] == pytest.approx(1)
+
+
 def complex_rate_fun_jac(x, y, p):
     return np.full((1, 1, x.size), p[0]), y.reshape(1, 1, -1)
 
