@@ -17,6 +17,7 @@
 // how to shoot and where the unknowns (a velocity and an auxiliary: (v0, xi0) here, (v0, Xi0) for
 // the general problem, general/solve.hpp) live in a solution.
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <type_traits>
@@ -42,6 +43,9 @@ struct ContinuationOptions {
   /// increment (solving from a poor prediction costs many damped iterations; bench/README.md,
   /// "Continuation increments"). Infinite: no limit.
   double max_stage_residual = 1.0;
+  /// The same limit for the starts at halved horizons (not the requested one): a start whose
+  /// residual at the guess exceeds it goes on to the next halving at once.
+  double max_start_residual = 2.0;
   /// Intermediate stages only feed the predictor: they are solved to
   /// max(shooting tolerance, stage_tolerance); the last stage to the shooting tolerance.
   double stage_tolerance = 1e-4;
@@ -61,6 +65,9 @@ struct ContinuationOptions {
     }
     if (!(max_stage_residual > 0)) {
       throw_invalid("ContinuationOptions", "max_stage_residual", format_value(max_stage_residual), "must be positive");
+    }
+    if (!(max_start_residual > 0)) {
+      throw_invalid("ContinuationOptions", "max_start_residual", format_value(max_start_residual), "must be positive");
     }
     if (!(stage_tolerance > 0)) {
       throw_invalid("ContinuationOptions", "stage_tolerance", format_value(stage_tolerance), "must be positive");
@@ -174,8 +181,11 @@ PathEnd continue_parameter(const MakeProblem& make, double from, double to, Solu
       previous.emplace(Family::velocity(current), Family::auxiliary(current));
       previous_s = end.reached;
       end.reached = next;
+      // The secant predictor's error grows as the square of the increment: aim the next stage at
+      // half the residual limit, growing by at most 2 (1.5 when the stage gave no residual).
+      const double r0 = trial.residual_history.empty() ? 0.0 : trial.residual_history.front();
       current = std::move(trial);
-      increment *= 1.5;
+      increment *= r0 > 0 ? std::clamp(std::sqrt(options.max_stage_residual / 2 / r0), 0.5, 2.0) : 1.5;
     } else {
       increment /= 2;
       if (std::abs(increment) < options.min_increment * std::abs(to - from)) {
@@ -263,7 +273,9 @@ Solution continue_in_T(const Problem& problem, const ContinuationOptions& option
     // The given guess is a velocity of the requested problem: at horizon T' the same path
     // needs T / T' times its speed.
     const Velocity v0 = v0_guess ? Velocity(*v0_guess * (problem.T / start)) : Family::guess(p);
-    first = Family::shoot(p, path, v0, aux_guess && halving == 0 ? *aux_guess : Auxiliary(Auxiliary::Zero()));
+    ShootingOptions start_options = path;
+    if (halving > 0) start_options.max_initial_residual = options.max_start_residual;
+    first = Family::shoot(p, start_options, v0, aux_guess && halving == 0 ? *aux_guess : Auxiliary(Auxiliary::Zero()));
     sweeps += first.sweeps;
     iterations += Family::inner_iterations(first);
     if (halving == 0) direct = first;
