@@ -220,7 +220,9 @@ TEST(ConnectionTerms, HorizontalDifferentialIsTheDerivativeAlongParallelTranspor
   for (groups::Side side : {groups::Side::Left, groups::Side::Right}) {
     const auto lr = mechanics::right_reduced_lagrangian<groups::SO3>(l);
     const auto hr = mechanics::right_reduced_hamiltonian<groups::SO3>(h);
-    for (const auto& [name, connection] : connections_on<groups::SO3>(side)) {
+    for (const auto& named : connections_on<groups::SO3>(side)) {
+      const std::string& name = named.first;
+      const auto& connection = named.second;  // not a structured binding: the lambdas below capture it
       const ExpChart<groups::SO3> chart{side, random_element<groups::SO3>(rng, 0.8)};
       const Tangent v = random_tangent<groups::SO3>(rng, 1.5), w = random_tangent<groups::SO3>(rng);
       const Tangent mu = random_tangent<groups::SO3>(rng, 1.5);
