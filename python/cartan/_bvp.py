@@ -226,9 +226,9 @@ def _binding_functions(problem, wrapped, complex_problem):
             bc_jac if problem.bc_jac is not None else None)
 
 
-def _pointwise_f(problem, x, y, p):
-    """f at the columns of y, one point at a time, as the C++ solver calls it."""
-    return np.column_stack([np.reshape(problem.f(x[j:j + 1], y[:, j:j + 1], p), -1) for j in range(x.size)])
+def _mesh_f(problem, x, y, p):
+    """f at the columns of y, in one vectorised call, as SciPy and the C++ solver call it."""
+    return np.reshape(problem.f(x, y, p), y.shape)
 
 
 def _rms_residuals(problem, sol, x, h, p):
@@ -239,7 +239,7 @@ def _rms_residuals(problem, sol, x, h, p):
     s = 0.5 * h * (3 / 7) ** 0.5
     squares = []
     for t in (middle, middle + s, middle - s):
-        f = _pointwise_f(problem, t, sol(t), p)
+        f = _mesh_f(problem, t, sol(t), p)
         r = (sol(t, 1) - f) / (1 + np.abs(f))
         squares.append(np.sum(np.real(r * np.conj(r)), axis=0))
     return (0.5 * (32 / 45 * squares[0] + 49 / 90 * (squares[1] + squares[2]))) ** 0.5
@@ -269,9 +269,9 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
     (the C++ solver's report on the last mesh) and solve_time (seconds).
 
     Where cartan differs from SciPy:
-    * fun and fun_jac are called one point at a time, with SciPy's shapes for m = 1 (x (1,),
-      y (n, 1)): a vectorised SciPy function works unchanged, and so does a pointwise one
-      returning (n,) or (n, n).
+    * fun and fun_jac are called on whole sweeps of the mesh as SciPy calls them (x (m,),
+      y (n, m)), but not always on the same sweeps (nodes, midpoints, quadrature points); without
+      fun_jac, the differences move one component at every point at once (n + k calls of fun).
     * Newton on each mesh is cartan's (damped, natural monotonicity test, up to
       max_newton_iterations steps, Jacobian reuse), not SciPy's (at most 8 steps and 4
       Jacobians), so iterates, residuals and now and then the mesh differ slightly.
@@ -380,7 +380,7 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
                                    newton_tol, _ANY_MESH, newton_bc_tol, max_newton_iterations, 0, fd_step,
                                    linear_solver)
         else:  # the C++ solver refuses a non-finite guess; SciPy's first factorisation fails: status 2
-            d = dict(y=to_real(y), yp=to_real(_pointwise_f(problem, x, y, p if k > 0 else None)),
+            d = dict(y=to_real(y), yp=to_real(_mesh_f(problem, x, y, p if k > 0 else None)),
                      p=to_real(p), rms_residuals=np.empty(0), max_bc_residual=np.nan, status_name="not-converged",
                      message="the guess is not finite", newton_iterations=0, jacobian_evaluations=0,
                      rhs_evaluations=m)

@@ -1,8 +1,10 @@
 // cartan.solve_bvp: the collocation solver (include/cartan/numerics/collocation.hpp) for first-order
 // systems written in Python, with scipy.integrate.solve_bvp's argument conventions, and its dense
-// output (CubicHermite). The solver evaluates f one point at a time, so each callback gets
-// SciPy's vectorised shapes with m = 1: x (1,), y (n, 1), p (k,); results may keep the trailing
-// axis of length 1 or drop it. The wrapper python/cartan/__init__.py documents the Python side.
+// output (CubicHermite). As SciPy does, fun and fun_jac are called on whole sweeps of the mesh
+// (the solver's batched callbacks): x (m,), y (n, m), p (k,) give f (n, m), df_dy (n, n, m) and
+// df_dp (n, k, m); without fun_jac the differences move one component at all points at once
+// (n + k calls of fun a Jacobian). Single points (m = 1) keep SciPy's shapes, and results may keep
+// a trailing axis of length 1 there. The wrapper python/cartan/_bvp.py documents the Python side.
 #include <memory>
 #include <optional>
 #include <string>
@@ -61,6 +63,24 @@ void read_result(const py::handle& value, const std::string& who, Out&& out) {
   }
 }
 
+/// Copies a batched Jacobian (rows, cols, m), SciPy's layout, into out (rows x cols m): column
+/// cols j + c of out is [:, c, j].
+void read_batched_jacobian(const py::handle& value, const std::string& who, Eigen::Index cols, numerics::MatrixRef out) {
+  const Array a = as_array(value, who, "return value");
+  const Eigen::Index rows = out.rows(), m = cols > 0 ? out.cols() / cols : 0;
+  if (a.ndim() != 3 || a.shape(0) != rows || a.shape(1) != cols || a.shape(2) != m) {
+    throw_invalid(who, "return value", "array of shape " + shape_text(a),
+                  "must have shape (" + std::to_string(rows) + ", " + std::to_string(cols) + ", " +
+                      std::to_string(m) + ")");
+  }
+  const double* data = a.data();
+  for (Eigen::Index r = 0; r < rows; ++r) {
+    for (Eigen::Index c = 0; c < cols; ++c) {
+      for (Eigen::Index j = 0; j < m; ++j) out(r, cols * j + c) = data[(r * cols + c) * m + j];
+    }
+  }
+}
+
 /// The items of a callback's returned tuple (fun_jac, bc_jac), or throws if there are not `count`.
 py::sequence returned_items(const py::object& value, const std::string& who, std::size_t count) {
   if (!py::isinstance<py::sequence>(value) || py::len(value) != count) {
@@ -83,6 +103,11 @@ struct PythonBvp {
     x.mutable_at(0) = t;
     const py::array_t<double> column = to_numpy(Eigen::MatrixXd(y));  // (n, 1)
     return k > 0 ? py::make_tuple(x, column, to_numpy(p)) : py::make_tuple(x, column);
+  }
+  py::tuple batch_args(numerics::ConstVectorRef t, numerics::ConstMatrixRef y, numerics::ConstVectorRef p) const {
+    const py::array_t<double> x = to_numpy(Eigen::VectorXd(t));
+    const py::array_t<double> columns = to_numpy(Eigen::MatrixXd(y));  // (n, m)
+    return k > 0 ? py::make_tuple(x, columns, to_numpy(p)) : py::make_tuple(x, columns);
   }
   py::tuple boundary_args(numerics::ConstVectorRef ya, numerics::ConstVectorRef yb, numerics::ConstVectorRef p) const {
     return k > 0 ? py::make_tuple(to_numpy(ya), to_numpy(yb), to_numpy(p)) : py::make_tuple(to_numpy(ya), to_numpy(yb));
@@ -108,6 +133,12 @@ numerics::BvpSystem python_system(const std::shared_ptr<PythonBvp>& f) {
       read_result(v, who, dydt);
     });
   };
+  s.rhs_batch = [f](numerics::ConstVectorRef t, numerics::ConstMatrixRef y, numerics::ConstVectorRef p,
+                    numerics::MatrixRef dydt) {
+    f->call(f->fun, "fun", f->batch_args(t, y, p), [&](const py::object& v, const std::string& who) {
+      read_result(v, who, dydt);
+    });
+  };
   s.bc = [f](numerics::ConstVectorRef ya, numerics::ConstVectorRef yb, numerics::ConstVectorRef p, numerics::VectorRef residual) {
     f->call(f->bc, "bc", f->boundary_args(ya, yb, p), [&](const py::object& v, const std::string& who) {
       read_result(v, who, residual);
@@ -122,6 +153,17 @@ numerics::BvpSystem python_system(const std::shared_ptr<PythonBvp>& f) {
         const py::sequence items = returned_items(v, who, 2);
         read_result(items[0], who + " (df_dy)", dfdy);
         read_result(items[1], who + " (df_dp)", dfdp);
+      });
+    };
+  }
+  if (!f->fun_jac.is_none()) {
+    s.rhs_jacobian_batch = [f](numerics::ConstVectorRef t, numerics::ConstMatrixRef y, numerics::ConstVectorRef p,
+                               numerics::MatrixRef dfdy, numerics::MatrixRef dfdp) {
+      f->call(f->fun_jac, "fun_jac", f->batch_args(t, y, p), [&](const py::object& v, const std::string& who) {
+        if (f->k == 0) return read_batched_jacobian(v, who, f->n, dfdy);
+        const py::sequence items = returned_items(v, who, 2);
+        read_batched_jacobian(items[0], who + " (df_dy)", f->n, dfdy);
+        read_batched_jacobian(items[1], who + " (df_dp)", f->k, dfdp);
       });
     };
   }

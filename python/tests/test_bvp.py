@@ -155,7 +155,7 @@ def test_max_nodes_exceeded_is_a_status():
 def test_singular_jacobian_is_a_status():
     # y' = 0 with an unknown parameter p that neither f nor bc depends on: the collocation
     # Jacobian has a zero column for p (and y(0) = 1, y(1) = 0 are inconsistent anyway).
-    r = cartan.solve_bvp(lambda x, y, p: np.zeros((1, 1)), lambda ya, yb, p: np.array([ya[0] - 1, yb[0]]),
+    r = cartan.solve_bvp(lambda x, y, p: np.zeros_like(y), lambda ya, yb, p: np.array([ya[0] - 1, yb[0]]),
                          np.linspace(0, 1, 4), np.zeros((1, 4)), p=[1.0])
     assert not r.success and r.status == 2, r.message
     assert r.message == "A singular Jacobian encountered when solving the collocation system."
@@ -180,7 +180,7 @@ def test_callback_exception_propagates(where):
 
     fun = fail_later(ascher_fun) if where == "fun" else ascher_fun
     bc = fail_later(ascher_bc) if where == "bc" else ascher_bc
-    jac = (lambda x, y: np.array([[0.0, 1], [3 * y[0, 0], 0]]))
+    jac = (lambda x, y: np.array([[np.zeros_like(x), np.ones_like(x)], [3 * y[0], np.zeros_like(x)]]))
     fun_jac = fail_later(jac) if where == "fun_jac" else jac
     with pytest.raises(CallbackError, match=f"raised in {where}"):
         cartan.solve_bvp(fun, bc, *ascher_guess(5), fun_jac=fun_jac)

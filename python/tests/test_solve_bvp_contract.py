@@ -13,9 +13,8 @@ SciPy's refinement rule (node counts within 10 %); verbose 0/1/2 reports; the si
 conventions at x = a; complex problems; how the callbacks are called; validation errors;
 exceptions raised in callbacks.
 
-Strict xfails mark what one backend does not do yet: on cartan, the vectorised calls of fun and
-fun_jac on the whole mesh (they need the binding's batched callbacks, C++); on SciPy, a SciPy 1.10
-bug with complex problems whose Newton needs damping. A strict xfail that starts passing fails,
+Strict xfails mark what one backend does not do: on SciPy, a SciPy 1.10 bug with complex problems
+whose Newton needs damping. A strict xfail that starts passing fails,
 so the marks go when the cause is fixed.
 
 Tolerances. Both backends solve the same collocation equations (three-stage Lobatto IIIA) with
@@ -47,13 +46,6 @@ from scipy.special import erf
 import cartan
 
 SOLVERS = {"scipy": scipy.integrate.solve_bvp, "cartan": cartan.solve_bvp}
-
-VECTORISED = ("issue 14: needs the binding (python/src/bind_bvp.cpp) to set numerics::BvpSystem::rhs_batch "
-              "and rhs_jacobian_batch, calling fun / fun_jac once per mesh sweep with x (m,), y (n, m) "
-              "and df_dy (n, n, m), as SciPy calls them; today it calls them one point at a time")
-SCIPY_COMPLEX_NEWTON = ("SciPy 1.10 bug: solve_newton's criterion cost = np.dot(step, step) is not a norm for a "
-                        "complex step (no conjugate), so its line search fails on complex problems that need "
-                        "damping; cartan solves the real system of real and imaginary parts")
 
 
 @pytest.fixture(params=["scipy", "cartan"])
@@ -901,7 +893,6 @@ def recording(f, calls):
     return wrapped
 
 
-@pytest.mark.parametrize("backend", backends(cartan_xfail=VECTORISED))
 def test_fun_is_called_on_the_whole_mesh(backend):
     calls = []
     x = np.linspace(0, 1, 5)
@@ -911,7 +902,6 @@ def test_fun_is_called_on_the_whole_mesh(backend):
     assert ((4,), (2, 4)) in calls  # the midpoints at once
 
 
-@pytest.mark.parametrize("backend", backends(cartan_xfail=VECTORISED))
 def test_fun_jac_is_called_on_the_whole_mesh(backend):
     calls = []
     x = np.linspace(0, 1, 5)

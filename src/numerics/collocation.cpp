@@ -69,6 +69,10 @@ class Model {
       s_.rhs_jacobian_batch(t, y, p, dfdy, dfdp);
       return;
     }
+    if (!s_.rhs_jacobian && s_.rhs_batch) {
+      batched_differences(t, y, p, f0, dfdy, dfdp);
+      return;
+    }
     for (Index j = 0; j < m; ++j) {
       rhs_jacobian(t[j], y.col(j), p, f0.col(j), dfdy.middleCols(n() * j, n()), dfdp.middleCols(k() * j, k()));
     }
@@ -101,6 +105,33 @@ class Model {
     VectorXd f(n());
     difference(y, dfdy, f0, [&](const VectorXd& yy) { rhs(t, yy, p, f); return f; });
     difference(p, dfdp, f0, [&](const VectorXd& pp) { rhs(t, y, pp, f); return f; });
+  }
+
+  /// The forward differences of the pointwise path below, every point at once: component i of y
+  /// (then of p) is moved at all m points together, one rhs_batch call each (n + k calls instead of
+  /// m (n + k)); the steps, and so the values, are those of the pointwise path.
+  void batched_differences(const VectorXd& t, const MatrixXd& y, const VectorXd& p, const MatrixXd& f0,
+                           MatrixXd& dfdy, MatrixXd& dfdp) {
+    const Index m = t.size();
+    MatrixXd moved = y, f(n(), m);
+    VectorXd step(m);
+    for (Index i = 0; i < n(); ++i) {
+      for (Index j = 0; j < m; ++j) {
+        moved(i, j) = y(i, j) + fd_step_ * std::max(1.0, std::abs(y(i, j)));
+        step[j] = moved(i, j) - y(i, j);
+      }
+      rhs(t, moved, p, f);
+      for (Index j = 0; j < m; ++j) dfdy.col(n() * j + i) = (f.col(j) - f0.col(j)) / step[j];
+      moved.row(i) = y.row(i);
+    }
+    VectorXd pp = p;
+    for (Index i = 0; i < k(); ++i) {
+      pp[i] = p[i] + fd_step_ * std::max(1.0, std::abs(p[i]));
+      const double dp = pp[i] - p[i];
+      rhs(t, y, pp, f);
+      for (Index j = 0; j < m; ++j) dfdp.col(k() * j + i) = (f.col(j) - f0.col(j)) / dp;
+      pp[i] = p[i];
+    }
   }
 
   /// Forward differences of g at x (g(x) = g0), column j with step fd_step max(1, |x_j|).
