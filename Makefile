@@ -70,6 +70,7 @@ bench: build
 	/usr/bin/python3 bench/compare_with_python.py --module $(BUILD)/python --repeat 3 --markdown out/bench_compare.md
 	/usr/bin/python3 bench/compare_collocation.py --cartan $(BUILD)/cartan --bench $(BUILD)/bench/bench_collocation --markdown out/bench_collocation.md
 	/usr/bin/python3 bench/compare_collocation_warm.py --timer $(BUILD)/bench/collocation_timer --markdown out/bench_collocation_warm.md
+	/usr/bin/python3 bench/compare_solve_bvp.py --module $(BUILD)/python --rounds 5 --markdown out/bench_solve_bvp.md
 	/usr/bin/python3 bench/sweep_scaling.py --cartan $(BUILD)/cartan --repeat 3 | tee out/sweep_scaling.md
 
 clean:
