@@ -47,6 +47,10 @@ import cartan
 
 SOLVERS = {"scipy": scipy.integrate.solve_bvp, "cartan": cartan.solve_bvp}
 
+SCIPY_COMPLEX_NEWTON = ("SciPy 1.10 bug: solve_newton's criterion cost = np.dot(step, step) is not a norm for a "
+                        "complex step (no conjugate), so its line search fails on complex problems that need "
+                        "damping; cartan solves the real system of real and imaginary parts")
+
 
 @pytest.fixture(params=["scipy", "cartan"])
 def backend(request):
