@@ -65,11 +65,9 @@ def result_class():
     return _result_class
 
 
-def _create_spline(y, yp, x, h):
-    """SciPy's create_spline: the C^1 cubic Hermite interpolant of (x, y, y') as a PPoly (the same
-    cubic as cartan's dense output), with c[0..3] the coefficients of (x - x_i)^3 .. (x - x_i)^0."""
-    from scipy.interpolate import PPoly
-
+def _spline_coefficients(y, yp, h):
+    """SciPy's create_spline's coefficients c (4, n, m - 1) of (x - x_i)^3 .. (x - x_i)^0: the C^1
+    cubic Hermite interpolant of (x, y, y') (the same cubic as cartan's dense output)."""
     n, m = y.shape
     c = np.empty((4, n, m - 1), dtype=y.dtype)
     slope = (y[:, 1:] - y[:, :-1]) / h
@@ -78,8 +76,24 @@ def _create_spline(y, yp, x, h):
     c[1] = (slope - yp[:, :-1]) / h - t
     c[2] = yp[:, :-1]
     c[3] = y[:, :-1]
-    c = np.moveaxis(c, 1, 0)
-    return PPoly(c, x, extrapolate=True, axis=1)
+    return c
+
+
+def _create_spline(y, yp, x, h):
+    """SciPy's create_spline: the interpolant as a PPoly."""
+    from scipy.interpolate import PPoly
+
+    return PPoly(np.moveaxis(_spline_coefficients(y, yp, h), 1, 0), x, extrapolate=True, axis=1)
+
+
+def _spline_at(y, yp, x, h, t):
+    """The interpolant at the increasing points t of [x[0], x[-1]], by Horner's rule on the
+    interval of each point as PPoly evaluates it, without building the PPoly (the refinement loop
+    needs only the next mesh's guess)."""
+    c = _spline_coefficients(y, yp, h)
+    i = np.clip(np.searchsorted(x, t, side="right") - 1, 0, x.size - 2)
+    dx = t - x[i]
+    return ((c[0][:, i] * dx + c[1][:, i]) * dx + c[2][:, i]) * dx + c[3][:, i]
 
 
 def _modify_mesh(x, insert_1, insert_2):
@@ -390,7 +404,6 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
         y, f = from_real(d["y"]), from_real(d["yp"])
         if k > 0:
             p = from_real(d["p"])
-        sol = _create_spline(y, f, x, h)
         # f, its midpoint values or bc not finite (at this mesh's start: Newton rejects such
         # trials): SciPy's factorisation then fails on the non-finite Jacobian, status 2.
         finite = np.all(np.isfinite(f)) and d["rms_residuals"].shape == (m - 1,) and np.isfinite(d["max_bc_residual"])
@@ -398,7 +411,7 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
             rms_res = np.full(m - 1, np.nan)
             max_bc_res = np.max(abs(problem.boundary(y[:, 0], y[:, -1], p if k > 0 else None)))
         elif complex_problem:
-            rms_res = _rms_residuals(problem, sol, x, h, p if k > 0 else None)
+            rms_res = _rms_residuals(problem, _create_spline(y, f, x, h), x, h, p if k > 0 else None)
             counters["rhs_evaluations"] += 3 * (m - 1)
             max_bc_res = np.max(abs(problem.boundary(y[:, 0], y[:, -1], p if k > 0 else None)))
         else:
@@ -424,9 +437,9 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
             _print_iteration_progress(iteration, max_rms_res, max_bc_res, m, nodes_added)
 
         if nodes_added > 0:
-            x = _modify_mesh(x, insert_1, insert_2)
-            h = np.diff(x)
-            y = sol(x)
+            refined = _modify_mesh(x, insert_1, insert_2)
+            y = _spline_at(y, f, x, h, refined)
+            x, h = refined, np.diff(refined)
         elif max_bc_res <= bc_tol:
             status = 0
             break
@@ -438,6 +451,6 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
         _print_termination(status, iteration, x.shape[0], max_rms_res, max_bc_res)
 
     return result_class()(
-        sol=sol, p=p if k > 0 else None, x=x, y=y, yp=f, rms_residuals=rms_res, niter=iteration, status=status,
-        message=TERMINATION_MESSAGES[status], success=status == 0, max_rms_residual=max_rms_res,
+        sol=_create_spline(y, f, x, h), p=p if k > 0 else None, x=x, y=y, yp=f, rms_residuals=rms_res,
+        niter=iteration, status=status, message=TERMINATION_MESSAGES[status], success=status == 0, max_rms_residual=max_rms_res,
         max_bc_residual=max_bc_res, details=d["message"], solve_time=time.perf_counter() - started, **counters)
