@@ -31,6 +31,7 @@ import inspect
 import io
 import re
 import sys
+from pathlib import Path
 import warnings
 
 import numpy as np
@@ -44,6 +45,38 @@ from scipy.optimize import OptimizeResult, brentq
 from scipy.special import erf
 
 import cartan
+
+# The published problems, defined once for this suite and the benchmark (bench/python/bvp_cases.py,
+# SciPy only; checked against SciPy by bench/python/test_bvp_cases.py).
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench" / "python"))
+from bvp_cases import (  # noqa: E402
+    ascher_bc,
+    ascher_fun,
+    big_bc,
+    big_fun,
+    bratu_bc,
+    bratu_fun,
+    bratu_p_bc,
+    bratu_p_fun,
+    emden_bc,
+    emden_fun,
+    emden_fun_jac,
+    emden_guess,
+    exp_bc,
+    exp_bc_complex,
+    exp_bc_jac,
+    exp_fun,
+    exp_fun_jac,
+    mathieu_bc,
+    mathieu_fun,
+    nonlin_bc_fun,
+    shock_bc,
+    shock_fun,
+    sl_bc,
+    sl_bc_jac,
+    sl_fun,
+    sl_fun_jac,
+)
 
 SOLVERS = {"scipy": scipy.integrate.solve_bvp, "cartan": cartan.solve_bvp}
 
@@ -73,86 +106,12 @@ def solve(backend, *args, **kwargs):
 
 # --- Problems (SciPy's scipy/integrate/tests/test_bvp.py unless said otherwise) -------------------
 
-def exp_fun(x, y):
-    return np.vstack((y[1], y[0]))
-
-
-def exp_fun_jac(x, y):
-    df_dy = np.empty((2, 2, x.shape[0]))
-    df_dy[0, 0] = 0
-    df_dy[0, 1] = 1
-    df_dy[1, 0] = 1
-    df_dy[1, 1] = 0
-    return df_dy
-
-
-def exp_bc(ya, yb):
-    return np.hstack((ya[0] - 1, yb[0]))
-
-
-def exp_bc_complex(ya, yb):
-    return np.hstack((ya[0] - 1 - 1j, yb[0]))
-
-
-def exp_bc_jac(ya, yb):
-    return np.array([[1, 0], [0, 0]]), np.array([[0, 0], [1, 0]])
-
-
 def exp_sol(x):
     return (np.exp(-x) - np.exp(x - 2)) / (1 - np.exp(-2))
 
 
-def sl_fun(x, y, p):
-    return np.vstack((y[1], -p[0] ** 2 * y[0]))
-
-
-def sl_fun_jac(x, y, p):
-    n, m = y.shape
-    df_dy = np.empty((n, 2, m))
-    df_dy[0, 0] = 0
-    df_dy[0, 1] = 1
-    df_dy[1, 0] = -p[0] ** 2
-    df_dy[1, 1] = 0
-    df_dp = np.empty((n, 1, m))
-    df_dp[0, 0] = 0
-    df_dp[1, 0] = -2 * p[0] * y[0]
-    return df_dy, df_dp
-
-
-def sl_bc(ya, yb, p):
-    return np.hstack((ya[0], yb[0], ya[1] - p[0]))
-
-
-def sl_bc_jac(ya, yb, p):
-    dbc_dya = np.zeros((3, 2))
-    dbc_dya[0, 0] = 1
-    dbc_dya[2, 1] = 1
-    dbc_dyb = np.zeros((3, 2))
-    dbc_dyb[1, 0] = 1
-    dbc_dp = np.zeros((3, 1))
-    dbc_dp[2, 0] = -1
-    return dbc_dya, dbc_dyb, dbc_dp
-
-
 # Emden's equation y'' + 2/x y' = -y^5 as y' = S y / x + f with S = [[0, 0], [0, -2]].
 EMDEN_S = np.array([[0, 0], [0, -2]])
-
-
-def emden_fun(x, y):
-    return np.vstack((y[1], -y[0] ** 5))
-
-
-def emden_fun_jac(x, y):
-    df_dy = np.empty((2, 2, x.shape[0]))
-    df_dy[0, 0] = 0
-    df_dy[0, 1] = 1
-    df_dy[1, 0] = -5 * y[0] ** 4
-    df_dy[1, 1] = 0
-    return df_dy
-
-
-def emden_bc(ya, yb):
-    return np.array([ya[1], yb[0] - (3 / 4) ** 0.5])
 
 
 def emden_bc_jac(ya, yb):
@@ -163,30 +122,12 @@ def emden_sol(x):
     return (1 + x ** 2 / 3) ** -0.5
 
 
-def emden_guess():
-    x = np.linspace(0, 1, 10)
-    y = np.empty((2, 10))
-    y[0] = (3 / 4) ** 0.5
-    y[1] = 1e-4
-    return x, y
-
-
 def undefined_fun(x, y):
     return np.zeros_like(y)
 
 
 def undefined_bc(ya, yb):
     return np.array([ya[0], yb[0] - 1])
-
-
-def big_fun(x, y):
-    f = np.zeros_like(y)
-    f[::2] = y[1::2]
-    return f
-
-
-def big_bc(ya, yb):
-    return np.hstack((ya[::2], yb[::2] - 1))
 
 
 def big_fun_with_parameters(x, y, p):
@@ -230,22 +171,9 @@ def big_bc_with_parameters_jac(ya, yb, p):
 SHOCK_EPS = 1e-3
 
 
-def shock_fun(x, y):
-    return np.vstack((y[1], -(x * y[1] + SHOCK_EPS * np.pi ** 2 * np.cos(np.pi * x) +
-                              np.pi * x * np.sin(np.pi * x)) / SHOCK_EPS))
-
-
-def shock_bc(ya, yb):
-    return np.array([ya[0] + 2, yb[0]])
-
-
 def shock_sol(x):
     k = np.sqrt(2 * SHOCK_EPS)
     return np.cos(np.pi * x) + erf(x / k) / erf(1 / k)
-
-
-def nonlin_bc_fun(x, y):
-    return np.stack([y[1], np.zeros_like(x)])  # Laplace's equation
 
 
 def nonlin_bc_bc(ya, yb):
@@ -264,14 +192,6 @@ def nonlin_bc_sol(x):
 
 
 # Ascher, Mattheij & Russell: y'' = 3/2 y^2, y(0) = 4, y(1) = 1; one solution is 4 / (1 + x)^2.
-def ascher_fun(x, y):
-    return np.vstack((y[1], 1.5 * y[0] ** 2))
-
-
-def ascher_bc(ya, yb):
-    return np.array([ya[0] - 4, yb[0] - 1])
-
-
 def ascher_sol(x):
     return np.vstack((4 / (1 + x) ** 2, -8 / (1 + x) ** 3))
 
@@ -281,14 +201,6 @@ def ascher_sol(x):
 MATHIEU_Q = 5.0
 
 
-def mathieu_fun(x, y, p):
-    return np.vstack((y[1], -(p[0] - 2 * MATHIEU_Q * np.cos(2 * x)) * y[0]))
-
-
-def mathieu_bc(ya, yb, p):
-    return np.array([ya[0] - 1, ya[1], yb[1]])
-
-
 # Bratu's problem y'' + lam exp(y) = 0, y(0) = y(1) = 0 (SciPy's documentation example): the
 # solutions are y = -2 log(cosh((x - 1/2) theta / 2) / cosh(theta / 4)) with
 # theta = sqrt(2 lam) cosh(theta / 4); for lam = 1 two of them.
@@ -296,25 +208,9 @@ def bratu_sol(x, theta):
     return -2 * np.log(np.cosh((x - 0.5) * theta / 2) / np.cosh(theta / 4))
 
 
-def bratu_fun(x, y):
-    return np.vstack((y[1], -np.exp(y[0])))
-
-
-def bratu_bc(ya, yb):
-    return np.array([ya[0], yb[0]])
-
-
 # Bratu with lam unknown and y'(0) = theta tanh(theta / 4) given (theta = 2):
 # lam = theta^2 / (2 cosh^2(theta / 4)).
 BRATU_THETA = 2.0
-
-
-def bratu_p_fun(x, y, p):
-    return np.vstack((y[1], -p[0] * np.exp(y[0])))
-
-
-def bratu_p_bc(ya, yb, p):
-    return np.array([ya[0], yb[0], ya[1] - BRATU_THETA * np.tanh(BRATU_THETA / 4)])
 
 
 def relative_residual_norms(sol, fun, x_test, extra=None):
