@@ -140,7 +140,7 @@ def test_analytic_jacobians_save_calls_but_not_accuracy():
     assert exact.rhs_evaluations < fd.rhs_evaluations
 
 
-def test_pointwise_functions_work_too():
+def test_functions_returning_lists_work_too():
     r = cartan.solve_bvp(lambda x, y: [y[1], 1.5 * y[0] ** 2], lambda ya, yb: [ya[0] - 4, yb[0] - 1],
                          *ascher_guess(5), tol=1e-6)
     assert r.success and np.abs(r.sol(0.25) - ascher_exact(np.array([0.25]))[:, 0]).max() < 1e-5

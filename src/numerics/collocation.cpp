@@ -117,7 +117,7 @@ class Model {
     VectorXd step(m);
     for (Index i = 0; i < n(); ++i) {
       for (Index j = 0; j < m; ++j) {
-        moved(i, j) = y(i, j) + fd_step_ * std::max(1.0, std::abs(y(i, j)));
+        moved(i, j) = moved_by_step(y(i, j));
         step[j] = moved(i, j) - y(i, j);
       }
       rhs(t, moved, p, f);
@@ -126,7 +126,7 @@ class Model {
     }
     VectorXd pp = p;
     for (Index i = 0; i < k(); ++i) {
-      pp[i] = p[i] + fd_step_ * std::max(1.0, std::abs(p[i]));
+      pp[i] = moved_by_step(p[i]);
       const double dp = pp[i] - p[i];
       rhs(t, y, pp, f);
       for (Index j = 0; j < m; ++j) dfdp.col(k() * j + i) = (f.col(j) - f0.col(j)) / dp;
@@ -134,12 +134,15 @@ class Model {
     }
   }
 
+  /// x moved by the difference step fd_step max(1, |x|), the same for every difference quotient.
+  double moved_by_step(double x) const { return x + fd_step_ * std::max(1.0, std::abs(x)); }
+
   /// Forward differences of g at x (g(x) = g0), column j with step fd_step max(1, |x_j|).
   template <class Function>
   void difference(ConstVectorRef x, MatrixRef out, ConstVectorRef g0, const Function& g) const {
     VectorXd xx = x;
     for (Index j = 0; j < x.size(); ++j) {
-      xx[j] = x[j] + fd_step_ * std::max(1.0, std::abs(x[j]));
+      xx[j] = moved_by_step(x[j]);
       const double step = xx[j] - x[j];  // the step actually taken (exact in floating point)
       out.col(j) = (g(xx) - g0) / step;
       xx[j] = x[j];

@@ -43,6 +43,21 @@ auto derivative(const F& f, double step) {
   return Value(((f(-2 * step) - f(2 * step)) + 8 * (f(step) - f(-step))) / (12 * step));
 }
 
+/// The trivialised derivative at e = 0 of a curve e -> curve(e) through at = curve(0): g^{-1} dg/de
+/// (left) or dg/de g^{-1} (right), as differences of log(at^{-1} curve(e)) or log(curve(e) at^{-1})
+/// (derivative above).
+template <groups::LieGroup G, class Curve>
+groups::TangentOf<G> trivialised_derivative(groups::Side side, const Curve& curve, double step) {
+  const groups::ElementOf<G> at = curve(0.0);
+  return derivative(
+      [&](double e) -> groups::TangentOf<G> {
+        const groups::ElementOf<G> moved = curve(e);
+        return side == groups::Side::Left ? groups::log_between<G>(at, moved)
+                                          : groups::TangentOf<G>(G::log(G::compose(moved, G::inverse(at))));
+      },
+      step);
+}
+
 /// Expects two trajectories on the same grid to agree in g and mu to `tolerance`, printing the
 /// measured differences under `what`.
 template <groups::LieGroup G>

@@ -50,15 +50,8 @@ struct ExpChart {
   /// d_j g(x) g(x)^{-1} (right).
   Matrix frame(const Tangent& x) const {
     Matrix f;
-    const groups::ElementOf<G> at = point(x);
     for (int j = 0; j < n; ++j) {
-      f.col(j) = derivative(
-          [&](double e) -> Tangent {
-            const groups::ElementOf<G> moved = point(Tangent(x + e * Tangent::Unit(j)));
-            return side == groups::Side::Left ? groups::log_between<G>(at, moved)
-                                              : Tangent(G::log(G::compose(moved, G::inverse(at))));
-          },
-          kStep);
+      f.col(j) = trivialised_derivative<G>(side, [&](double e) { return point(Tangent(x + e * Tangent::Unit(j))); }, kStep);
     }
     return f;
   }
