@@ -6,7 +6,8 @@ What is cartan's and what is SciPy's:
   ``_cartan._solve_bvp`` with ``max_refinements=0``), which also returns the relative RMS residual of
   every interval (SciPy's 5-point Lobatto estimate).
 * The outer loop is SciPy's, here in Python: an interval whose residual exceeds tol gets one node
-  in its middle (tol < r < 100 tol) or two at its thirds (r >= 100 tol); status 1 when that would
+  in its middle (tol < r < 100 tol) or two at its thirds (r >= 100 tol) (the rule and the
+  interpolation to the next mesh in C++: ``_cartan._scipy_refinement``); status 1 when that would
   exceed max_nodes (the mesh before refinement is returned), status 3 when the residuals are met
   but |bc| > bc_tol after iteration 10, status 2 on a singular Jacobian or a non-finite f or bc.
   So node counts follow SciPy's rule; they differ from SciPy's only where Newton's iterates
@@ -84,27 +85,6 @@ def _create_spline(y, yp, x, h):
     from scipy.interpolate import PPoly
 
     return PPoly(np.moveaxis(_spline_coefficients(y, yp, h), 1, 0), x, extrapolate=True, axis=1)
-
-
-def _spline_at(y, yp, x, h, t):
-    """The interpolant at the increasing points t of [x[0], x[-1]], by Horner's rule on the
-    interval of each point as PPoly evaluates it, without building the PPoly (the refinement loop
-    needs only the next mesh's guess)."""
-    c = _spline_coefficients(y, yp, h)
-    i = np.clip(np.searchsorted(x, t, side="right") - 1, 0, x.size - 2)
-    dx = t - x[i]
-    return ((c[0][:, i] * dx + c[1][:, i]) * dx + c[2][:, i]) * dx + c[3][:, i]
-
-
-def _modify_mesh(x, insert_1, insert_2):
-    """SciPy's modify_mesh: one node in the middle of the intervals insert_1, two at the thirds of
-    the intervals insert_2."""
-    return np.sort(np.hstack((
-        x,
-        0.5 * (x[insert_1] + x[insert_1 + 1]),
-        (2 * x[insert_2] + x[insert_2 + 1]) / 3,
-        (x[insert_2] + 2 * x[insert_2 + 1]) / 3,
-    )))
 
 
 def _print_iteration_header():
@@ -423,9 +403,9 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
             status = 2
             break
 
-        insert_1, = np.nonzero((rms_res > tol) & (rms_res < 100 * tol))
-        insert_2, = np.nonzero(rms_res >= 100 * tol)
-        nodes_added = insert_1.shape[0] + 2 * insert_2.shape[0]
+        # SciPy's rule (one node where tol < r < 100 tol, two where r >= 100 tol) and the
+        # interpolant on the next mesh, in C++ (numerics/scipy_refinement.hpp).
+        refined, refined_y, nodes_added = _cartan._scipy_refinement(x, to_real(y), to_real(f), rms_res, tol)
 
         if m + nodes_added > max_nodes:
             status = 1
@@ -437,8 +417,7 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
             _print_iteration_progress(iteration, max_rms_res, max_bc_res, m, nodes_added)
 
         if nodes_added > 0:
-            refined = _modify_mesh(x, insert_1, insert_2)
-            y = _spline_at(y, f, x, h, refined)
+            y = from_real(refined_y)
             x, h = refined, np.diff(refined)
         elif max_bc_res <= bc_tol:
             status = 0

@@ -15,6 +15,7 @@
 
 #include "bindings.hpp"
 #include "cartan/numerics/collocation.hpp"
+#include "cartan/numerics/scipy_refinement.hpp"
 #include "cartan/transported/collocation_solution.hpp"
 #include "python_models.hpp"
 
@@ -274,6 +275,16 @@ void bind_bvp(py::module_& m) {
   }, py::arg("fun"), py::arg("bc"), py::arg("x"), py::arg("y"), py::arg("p"), py::arg("fun_jac"), py::arg("bc_jac"),
      py::arg("tol"), py::arg("max_nodes"), py::arg("bc_tol"), py::arg("max_newton_iterations"),
      py::arg("max_refinements"), py::arg("fd_step"), py::arg("linear_solver"));
+
+  // SciPy's refinement rule (numerics/scipy_refinement.hpp): the next mesh, the interpolant there
+  // and the number of nodes added, from the solution (x, y, yp) and its interval residuals.
+  m.def("_scipy_refinement", [](const py::object& x, const py::object& y, const py::object& yp, const py::object& rms,
+                                double tol) {
+    const numerics::RefinedMesh r = numerics::scipy_refinement(
+        numerics::CubicHermite(dynamic_matrix(x, "x", 1), dynamic_matrix(y, "y", 2), dynamic_matrix(yp, "yp", 2)),
+        dynamic_matrix(rms, "rms", 1), tol);
+    return py::make_tuple(to_numpy(r.t), to_numpy(r.y), r.added);
+  }, py::arg("x"), py::arg("y"), py::arg("yp"), py::arg("rms"), py::arg("tol"));
 }
 
 }  // namespace cartan::python

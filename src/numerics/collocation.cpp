@@ -659,12 +659,14 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
 }
 
 /// The solve with the state dimension fixed at compile time where it is one of the transported
-/// systems' (6: H3 in closed form; 12, 24: the generic form on H3 and SO(3)), so that the
-/// per-interval blocks have fixed sizes; any other n at run time.
+/// systems' (6: H3 in closed form; 12, 24: the generic form on H3 and SO(3)) or 2 (second-order
+/// scalar problems, the commonest in SciPy-style use), so that the per-interval blocks have fixed
+/// sizes; any other n at run time.
 BvpResult dispatch(const BvpSystem& system, const VectorXd& t, const MatrixXd& y, const VectorXd& p,
                    const CollocationOptions& options, bool adapt) {
   validate_input(system, t, y, p, options);
   switch (system.n) {
+    case 2: return run<2>(system, t, y, p, options, adapt);
     case 6: return run<6>(system, t, y, p, options, adapt);
     case 12: return run<12>(system, t, y, p, options, adapt);
     case 24: return run<24>(system, t, y, p, options, adapt);

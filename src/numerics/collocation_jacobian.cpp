@@ -246,27 +246,34 @@ VectorXd BlockLU::solve_panels(const VectorXd& rhs) const {
   return x;
 }
 
+namespace {
+
+/// Calls f with the panels' compile-time shape (N, Q) = (n, n + k) where it is one of the fixed
+/// paths, (Dynamic, Dynamic) otherwise: 2 states with or without one parameter (the small systems
+/// of SciPy-style problems), 6 (H3 in closed form), 12 and 24 (the generic transported systems).
+template <class F>
+decltype(auto) with_panel_shape(int n, int q, F&& f) {
+  using I2 = std::integral_constant<int, 2>;
+  if (n == 2 && q == 2) return f(I2{}, I2{});
+  if (n == 2 && q == 3) return f(I2{}, std::integral_constant<int, 3>{});
+  if (n == 6 && q == 6) return f(std::integral_constant<int, 6>{}, std::integral_constant<int, 6>{});
+  if (n == 12 && q == 12) return f(std::integral_constant<int, 12>{}, std::integral_constant<int, 12>{});
+  if (n == 24 && q == 24) return f(std::integral_constant<int, 24>{}, std::integral_constant<int, 24>{});
+  return f(std::integral_constant<int, Dynamic>{}, std::integral_constant<int, Dynamic>{});
+}
+
+}  // namespace
+
 bool BlockLU::factorize(const CollocationJacobian& J) {
   n_ = J.n;
   k_ = J.k;
   steps_ = J.m - 1;
   error_.clear();
-  fixed_ = k_ == 0 && (n_ == 6 || n_ == 12 || n_ == 24) ? n_ : 0;
-  switch (fixed_) {
-    case 6: return factorize_panels<6, 6>(J);
-    case 12: return factorize_panels<12, 12>(J);
-    case 24: return factorize_panels<24, 24>(J);
-    default: return factorize_panels<Dynamic, Dynamic>(J);
-  }
+  return with_panel_shape(n_, n_ + k_, [&](auto N, auto Q) { return factorize_panels<decltype(N)::value, decltype(Q)::value>(J); });
 }
 
 VectorXd BlockLU::solve(const VectorXd& rhs) const {
-  switch (fixed_) {
-    case 6: return solve_panels<6, 6>(rhs);
-    case 12: return solve_panels<12, 12>(rhs);
-    case 24: return solve_panels<24, 24>(rhs);
-    default: return solve_panels<Dynamic, Dynamic>(rhs);
-  }
+  return with_panel_shape(n_, n_ + k_, [&](auto N, auto Q) { return solve_panels<decltype(N)::value, decltype(Q)::value>(rhs); });
 }
 
 }  // namespace cartan::numerics

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cartan/numerics/collocation.hpp"
+#include "cartan/numerics/scipy_refinement.hpp"
 
 namespace cartan::numerics {
 namespace {
@@ -283,6 +284,28 @@ TEST(Collocation, DenseOutputReproducesCubics) {
     EXPECT_NEAR(s.value(x)[0], cubic(x), 1e-13) << x;
     EXPECT_NEAR(s.derivative(x)[0], slope(x), 1e-13) << x;
   }
+}
+
+// SciPy's refinement rule (scipy_refinement.hpp) on a cubic, which its Hermite interpolant
+// reproduces: intervals with r <= tol, NaN, tol < r < 100 tol and r >= 100 tol get 0, 0, 1 (the
+// middle) and 2 nodes (the thirds); the old nodes keep their values exactly, the new ones are the
+// cubic to rounding (1e-13: values of order 1).
+TEST(Collocation, ScipyRefinementRule) {
+  const auto cubic = [](double t) { return 1 - 2 * t + 0.5 * t * t * t; };
+  const auto slope = [](double t) { return -2 + 1.5 * t * t; };
+  const VectorXd t{{-1.0, 0.2, 0.5, 2.0, 2.3}};
+  MatrixXd y(1, 5), yp(1, 5);
+  for (int i = 0; i < 5; ++i) y(0, i) = cubic(t[i]), yp(0, i) = slope(t[i]);
+  const double tol = 1e-3;
+  const VectorXd rms{{tol, std::nan(""), 99 * tol, 100 * tol}};
+  const RefinedMesh r = scipy_refinement(CubicHermite(t, y, yp), rms, tol);
+  const VectorXd expected{{-1.0, 0.2, 0.5, 1.25, 2.0, 2.1, 2.2, 2.3}};
+  EXPECT_EQ(r.added, 3);
+  ASSERT_EQ(r.t.size(), expected.size());
+  EXPECT_LE((r.t - expected).cwiseAbs().maxCoeff(), 1e-15);
+  for (Eigen::Index j = 0; j < r.t.size(); ++j) EXPECT_NEAR(r.y(0, j), cubic(r.t[j]), 1e-13) << r.t[j];
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(r.y(0, i < 3 ? i : (i == 3 ? 4 : 7)), y(0, i)) << i;
+  EXPECT_THROW(scipy_refinement(CubicHermite(t, y, yp), VectorXd::Zero(3), tol), std::invalid_argument);
 }
 
 // ---- Every failure status, provoked ----

@@ -51,9 +51,10 @@ class BlockLU {
   }
 
  private:
-  // The panels' shapes are compile-time constants where the block size is known (no parameters
-  // and n in kFixedStates, e.g. the six states of the closed-form H3 system): the same
-  // elimination, in the same order, on fixed-size panels. Other sizes take the runtime-size path.
+  // The panels' shapes are compile-time constants for a few (n, k) (collocation_jacobian.cpp:
+  // with_panel_shape, e.g. the six states of the closed-form H3 system, or two states and at most
+  // one parameter): the same elimination, in the same order, on fixed-size panels. Other sizes
+  // take the runtime-size path.
   template <int N, int Q>
   bool factorize_panels(const CollocationJacobian& jacobian);
   template <int N, int Q>
@@ -61,7 +62,6 @@ class BlockLU {
 
   int n_ = 0, k_ = 0;
   Eigen::Index steps_ = 0;
-  int fixed_ = 0;                  ///< the fixed-size path factorised (its n), 0 for the generic one
   /// The panels after elimination, one after the other (column-major; steps_ - 1 of 2n rows, the
   /// last n + q): multipliers (left n columns, below the diagonal), U (top n rows:
   /// current | next | border).

@@ -32,7 +32,34 @@ class CubicHermite {
 
   /// S(t) and/or S'(t) into preallocated vectors of size n (either may be null).
   void evaluate(double t, Eigen::VectorXd* value, Eigen::VectorXd* derivative) const {
-    const auto [i, s, h] = locate(t);
+    evaluate_at(locate(t), value, derivative);
+  }
+  /// S(t) by the cubic of interval i ([t_i, t_{i+1}], extended beyond it), without searching for
+  /// the interval (i in [0, m - 2]).
+  Eigen::VectorXd value_on(Eigen::Index i, double t) const {
+    Eigen::VectorXd out(y_.rows());
+    const double h = t_[i + 1] - t_[i];
+    evaluate_at({i, (t - t_[i]) / h, h}, &out, nullptr);
+    return out;
+  }
+
+  /// Values at several times, one column per time.
+  Eigen::MatrixXd values(const Eigen::VectorXd& times) const {
+    Eigen::MatrixXd out(y_.rows(), times.size());
+    for (Eigen::Index j = 0; j < times.size(); ++j) out.col(j) = value(times[j]);
+    return out;
+  }
+
+  const Eigen::VectorXd& nodes() const { return t_; }
+  const Eigen::MatrixXd& node_values() const { return y_; }
+
+ private:
+  struct Place {
+    Eigen::Index interval;
+    double s, h;
+  };
+  void evaluate_at(const Place& place, Eigen::VectorXd* value, Eigen::VectorXd* derivative) const {
+    const auto [i, s, h] = place;
     if (value) {
       const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
       const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
@@ -45,20 +72,6 @@ class CubicHermite {
     }
   }
 
-  /// Values at several times, one column per time.
-  Eigen::MatrixXd values(const Eigen::VectorXd& times) const {
-    Eigen::MatrixXd out(y_.rows(), times.size());
-    for (Eigen::Index j = 0; j < times.size(); ++j) out.col(j) = value(times[j]);
-    return out;
-  }
-
-  const Eigen::VectorXd& nodes() const { return t_; }
-
- private:
-  struct Place {
-    Eigen::Index interval;
-    double s, h;
-  };
   Place locate(double t) const {
     const Eigen::Index m = t_.size();
     const auto* begin = t_.data();
