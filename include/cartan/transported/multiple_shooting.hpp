@@ -251,8 +251,7 @@ double jacobian_conditioning(MultipleShootingSystem<G, L>& system, const Eigen::
   Eigen::VectorXd r;
   Eigen::MatrixXd jac;
   if (!system.evaluate(x, r, &jac)) return std::nan("");
-  const Eigen::VectorXd sigma = Eigen::BDCSVD<Eigen::MatrixXd>(jac).singularValues();
-  return sigma(sigma.size() - 1) / sigma(0);
+  return numerics::singular_value_ratio(jac);
 }
 
 }  // namespace detail
