@@ -63,6 +63,14 @@ concept ParallelTorsionCurvature = ManifoldWithConnection<M> && requires(const M
   { manifold.has_parallel_torsion_and_curvature() } -> std::same_as<bool>;
 };
 
+/// Instances whose points and vectors are the coordinates of one chart (Euclidean<m>, Chart<m>):
+/// Point = Vector = R^m, constant fields are the coordinate fields (frame_bracket = 0) and
+/// `christoffel` gives the coordinate Christoffel symbols Gamma^k_ij x^i y^j. Coordinate-wise
+/// integrators (general/hamilton.hpp) and the bundles of manifolds/bundle.hpp need no more.
+template <class M>
+concept ChartWithConnection =
+    ManifoldWithConnection<M> && M::kAmbientDim == M::kDim && std::same_as<typename M::Point, typename M::Vector>;
+
 /// The metric at q as an optional (empty where the instance has none or is not a MetricManifold).
 template <class M>
 std::optional<typename M::Operator> metric_at(const M& manifold, const typename M::Point& q) {
