@@ -11,6 +11,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev
   pybind11-dev python3-dev
   python3-numpy python3-scipy python3-matplotlib python3-pytest
+  python3-distributed
   clang libclang-rt-14-dev
 )
 

@@ -25,6 +25,9 @@ Command add_solve_command(CLI::App& tool);
 /// `cartan sweep` (sweep_cli.cpp).
 Command add_sweep_command(CLI::App& tool);
 
+/// `cartan merge` (merge_cli.cpp).
+Command add_merge_command(CLI::App& tool);
+
 /// `cartan verify` (verify_cli.cpp).
 Command add_verify_command(CLI::App& tool);
 

@@ -8,7 +8,8 @@ int main(int argc, char** argv) {
   using namespace cartan::cli;
   CLI::App tool{"cartan: geometric mechanics on Lie groups with invariant connections"};
   tool.require_subcommand(1);
-  const std::vector<Command> commands = {add_solve_command(tool), add_sweep_command(tool), add_verify_command(tool)};
+  const std::vector<Command> commands = {add_solve_command(tool), add_sweep_command(tool), add_merge_command(tool),
+                                         add_verify_command(tool)};
 
   try {
     tool.parse(argc, argv);

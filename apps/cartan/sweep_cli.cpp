@@ -1,10 +1,10 @@
 // `cartan sweep`: the problem options of `cartan solve` (the base problem), a grid over lambda
 // and/or the endpoint (sweep_grid.cpp), solved on a pool of threads (sweep_run.cpp) into one
-// JSON or CSV table (sweep_table.cpp).
+// JSON or CSV table (sweep_table.cpp); with --shard K/M only the K-th of M interleaved parts
+// (sweep_grid.hpp, Shard), whose tables `cartan merge` joins (sweep_merge.cpp).
 #include <algorithm>
 #include <chrono>
 #include <fstream>
-#include <iostream>
 #include <memory>
 #include <thread>
 #include <unistd.h>
@@ -26,7 +26,7 @@ struct SweepFlags {
   ProblemFlags problem;
   GridFlags grid;
   unsigned jobs = std::max(std::thread::hardware_concurrency(), 1u);
-  std::string format = "json", output;
+  std::string format = "json", output, shard;
   bool trajectories = false, quiet = false;
 };
 
@@ -44,23 +44,17 @@ bool solve_into(std::size_t index, const GridPoint& point, bool trajectories, nl
   return row_failed(row);
 }
 
-void write_table(const std::string& text, const std::string& path) {
-  if (path.empty()) {
-    std::cout << text << std::flush;
-    return;
-  }
-  std::ofstream out(path);
-  if (!out) throw std::invalid_argument("cartan sweep: --output = " + path + " cannot be written");
-  out << text;
-  if (!out) throw std::invalid_argument("cartan sweep: --output = " + path + " could not be written completely");
-}
-
 int run_sweep(const CLI::App& command, SweepFlags& flags) {
+  const Shard shard = command.count("--shard") == 0 ? Shard{} : parse_shard(flags.shard);
   std::vector<GridPoint> points;
   try {
     points = build_grid(problem_from(command, flags.problem), flags.grid);
   } catch (const std::invalid_argument& e) {
     throw retitled(e, "cartan sweep");
+  }
+  std::vector<std::size_t> mine;  // the grid indices of this shard
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (shard.contains(i)) mine.push_back(i);
   }
   if (!flags.output.empty() && !std::ofstream(flags.output, std::ios::app)) {  // before hours of solving
     throw std::invalid_argument("cartan sweep: --output = " + flags.output + " cannot be written");
@@ -68,15 +62,23 @@ int run_sweep(const CLI::App& command, SweepFlags& flags) {
 
   Eigen::initParallel();  // Eigen's documented step before calling it from several threads
   const auto start = std::chrono::steady_clock::now();
-  std::vector<nlohmann::json> rows(points.size());
-  ProgressReport report(points.size(), isatty(STDERR_FILENO) != 0);
+  std::vector<nlohmann::json> rows(mine.size());
+  ProgressReport report(mine.size(), isatty(STDERR_FILENO) != 0);
   run_in_parallel(
-      points.size(), flags.jobs,
-      [&](std::size_t i) { return solve_into(i, points[i], flags.trajectories, rows[i]); },
+      mine.size(), flags.jobs,
+      [&](std::size_t r) { return solve_into(mine[r], points[mine[r]], flags.trajectories, rows[r]); },
       flags.quiet ? nullptr : &report);
   const double wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  write_table(flags.format == "csv" ? table_csv(rows) : table_json(rows, wall_time_s).dump() + "\n", flags.output);
+  std::string text;
+  if (flags.format == "csv") {
+    text = table_csv(rows);
+  } else {
+    nlohmann::json table = table_json(rows, wall_time_s);
+    if (!shard.whole()) table["shard"] = shard_json(shard, points.size());
+    text = table.dump() + "\n";
+  }
+  write_table(text, flags.output, "cartan sweep");
   const bool any_failed = std::any_of(rows.begin(), rows.end(), row_failed);
   return any_failed ? kExitFailed : kExitConverged;
 }
@@ -94,6 +96,9 @@ Command add_sweep_command(CLI::App& tool) {
       "  cartan sweep --model oscillator --T 3 --N 300 --a0=-1,-1,-1 --lambdas 0,0.5,1 --aT-list \"1,0,0;0,1,0\" --format csv\n"
       "  cartan sweep --group heisenberg --model oscillator --T 1 --N 200 --gT-list \"1,0.5,0.8;0,1,0\" --jobs 2\n"
       "  cartan sweep --problem base.json --grid points.json --output table.json   # points.json: [{\"lambda\": 0}, {\"T\": 2}]\n"
+      "Across machines: each solves one shard, `cartan merge` joins the tables into the unsharded one:\n"
+      "  cartan sweep ... --shard 1/3 --format csv --output part1.csv   # points 0, 3, 6, ...\n"
+      "  cartan merge part1.csv part2.csv part3.csv > all.csv\n"
       "Exit codes: 0 every point converged, 1 some point failed (the table is still written), 2 bad input.");
   auto flags = std::make_shared<SweepFlags>();
   add_problem_options(*sweep, flags->problem);
@@ -112,6 +117,9 @@ Command add_sweep_command(CLI::App& tool) {
       ->check(CLI::Range(1u, 4096u));
   sweep->add_option("--format", flags->format, "json | csv (default json)")->check(CLI::IsMember({"json", "csv"}));
   sweep->add_option("--output", flags->output, "table file (default stdout)");
+  sweep->add_option("--shard", flags->shard,
+                    "K/M: solve only the K-th of M interleaved parts of the grid, the points with index mod M = K - 1 "
+                    "(rows keep their grid index; `cartan merge` joins the parts)");
   sweep->add_flag("--trajectories", flags->trajectories, "include t, g, v in each JSON row (off: the table stays small)");
   sweep->add_flag("--quiet", flags->quiet, "no progress report on stderr");
   return {sweep, [sweep, flags] { return run_sweep(*sweep, *flags); }};

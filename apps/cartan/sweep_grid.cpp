@@ -1,6 +1,7 @@
 #include "sweep_grid.hpp"
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "cartan/errors.hpp"
@@ -119,7 +120,27 @@ std::vector<GridPoint> flag_points(const ProblemSpec& base, const GridFlags& fla
   return points;
 }
 
+/// A whole number in [1, kMaxGridPoints] written with digits only, or nothing.
+std::optional<std::size_t> count_of(const std::string& text) {
+  if (text.empty() || text.size() > 7 || text.find_first_not_of("0123456789") != std::string::npos) return {};
+  const std::size_t n = std::stoul(text);
+  if (n < 1 || n > kMaxGridPoints) return {};
+  return n;
+}
+
 }  // namespace
+
+Shard parse_shard(const std::string& text) {
+  const auto parts = split(text, '/');
+  const auto k = parts.size() == 2 ? count_of(parts[0]) : std::nullopt;
+  const auto m = parts.size() == 2 ? count_of(parts[1]) : std::nullopt;
+  if (!k || !m || *k > *m) {
+    throw_invalid(kWhere, "--shard", quote_input(text),
+                  "must be K/M, two integers with 1 <= K <= M <= " + std::to_string(kMaxGridPoints) +
+                      " (the K-th of M shards)");
+  }
+  return {*k, *m};
+}
 
 std::invalid_argument retitled(const std::invalid_argument& error, const std::string& where) {
   const std::string message = error.what();

@@ -34,6 +34,19 @@ inline constexpr std::size_t kMaxGridPoints = 1'000'000;
 /// bad flag or file, no grid flag at all, or a point that does not validate (naming its index).
 std::vector<GridPoint> build_grid(const ProblemSpec& base, const GridFlags& flags);
 
+/// The part of a grid one machine solves (`--shard K/M`): the points whose index i has
+/// i mod M = K - 1 (interleaved, so that every shard gets points from all over the grid and
+/// neighbours in lambda of similar cost are spread out; every point is in exactly one shard).
+struct Shard {
+  std::size_t k = 1, m = 1;  ///< 1 <= k <= m; 1/1 is the whole grid
+  bool contains(std::size_t index) const { return index % m == k - 1; }
+  bool whole() const { return m == 1; }
+};
+
+/// Parses "K/M" (two integers, 1 <= K <= M <= kMaxGridPoints); throws std::invalid_argument
+/// "cartan sweep: --shard = "..." ..." naming the text otherwise.
+Shard parse_shard(const std::string& text);
+
 /// Rewrites a message of the shared problem parser ("cartan solve: ...") to start with `where`;
 /// a message that already starts with "cartan sweep" is kept, any other gets `where` in front.
 std::invalid_argument retitled(const std::invalid_argument& error, const std::string& where);

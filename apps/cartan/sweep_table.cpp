@@ -1,5 +1,7 @@
 #include "sweep_table.hpp"
 
+#include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include "cartan/errors.hpp"
@@ -87,6 +89,10 @@ nlohmann::json table_json(const std::vector<nlohmann::json>& rows, double wall_t
           {"rows", rows}, {"wall_time_s", wall_time_s}};
 }
 
+nlohmann::json shard_json(const Shard& shard, std::size_t grid_points) {
+  return {{"k", shard.k}, {"m", shard.m}, {"grid_points", grid_points}};
+}
+
 std::string table_csv(const std::vector<nlohmann::json>& rows) {
   std::ostringstream out;
   out << "index,lambda,endpoint_key,endpoint,status,message,method,branch,terminal_error,iterations_outer,"
@@ -104,6 +110,17 @@ std::string table_csv(const std::vector<nlohmann::json>& rows) {
         << csv_element(v0, 2) << '\n';
   }
   return out.str();
+}
+
+void write_table(const std::string& text, const std::string& path, const std::string& where) {
+  if (path.empty()) {
+    std::cout << text << std::flush;
+    return;
+  }
+  std::ofstream out(path);
+  if (!out) throw std::invalid_argument(where + ": --output = " + path + " cannot be written");
+  out << text;
+  if (!out) throw std::invalid_argument(where + ": --output = " + path + " could not be written completely");
 }
 
 }  // namespace cartan::cli

@@ -25,7 +25,8 @@ Integrators
 The transported-velocity boundary-value problem (eq:reduced-system)
     :func:`solve` with ``method`` one of :data:`METHODS` (shooting solvers of the discrete scheme,
     or "collocation" of the continuous problem); returns a :class:`SolveResult`, which
-    :func:`verify` checks independently of the solver (a :class:`VerifyReport`).
+    :func:`verify` checks independently of the solver (a :class:`VerifyReport`); :func:`sweep`
+    solves many problems on local threads, processes or a Dask cluster, results in order.
 Manifolds with a connection (docs/general-connections.md)
     ``Sphere(), HyperbolicPlane(), Euclidean(christoffel, dim=), GroupManifold(group, connection,
     lam=, metric=, alpha=)`` and your own, ``Chart(christoffel, dim=, metric=)`` (Christoffel symbols
@@ -51,6 +52,7 @@ import numpy as np
 
 from . import _bvp, _cartan
 from ._bvp import solve_bvp  # noqa: F401  (re-exported)
+from ._sweep import sweep  # noqa: F401  (re-exported)
 from ._cartan import (  # noqa: F401  (re-exported)
     SE2,
     Chart,
@@ -88,7 +90,7 @@ __all__ = [
     "RigidBody", "SO3Oscillator", "SpatialRigidBody", "H3Oscillator", "SE2FreeBody", "SE3FreeBody",
     "RigidBodyHamiltonian", "SO3OscillatorHamiltonian", "SpatialRigidBodyHamiltonian", "H3OscillatorHamiltonian",
     "SE2FreeBodyHamiltonian", "SE3FreeBodyHamiltonian",
-    "Trajectory", "SolveResult", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve",
+    "Trajectory", "SolveResult", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve", "sweep",
     "VerifyReport", "verify",
     "BvpResult", "solve_bvp",
     "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "Chart", "MANIFOLDS", "GeneralSolveResult", "solve_general",
@@ -244,18 +246,28 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="no
     v0, xi0: guesses (default: the geodesic velocity log(g0^-1 gT)/T and 0); guess: a whole trajectory
     (any object with t, g, v, xi, e.g. a previous SolveResult), as scipy.integrate.solve_bvp takes y.
     progress: a callable (stage, iteration, residual) called once per iteration.
-    Ctrl-C raises KeyboardInterrupt within one iteration; invalid arguments raise ValueError.
+    Ctrl-C raises KeyboardInterrupt within one iteration; invalid arguments raise ValueError before
+    any work. Solves of built-in models run without the GIL (so that threads solve in parallel).
+    Many problems at once, on threads, processes or a cluster: :func:`sweep`.
     """
+    return SolveResult(**_transported("_solve", locals()))
+
+
+def _transported(entry, arguments):
+    """`<Group>.<entry>` ("_solve", or "_validate": every input error of _solve, no solve) on the
+    keyword arguments of :func:`solve` given as a dict."""
+    lagrangian = arguments["lagrangian"]
     if getattr(lagrangian, "side", "left") != "left":
         raise ValueError(f"cartan.solve: lagrangian = {type(lagrangian).__name__} is right-reduced; "
                          "the transported-velocity problem needs a left-reduced Lagrangian")
-    grp = _group_of(lagrangian, group, "solve")
+    grp = _group_of(lagrangian, arguments["group"], "solve")
     request = _cartan._SolveRequest()
-    request.method, request.continuation, request.order, request.tol = method, continuation, order, tol
-    request.max_iterations, request.segments, request.lambda_start = max_iterations, segments, lambda_start
-    request.samples, request.max_nodes = samples, max_nodes
-    d = grp._solve(lagrangian, lam, T, N, g0, gT, request, v0, xi0, guess, progress)
-    return SolveResult(**d)
+    for name in ("method", "continuation", "order", "tol", "max_iterations", "segments", "lambda_start", "samples",
+                 "max_nodes"):
+        setattr(request, name, arguments[name])
+    a = arguments
+    return getattr(grp, entry)(lagrangian, a["lam"], a["T"], a["N"], a["g0"], a["gT"], request, a["v0"], a["xi0"],
+                               a["guess"], a["progress"])
 
 
 @dataclass

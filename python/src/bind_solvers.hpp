@@ -123,30 +123,57 @@ py::dict solution_dict(const transported::TransportedSolution<G>& s, const std::
   return d;
 }
 
+/// The arguments of `<Group>._solve` converted for the library (everything but the model).
+template <groups::LieGroup G>
+struct SolveCall {
+  transported::SolveOptions options;
+  transported::SolveGuess<G> guess;
+  groups::ElementOf<G> g0, gT;
+
+  SolveCall(const Args<G>& a, const py::object& g0_, const py::object& gT_, const SolveRequest& request,
+            const py::object& v0, const py::object& xi0, const py::object& start, const py::object& progress)
+      : options(request.options()),
+        g0(g0_.is_none() ? G::identity() : a.element(g0_, "solve", "g0")),
+        gT(a.element(gT_, "solve", "gT")) {
+    options.monitor = python_monitor(progress);
+    if (!v0.is_none()) guess.v0 = a.tangent(v0, "solve", "v0");
+    if (!xi0.is_none()) guess.xi0 = a.tangent(xi0, "solve", "xi0");
+    if (!start.is_none()) guess.trajectory = trajectory_of<G>(start, a, "solve", "guess", false);
+  }
+};
+
 /// `<Group>._solve(lagrangian, lam, T, N, g0, gT, request, v0, xi0, guess, progress)` for the
-/// listed built-in models and any Python-defined Lagrangian on G.
+/// listed built-in models and any Python-defined Lagrangian on G, and `<Group>._validate(...)`
+/// with the same arguments: the library's validate (every input error _solve would raise), no solve.
 template <groups::LieGroup G, class... Models>
 void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...>) {
   const Args<G> a{name};
   group.attr("methods") = enum_words<transported::Method>();
-  group.def_static("_solve", [a](const py::object& model, double lambda, double T, int N, const py::object& g0,
-                                 const py::object& gT, const SolveRequest& request, const py::object& v0,
-                                 const py::object& xi0, const py::object& guess, const py::object& progress) {
-    transported::SolveOptions options = request.options();
-    options.monitor = python_monitor(progress);
-    transported::SolveGuess<G> start;
-    if (!v0.is_none()) start.v0 = a.tangent(v0, "solve", "v0");
-    if (!xi0.is_none()) start.xi0 = a.tangent(xi0, "solve", "xi0");
-    if (!guess.is_none()) start.trajectory = trajectory_of<G>(guess, a, "solve", "guess", false);
-    const groups::ElementOf<G> first = g0.is_none() ? G::identity() : a.element(g0, "solve", "g0");
-    const groups::ElementOf<G> last = a.element(gT, "solve", "gT");
-    const transported::TransportedSolution<G> s = visit_model<PythonLagrangian<G>, Models...>(model, [&](const auto& l) {
-      using L = std::decay_t<decltype(l)>;
-      return transported::solve(transported::TransportedProblem<G, L>{l, lambda, T, N, first, last}, options, start);
-    });
-    return solution_dict(s, a.group, lambda, T, N, first, last, options.tol);
-  }, py::arg("lagrangian"), py::arg("lam"), py::arg("T"), py::arg("N"), py::arg("g0"), py::arg("gT"),
-     py::arg("request"), py::arg("v0"), py::arg("xi0"), py::arg("guess"), py::arg("progress"));
+  // `<Group>.<entry>(lagrangian, lam, T, N, g0, gT, request, v0, xi0, guess, progress)`: run(problem,
+  // call) for the problem of the model, built-in (then without the GIL) or Python-defined, and
+  // reply(its value, call, lambda, T, N) with the GIL.
+  const auto def_entry = [&](const char* entry, const auto& run, const auto& reply) {
+    group.def_static(entry, [a, run, reply](const py::object& model, double lambda, double T, int N,
+                                            const py::object& g0, const py::object& gT, const SolveRequest& request,
+                                            const py::object& v0, const py::object& xi0, const py::object& guess,
+                                            const py::object& progress) {
+      const SolveCall<G> call(a, g0, gT, request, v0, xi0, guess, progress);
+      return reply(visit_model<PythonLagrangian<G>, Models...>(model, [&](const auto& l) {
+        using L = std::decay_t<decltype(l)>;
+        return run(transported::TransportedProblem<G, L>{l, lambda, T, N, call.g0, call.gT}, call);
+      }), call, lambda, T, N);
+    }, py::arg("lagrangian"), py::arg("lam"), py::arg("T"), py::arg("N"), py::arg("g0"), py::arg("gT"),
+       py::arg("request"), py::arg("v0"), py::arg("xi0"), py::arg("guess"), py::arg("progress"));
+  };
+  def_entry("_solve", [](const auto& problem, const SolveCall<G>& call) {
+    return transported::solve(problem, call.options, call.guess);
+  }, [a](const transported::TransportedSolution<G>& s, const SolveCall<G>& call, double lambda, double T, int N) {
+    return solution_dict(s, a.group, lambda, T, N, call.g0, call.gT, call.options.tol);
+  });
+  def_entry("_validate", [](const auto& problem, const SolveCall<G>& call) {
+    transported::validate(problem, call.options, call.guess);
+    return true;  // visit_model returns a value
+  }, [](bool, const SolveCall<G>&, double, double, int) { return py::none(); });
   group.def_static("_verify", [a](const py::object& model, const py::object& result, double lambda, double T,
                                   const py::object& g0, const py::object& gT, int order, double tol,
                                   const std::string& status) {

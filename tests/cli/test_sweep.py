@@ -209,3 +209,132 @@ def test_bad_input_exit_2_naming_the_point(tmp_path, args, message):
     assert result.returncode == 2, result.stderr + result.stdout[:300]
     assert result.stdout == ""  # nothing solved, nothing written
     assert len(result.stderr.strip().splitlines()) == 1 and message in result.stderr, result.stderr
+
+
+# --shard K/M and `cartan merge`: the shards' tables merged are the unsharded table, byte for byte
+# but for the timings (the solve_time_s column, and wall_time_s of a JSON table).
+SHARD_GRID = [*SO3_BASE, "--lambda-range", "0:1:4", "--aT-list", "1,0.2,0.1;0,1,0", "--quiet"]  # 8 points
+
+
+def without_csv_timing(text):
+    """The records without the solve_time_s column; the rest compared as text is byte for byte."""
+    header, *records = list(csv.reader(io.StringIO(text)))
+    column = header.index("solve_time_s")
+    return [[f for k, f in enumerate(record) if k != column] for record in [header, *records]]
+
+
+def with_timing_of(text, timed):
+    """`text` (a CSV table) with the solve_time_s fields of `timed`, as bytes."""
+    column = next(csv.reader(io.StringIO(text))).index("solve_time_s")
+    rows, times = list(csv.reader(io.StringIO(text))), list(csv.reader(io.StringIO(timed)))
+    for row, other in zip(rows, times):
+        row[column] = other[column]
+    out = io.StringIO()
+    csv.writer(out, lineterminator="\n").writerows(rows)
+    return out.getvalue()
+
+
+def json_without_timing(text):
+    table = json.loads(text)
+    table.pop("wall_time_s")
+    table["rows"] = [without_timing(row) for row in table["rows"]]
+    return table
+
+
+def shard_files(tmp_path, fmt, m=3):
+    paths = []
+    for k in range(1, m + 1):
+        path = tmp_path / f"part{k}.{fmt}"
+        result = run("sweep", *SHARD_GRID, "--format", fmt, "--shard", f"{k}/{m}", "--output", str(path))
+        assert result.returncode == 0, result.stderr
+        paths.append(str(path))
+    return paths
+
+
+def test_csv_shards_merged_are_the_unsharded_table(tmp_path):
+    whole = run("sweep", *SHARD_GRID, "--format", "csv")
+    assert whole.returncode == 0, whole.stderr
+    paths = shard_files(tmp_path, "csv")
+    part2 = list(csv.DictReader(open(paths[1])))
+    assert [int(line["index"]) for line in part2] == [1, 4, 7]  # interleaved: index mod 3 = 2 - 1
+    merged = run("merge", paths[2], paths[0], paths[1])  # any order of the files
+    assert merged.returncode == 0 and merged.stderr == "", merged.stderr
+    assert without_csv_timing(merged.stdout) == without_csv_timing(whole.stdout)
+    assert with_timing_of(merged.stdout, whole.stdout) == with_timing_of(whole.stdout, whole.stdout)
+    assert len(without_csv_timing(merged.stdout)) == 9
+    out = tmp_path / "all.csv"
+    to_file = run("merge", "--points", "8", *paths, "--output", str(out))
+    assert to_file.returncode == 0 and to_file.stdout == "" and out.read_text() == merged.stdout
+
+
+def test_json_shards_merged_are_the_unsharded_table(tmp_path):
+    whole = run("sweep", *SHARD_GRID)
+    assert whole.returncode == 0, whole.stderr
+    paths = shard_files(tmp_path, "json")
+    part3 = json.loads(open(paths[2]).read())
+    assert part3["shard"] == {"k": 3, "m": 3, "grid_points": 8} and part3["points"] == 2
+    assert [row["index"] for row in part3["rows"]] == [2, 5]
+    merged = run("merge", *paths)
+    assert merged.returncode == 0, merged.stderr
+    assert json_without_timing(merged.stdout) == json_without_timing(whole.stdout)
+    assert "shard" not in json.loads(merged.stdout)
+    # Byte for byte once the timings are set equal: same keys, order and number formatting.
+    timings = json.loads(whole.stdout)
+    again = json.loads(merged.stdout)
+    again["wall_time_s"] = timings["wall_time_s"]
+    for row, timed in zip(again["rows"], timings["rows"]):
+        row["solve_time_s"] = timed["solve_time_s"]
+    assert json.dumps(again) == json.dumps(timings)
+
+
+def test_more_shards_than_points(tmp_path):
+    paths = []
+    for k in (1, 2, 3):  # a grid of 2 points: shard 3/3 is empty
+        path = tmp_path / f"p{k}.json"
+        result = run("sweep", *SO3_BASE, "--aT", "1,0.2,0.1", "--lambdas", "0,1", "--quiet", "--shard", f"{k}/3",
+                     "--output", str(path))
+        assert result.returncode == 0, result.stderr
+        paths.append(str(path))
+    assert json.loads(open(paths[2]).read())["rows"] == []
+    merged = run("merge", *paths)
+    assert merged.returncode == 0, merged.stderr
+    assert [row["index"] for row in json.loads(merged.stdout)["rows"]] == [0, 1]
+    missing = run("merge", *paths[:2])  # the empty shard is still a shard of the grid
+    assert missing.returncode == 2 and "cartan merge: shard = 3/3 is missing" in missing.stderr
+
+
+@pytest.mark.parametrize("spec", ["0/3", "4/3", "1/0", "3", "1/3/3", "a/3", "-1/3", "1/2000000", " 1/3", "1.0/3", ""])
+def test_bad_shard_exits_2_naming_it(spec):
+    result = run("sweep", *SO3_BASE, "--aT", "1,0.2,0.1", "--lambdas", "0,1", "--shard", spec)
+    assert result.returncode == 2 and result.stdout == ""
+    assert result.stderr == f'cartan sweep: --shard = "{spec}" must be K/M, two integers with 1 <= K <= M <= 1000000 (the K-th of M shards)\n'
+
+
+def test_merge_rejects_tables_that_are_not_one_grid(tmp_path):
+    csvs = shard_files(tmp_path, "csv")
+    jsons = shard_files(tmp_path, "json")
+    other = tmp_path / "other.csv"
+    other.write_text(open(csvs[0]).read().replace("index,lambda,", "index,lam,", 1))
+    garbage = tmp_path / "garbage.csv"
+    garbage.write_text("hello\n")
+    shard_of_4 = tmp_path / "of4.json"
+    assert run("sweep", *SHARD_GRID, "--shard", "1/4", "--output", str(shard_of_4)).returncode == 0
+    cases = [
+        ([csvs[0], csvs[1]], "cartan merge: grid index = 2 is missing: 2 of 8 points are in none of the tables"),
+        (["--points", "9", *csvs], "cartan merge: grid index = 8 is missing: 1 of 9 points"),
+        (["--points", "7", *csvs], "cartan merge: grid index = 7 (in "),
+        ([*csvs, csvs[1]], "cartan merge: grid index = 1 appears twice (in "),
+        ([csvs[0], str(other), csvs[2]], f"cartan merge: table = {other} has another CSV header than {csvs[0]}"),
+        ([str(garbage)], f"cartan merge: table = {garbage} is not a table of cartan sweep"),
+        ([csvs[0], jsons[1]], f"cartan merge: table = {jsons[1]} is in another format (JSON or CSV) than {csvs[0]}"),
+        ([jsons[0], jsons[2]], "cartan merge: shard = 2/3 is missing"),
+        ([jsons[0], jsons[1], jsons[1], jsons[2]], "cartan merge: shard = 2/3 appears twice ("),
+        ([*jsons, str(shard_of_4)], f"cartan merge: table = {shard_of_4} is shard 1/4 of a grid of 8 points; "),
+        (["--points", "9", *jsons], "cartan merge: --points = 9 disagrees with the shards' grid of 8 points"),
+        ([str(tmp_path / "absent.csv")], "cannot be opened"),
+        ([], "tables is required"),
+    ]
+    for args, message in cases:
+        result = run("merge", *args)
+        assert result.returncode == 2 and result.stdout == "", (args, result.stderr)
+        assert message in result.stderr and result.stderr.count("\n") == 1, (args, result.stderr)

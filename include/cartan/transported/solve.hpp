@@ -109,31 +109,59 @@ void complete(const TransportedProblem<G, L>& problem, TransportedSolution<G>& s
   s.solve_time_s = seconds_since(start);
 }
 
+/// Collocation needs mu = I v with a constant inertia (a NaturalLagrangian).
+template <class L>
+inline constexpr bool kNatural = !std::is_void_v<typename NaturalPotentialOf<L>::type>;
+
+/// The input errors that depend on the method: the guesses and continuations it takes, and
+/// collocation's need for a natural Lagrangian.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-TransportedSolution<G> collocation(const TransportedProblem<G, L>& problem, const SolveOptions& options,
-                                   const SolveGuess<G>& guess, int samples) {
-  using V = typename NaturalPotentialOf<L>::type;
-  if constexpr (std::is_void_v<V>) {
-    throw_invalid("solve", "method", "collocation",
-                  "needs a natural Lagrangian (mu = I v with a constant inertia), such as the built-in "
-                  "models; the Legendre map of this one may depend on g");
-  } else {
-    const SolveMonitor stage = options.monitor.stage("collocation");
-    const numerics::CollocationOptions c{.tol = options.tol,
-                                    .max_nodes = options.max_nodes.value_or(kTransportedMaxNodes),
-                                    .max_newton_iterations = options.max_iterations,
-                                    .monitor = &stage};
-    if constexpr (std::is_same_v<G, groups::Heisenberg>) {
-      if (options.method == Method::Collocation && (guess.trajectory || options.continuation != Continuation::None)) {
+void check_method_inputs(const SolveOptions& options, const SolveGuess<G>& guess) {
+  switch (options.method) {
+    case Method::Shooting:
+      if (options.continuation == Continuation::Lambda && !guess.empty()) {
+        throw std::invalid_argument(
+            "solve: continuation lambda starts from the solution at lambda_start and takes no guess (v0, xi0 "
+            "or trajectory); use continuation none or T with a guess");
+      }
+      break;
+    case Method::TwoLevel:
+      if (guess.xi0) throw std::invalid_argument("solve: method two-level takes a v0 guess, not xi0 (xi starts at 0)");
+      break;
+    case Method::Collocation:
+      if (guess.v0 || guess.xi0) throw std::invalid_argument("solve: method collocation takes a trajectory guess, not v0/xi0");
+      if constexpr (!kNatural<L>) {
+        throw_invalid("solve", "method", "collocation",
+                      "needs a natural Lagrangian (mu = I v with a constant inertia), such as the built-in "
+                      "models; the Legendre map of this one may depend on g");
+      }
+      if (std::is_same_v<G, groups::Heisenberg> && (guess.trajectory || options.continuation != Continuation::None)) {
         throw std::invalid_argument(
             "solve: method collocation on heisenberg takes no trajectory guess and no continuation (the "
             "closed-form collocation of H3 starts from the straight line in (a, b, c))");
       }
-      return solve_heisenberg_transported(problem, c, samples);
-    } else {
-      return solve_transported_by_collocation(problem, c, samples, options.continuation,
-                                                   guess.trajectory ? &*guess.trajectory : nullptr);
-    }
+      break;
+    case Method::Auto:
+    case Method::MultipleShooting: break;
+  }
+}
+
+/// The continuous problem by collocation (a natural Lagrangian; on H3 from the straight line, so
+/// a trajectory guess and the continuation are not used there).
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+  requires kNatural<L>
+TransportedSolution<G> collocation(const TransportedProblem<G, L>& problem, const SolveOptions& options,
+                                   const SolveGuess<G>& guess, int samples) {
+  const SolveMonitor stage = options.monitor.stage("collocation");
+  const numerics::CollocationOptions c{.tol = options.tol,
+                                       .max_nodes = options.max_nodes.value_or(kTransportedMaxNodes),
+                                       .max_newton_iterations = options.max_iterations,
+                                       .monitor = &stage};
+  if constexpr (std::is_same_v<G, groups::Heisenberg>) {
+    return solve_heisenberg_transported(problem, c, samples);
+  } else {
+    return solve_transported_by_collocation(problem, c, samples, options.continuation,
+                                            guess.trajectory ? &*guess.trajectory : nullptr);
   }
 }
 
@@ -148,11 +176,6 @@ TransportedSolution<G> shooting(const TransportedProblem<G, L>& problem, const S
   switch (options.continuation) {
     case Continuation::T: return solve_continuation_in_T(problem, c, v0, xi0, failed_direct);
     case Continuation::Lambda:
-      if (!guess.empty() && options.method == Method::Shooting) {
-        throw std::invalid_argument(
-            "solve: continuation lambda starts from the solution at lambda_start and takes no guess (v0, xi0 "
-            "or trajectory); use continuation none or T with a guess");
-      }
       return solve_continuation_in_lambda(problem, options.lambda_start.value_or(0.0), c);
     case Continuation::None: break;
   }
@@ -236,7 +259,7 @@ TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const S
   }
   direct.lambda_start.reset();
   // 4. Collocation of the continuous problem, then the discrete scheme from its solution.
-  if constexpr (!std::is_void_v<typename NaturalPotentialOf<L>::type>) {
+  if constexpr (kNatural<L>) {
     if (!stopped()) {
       SolveOptions c = options;
       c.method = Method::Collocation;
@@ -271,15 +294,23 @@ TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const S
 
 }  // namespace detail
 
-/// Solves `problem` as `options` say (header comment). Throws std::invalid_argument for a bad
-/// problem, options or guess; numerical failures are statuses.
+/// Throws std::invalid_argument for every problem, options and guess that solve() rejects, and
+/// does no other work (a sweep checks all its problems before it solves any).
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const SolveOptions& options = {},
-                             const SolveGuess<G>& guess = {}) {
+void validate(const TransportedProblem<G, L>& problem, const SolveOptions& options = {}, const SolveGuess<G>& guess = {}) {
   problem.validate();
   options.validate();
   guess.validate(problem.T);
   detail::check_legendre_inverse(problem);
+  detail::check_method_inputs<G, L>(options, guess);
+}
+
+/// Solves `problem` as `options` say (header comment). Throws std::invalid_argument for a bad
+/// problem, options or guess (validate), before any work; numerical failures are statuses.
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const SolveOptions& options = {},
+                             const SolveGuess<G>& guess = {}) {
+  validate(problem, options, guess);
   const auto start = std::chrono::steady_clock::now();
   TransportedSolution<G> s;
   switch (options.method) {
@@ -299,7 +330,6 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
       break;
     }
     case Method::TwoLevel: {
-      if (guess.xi0) throw std::invalid_argument("solve: method two-level takes a v0 guess, not xi0 (xi starts at 0)");
       const SolveMonitor stage = options.monitor.stage("two-level");
       s = solve_two_level(problem,
                           {.order = options.order, .tolerance = options.tol, .max_outer = options.max_iterations,
@@ -309,10 +339,7 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
       break;
     }
     case Method::Collocation:
-      if (guess.v0 || guess.xi0) {
-        throw std::invalid_argument("solve: method collocation takes a trajectory guess, not v0/xi0");
-      }
-      s = detail::collocation(problem, options, guess, options.samples);
+      if constexpr (detail::kNatural<L>) s = detail::collocation(problem, options, guess, options.samples);  // else validate threw
       break;
   }
   if (const std::string note = detail::cut_locus_note(problem); !note.empty()) s.message += "; note: " + note;
