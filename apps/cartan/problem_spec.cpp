@@ -83,7 +83,9 @@ std::vector<ProblemField> make_fields() {
            " (default auto: a strategy that tries shooting, continuation in T and in lambda, "
            "collocation and multiple shooting in turn and stops at the first success; shooting: "
            "augmented shooting with an analytic Jacobian; multiple-shooting: lifted LM over --segments "
-           "segments; two-level: the paper's scheme; collocation: fourth-order adaptive collocation)",
+           "segments; two-level: the paper's scheme; collocation: fourth-order adaptive collocation; "
+           "variational: Newton on the discrete Euler-Lagrange equations of the discrete action S_h, "
+           "second order, dense, for N up to a few hundred)",
        false, nullptr, ProblemField::Scope::Any},
       {"continuation", &S::continuation,
        enum_choices<transported::Continuation>() +
@@ -382,9 +384,13 @@ void validate(ProblemSpec& spec) {
   const std::string vector_what = std::to_string(n) + " for group " + spec.group;
   if (!spec.v0.empty()) require_size("v0", spec.v0, n, "a guess of v(0), " + vector_what);
   if (!spec.xi0.empty()) require_size("xi0", spec.xi0, n, "a guess of xi(0), " + vector_what);
-  if ((!spec.v0.empty() || !spec.xi0.empty()) && method == transported::Method::Collocation) {
+  if ((!spec.v0.empty() || !spec.xi0.empty()) &&
+      (method == transported::Method::Collocation || method == transported::Method::Variational)) {
     bad(spec.v0.empty() ? "xi0" : "v0", excerpt(spec.v0.empty() ? spec.xi0 : spec.v0),
-        "is a guess for the shooting methods, not for --method collocation");
+        "is a guess for the shooting methods, not for --method " + spec.method);
+  }
+  if (spec.order != 1 && method == transported::Method::Variational) {
+    bad("order", std::to_string(spec.order), "is an option of the shooting methods' schemes; --method variational is second order");
   }
   if (!spec.xi0.empty() && method == transported::Method::TwoLevel) {
     bad("xi0", excerpt(spec.xi0), "is not a guess of --method two-level (its xi starts at 0)");

@@ -25,7 +25,7 @@ struct ProblemSpec {
   std::vector<double> g0;               ///< the element's numbers (model_table.hpp); default the identity
   std::vector<double> gT;
   std::vector<double> a0, aT;           ///< so3 only: gT = minimal rotation taking a0 to aT
-  std::string method = "auto";          ///< a Method word (transported/method.hpp): auto | shooting | multiple-shooting | two-level | collocation
+  std::string method = "auto";          ///< a Method word (transported/method.hpp): auto | shooting | multiple-shooting | two-level | collocation | variational
   int order = 1;
   double tol = 1e-10;
   int samples = 0;                      ///< collocation: output at this many uniform times (0: the final mesh)

@@ -241,6 +241,10 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="no
                             uniform times) and `max_nodes` (default 20000); `continuation` "T"/"lambda":
                             where to start when Newton fails (from that order-2 shooting solution).
                             Built-in natural models only.
+      "variational"         Newton on the discrete Euler-Lagrange equations of the discrete action S_h
+                            for the interior nodes (second order; dense, for N up to a few hundred);
+                            from the geodesic path or `guess` (its g); tol bounds the last Newton
+                            correction (radians); no v0/xi0, order 1 only.
     tol: shooting methods, on |(log(gT^-1 g_N), xi_N / xi_scale)| (radians and a relative xi, so that
     it means the same at every horizon); two-level, the outer change of xi relative to xi_scale.
     v0, xi0: guesses (default: the geodesic velocity log(g0^-1 gT)/T and 0); guess: a whole trajectory

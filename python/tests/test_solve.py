@@ -174,7 +174,7 @@ def test_every_method_reaches_the_same_discrete_solution():
     for r in results.values():
         assert r.action == pytest.approx(ref.action, rel=1e-7)
     # "collocation" solves the continuous problem, not the discrete one: tested in test_bvp.py.
-    assert cartan.METHODS == ("auto", "shooting", "multiple-shooting", "two-level", "collocation")
+    assert cartan.METHODS == ("auto", "shooting", "multiple-shooting", "two-level", "collocation", "variational")
     assert "strategy-failed" in cartan.STATUSES and "converged" in cartan.STATUSES
 
 

@@ -100,7 +100,9 @@ def test_a_xi0_guess_alone_starts_from_the_geodesic_velocity(method):
     (["--method", "collocation", "--v0", "1,2,3"], ["v0", "collocation"]),
     (["--method", "two-level", "--xi0", "1,2,3"], ["xi0", "two-level"]),
     (["--continuation", "T"], ["continuation", "shooting and collocation"]),
-    (["--method", "newton"], ["method", "auto, shooting, multiple-shooting, two-level, collocation"]),
+    (["--method", "newton"], ["method", "auto, shooting, multiple-shooting, two-level, collocation, variational"]),
+    (["--method", "variational", "--v0", "1,2,3"], ["v0", "variational"]),
+    (["--method", "variational", "--order", "2"], ["order", "variational"]),
     (["--method", "shooting", "--continuation", "lambda", "--v0", "1,2,3"], ["continuation lambda", "no guess"]),
 ])
 def test_bad_guesses_and_options_exit_2(args, words):

@@ -10,6 +10,7 @@
 // h -> 0 at solutions of the paper's equations (at the scheme's order).
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cartan/errors.hpp"
@@ -21,21 +22,43 @@ namespace cartan::transported {
 /// S_h of the path through g[k] at the increasing times t[k] (at least two; steps may differ in
 /// length). Throws std::invalid_argument for fewer than two nodes, sizes that differ, times that
 /// do not increase, or a non-finite lambda.
+namespace detail {
+
+/// Throws std::invalid_argument (naming `where`) for a non-finite lambda, fewer than two nodes,
+/// sizes that differ, or times that do not increase.
+template <groups::LieGroup G>
+void check_action_path(std::string_view where, double lambda, const std::vector<double>& t,
+                       const std::vector<groups::ElementOf<G>>& g) {
+  require_finite(lambda, where, "lambda");
+  if (g.size() < 2) throw_invalid(where, "g.size()", std::to_string(g.size()), "must be at least 2 (one step)");
+  if (t.size() != g.size()) {
+    throw_invalid(where, "t.size()", std::to_string(t.size()), "must equal g.size() = " + std::to_string(g.size()));
+  }
+  for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+    if (!(t[k + 1] - t[k] > 0)) throw_invalid(where, "t", format_value(t[k + 1]), "must increase");
+  }
+}
+
+/// The uniform times k T / steps, k = 0..steps; throws std::invalid_argument (naming `where`)
+/// unless T is positive and finite.
+inline std::vector<double> uniform_times(std::string_view where, double T, std::size_t steps) {
+  require_finite(T, where, "T");
+  if (!(T > 0)) throw_invalid(where, "T", format_value(T), "must be positive");
+  std::vector<double> t(steps + 1);
+  for (std::size_t k = 0; k <= steps; ++k) t[k] = T * static_cast<double>(k) / static_cast<double>(steps);
+  return t;
+}
+
+}  // namespace detail
+
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 double transported_action(const L& lagrangian, double lambda, const std::vector<double>& t,
                           const std::vector<groups::ElementOf<G>>& g) {
-  require_finite(lambda, "transported_action", "lambda");
-  if (g.size() < 2) {
-    throw_invalid("transported_action", "g.size()", std::to_string(g.size()), "must be at least 2 (one step)");
-  }
-  if (t.size() != g.size()) {
-    throw_invalid("transported_action", "t.size()", std::to_string(t.size()), "must equal g.size() = " + std::to_string(g.size()));
-  }
+  detail::check_action_path<G>("transported_action", lambda, t, g);
   groups::ElementOf<G> transport = G::identity();  // h_k with P_k = Ad(h_k)
   double action = 0;
   for (std::size_t k = 0; k + 1 < g.size(); ++k) {
     const double h = t[k + 1] - t[k];
-    if (!(h > 0)) throw_invalid("transported_action", "t", format_value(t[k + 1]), "must increase");
     const groups::TangentOf<G> u = groups::log_between<G>(g[k], g[k + 1]) / h;
     const groups::ElementOf<G> g_mid = G::compose(g[k], G::exp(groups::TangentOf<G>(h / 2 * u)));
     // (disc-exp) over each half step: exp(-lambda h u) = exp(-lambda (h/2) u)^2 (a one-parameter
@@ -53,15 +76,10 @@ double transported_action(const L& lagrangian, double lambda, const std::vector<
 /// std::invalid_argument for fewer than two nodes, a non-finite lambda, or T not positive and finite.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 double transported_action(const L& lagrangian, double lambda, double T, const std::vector<groups::ElementOf<G>>& g) {
-  require_finite(T, "transported_action", "T");
-  if (!(T > 0)) throw_invalid("transported_action", "T", format_value(T), "must be positive");
   if (g.size() < 2) {
     throw_invalid("transported_action", "g.size()", std::to_string(g.size()), "must be at least 2 (one step)");
   }
-  const std::size_t steps = g.size() - 1;
-  std::vector<double> t(g.size());
-  for (std::size_t k = 0; k <= steps; ++k) t[k] = T * static_cast<double>(k) / static_cast<double>(steps);
-  return transported_action<G>(lagrangian, lambda, t, g);
+  return transported_action<G>(lagrangian, lambda, detail::uniform_times("transported_action", T, g.size() - 1), g);
 }
 
 /// d/de S_h(g_k exp(e w_k)) by central differences with step `epsilon` (w_0 = w_N = 0 expected).

@@ -16,6 +16,7 @@ enum class Method {
   MultipleShooting,  ///< lifted Levenberg–Marquardt over segments of the same scheme
   TwoLevel,          ///< the paper's scheme: inner shooting on v0, outer fixed point on xi
   Collocation,       ///< fourth-order adaptive collocation of the continuous problem
+  Variational,       ///< Newton on the discrete Euler–Lagrange equations of S_h (variational.hpp)
 };
 
 /// How shooting (and collocation, for its start) reaches a problem that fails from the guess:
@@ -24,6 +25,8 @@ enum class Continuation { None, T, Lambda };
 
 /// The collocation scheme's order (Lobatto IIIA, numerics/collocation.hpp), reported as `order`.
 inline constexpr int kCollocationOrder = 4;
+/// The variational integrator's order (variational.hpp; measured in tests/transported/test_variational.cpp).
+inline constexpr int kVariationalOrder = 2;
 
 }  // namespace cartan::transported
 
@@ -33,12 +36,13 @@ namespace cartan {
 template <>
 struct EnumNames<transported::Method> {
   static constexpr std::string_view what = "method";
-  static constexpr std::array<std::pair<transported::Method, std::string_view>, 5> names{{
+  static constexpr std::array<std::pair<transported::Method, std::string_view>, 6> names{{
       {transported::Method::Auto, "auto"},
       {transported::Method::Shooting, "shooting"},
       {transported::Method::MultipleShooting, "multiple-shooting"},
       {transported::Method::TwoLevel, "two-level"},
       {transported::Method::Collocation, "collocation"},
+      {transported::Method::Variational, "variational"},
   }};
 };
 

@@ -21,13 +21,24 @@ struct CollocationReport {
   double group_defect = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// What only the variational integrator reports (variational.hpp): the steps' body velocities
+/// u_k = log(g_k^{-1} g_{k+1}) / h and transported velocities v_k = P_k^{-1} u_k (constant on each
+/// step; the trajectory's v are their node averages), max_j |G_j| over the interior nodes, and the
+/// number of unknowns n (N - 1).
+template <groups::LieGroup G>
+struct VariationalReport {
+  std::vector<groups::TangentOf<G>> step_u, step_v;
+  double gradient_norm = 0;
+  int unknowns = 0;
+};
+
 template <groups::LieGroup G>
 struct TransportedSolution {
   Status status = Status::NotConverged;
   std::string message;  ///< human-readable diagnostics (iterations, residuals, every attempt)
   Method method = Method::Shooting;  ///< the method that produced this result (never Auto)
   std::string branch;   ///< how the solution was reached (guess, continuation path, strategy)
-  int order = 1;        ///< of the discrete scheme (1, 2) or of collocation (4)
+  int order = 1;        ///< of the discrete scheme (1, 2), the variational integrator (2) or collocation (4)
   /// The requested problem's trajectory: at a failure, the best iterate found *for the requested
   /// problem* (never a stage of a continuation at another T or lambda), or empty.
   TransportedTrajectory<G> trajectory;
@@ -45,6 +56,7 @@ struct TransportedSolution {
   double action = std::numeric_limits<double>::quiet_NaN();
 
   std::optional<CollocationReport> collocation;  ///< set by collocation only
+  std::optional<VariationalReport<G>> variational;  ///< set by the variational integrator only
 
   bool converged() const { return status == Status::Converged; }
 };

@@ -1,7 +1,9 @@
 #pragma once
 // One entry point for the transported-velocity problem (eq:reduced-system): solve(problem,
 // options, guess) runs the requested method, or by default (Method::Auto) a strategy that tries
-// cartan's methods in turn and stops at the first success. The CLI, the Python module and
+// cartan's methods in turn and stops at the first success (Method::Variational, the discrete
+// Euler–Lagrange equations of S_h in variational.hpp, only when requested: its dense Newton
+// costs O(N^3)). The CLI, the Python module and
 // `cartan sweep` call this; the result it returns is complete (method used,
 // branch, status, action), so no caller patches it.
 //
@@ -33,6 +35,7 @@
 #include "cartan/transported/solve_options.hpp"
 #include "cartan/transported/multiple_shooting.hpp"
 #include "cartan/transported/two_level.hpp"
+#include "cartan/transported/variational.hpp"
 #include "cartan/transported/action.hpp"
 
 namespace cartan::transported {
@@ -139,6 +142,11 @@ void check_method_inputs(const SolveOptions& options, const SolveGuess<G>& guess
         throw std::invalid_argument(
             "solve: method collocation on heisenberg takes no trajectory guess and no continuation (the "
             "closed-form collocation of H3 starts from the straight line in (a, b, c))");
+      }
+      break;
+    case Method::Variational:
+      if (guess.v0 || guess.xi0) {
+        throw std::invalid_argument("solve: method variational takes a trajectory guess (its g), not v0/xi0");
       }
       break;
     case Method::Auto:
@@ -341,6 +349,15 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
     case Method::Collocation:
       if constexpr (detail::kNatural<L>) s = detail::collocation(problem, options, guess, options.samples);  // else validate threw
       break;
+    case Method::Variational: {
+      const SolveMonitor stage = options.monitor.stage("variational");
+      const std::vector<groups::ElementOf<G>> path =
+          guess.trajectory ? path_at_nodes(problem, *guess.trajectory) : geodesic_path(problem);
+      s = solve_variational(problem, {.tolerance = options.tol, .max_iterations = options.max_iterations, .monitor = &stage},
+                            &path);
+      s.branch = guess.empty() ? "direct from the geodesic path" : "direct from the given trajectory";
+      break;
+    }
   }
   if (const std::string note = detail::cut_locus_note(problem); !note.empty()) s.message += "; note: " + note;
   detail::complete(problem, s, start);

@@ -42,6 +42,10 @@ struct SolveOptions {
       throw_invalid(where, "order", std::to_string(static_cast<int>(order)), "must be 1 or 2");
     }
     const std::string m = std::string(to_string(method));
+    if (order != SchemeOrder::First && method == Method::Variational) {
+      throw_invalid(where, "order", std::to_string(static_cast<int>(order)),
+                    "applies to the schemes of the shooting methods, not to variational (second order by construction)");
+    }
     if (segments && method != Method::MultipleShooting) {
       throw_invalid(where, "segments", std::to_string(*segments), "applies to method multiple-shooting only, not " + m);
     }
