@@ -28,6 +28,7 @@ from pathlib import Path
 
 from docutils import nodes
 from docutils.parsers.rst import directives
+from breathe.directives.content_block import DoxygenNamespaceDirective
 from docutils.statemachine import StringList
 from sphinx.directives.patches import Figure
 from sphinx.util import logging
@@ -93,32 +94,30 @@ def run_doxygen(app):
                    env=dict(os.environ, CARTAN_DOXYGEN_OUTPUT=str(DOXYGEN_OUTPUT)))
 
 
-def headers_of(folder):
-    """The headers of include/cartan/<folder> ("." for the top level), not recursively, sorted."""
-    base = INCLUDE if folder == "." else INCLUDE / folder
-    return sorted(p.relative_to(INCLUDE.parent).as_posix() for p in base.glob("*.hpp"))
+def doxygen_namespaces():
+    """The namespaces of cartan in Doxygen's index (cartan, cartan::groups, ...)."""
+    index = (DOXYGEN_OUTPUT / "xml" / "index.xml").read_text()
+    names = re.findall(r'kind="namespace"><name>([^<]+)</name>', index)
+    return sorted(n for n in names if n == "cartan" or n.startswith("cartan::"))
 
 
-class CartanHeaders(SphinxDirective):
-    """``cartan-headers:: FOLDER``: the C++ reference of every header of include/cartan/FOLDER, one
-    section per header (Breathe's doxygenfile), so that a new header appears without editing a page."""
+class CartanNamespace(SphinxDirective):
+    """``cartan-namespace:: NAME``: the C++ reference of the namespace NAME (one layer of
+    include/cartan): its classes, functions, types and variables with their /// comments, from
+    Doxygen's XML through Breathe's doxygennamespace. One namespace a page keeps every declaration
+    in one place (Breathe's per-file listing repeats the namespaces of each header, which Sphinx's
+    C++ domain reports as duplicate declarations)."""
     required_arguments = 1
 
     def run(self):
-        headers = headers_of(self.arguments[0])
-        if not headers:
-            raise self.error(f"no headers in include/cartan/{self.arguments[0]}")
-        self.env.cartan_headers = getattr(self.env, "cartan_headers", {})
-        self.env.cartan_headers.setdefault(self.env.docname, set()).update(headers)
-        for header in headers:
-            self.env.note_dependency(str(INCLUDE.parent / header))
-        lines = []
-        for header in headers:
-            lines += [header, "-" * len(header), "", f".. doxygenfile:: {header}", "   :project: cartan", ""]
-        container = nodes.section()
-        self.state.nested_parse(StringList(lines, source=self.get_source_info()[0]), self.content_offset, container,
-                                match_titles=True)
-        return container.children
+        name = self.arguments[0]
+        self.env.cartan_namespaces = getattr(self.env, "cartan_namespaces", {})
+        self.env.cartan_namespaces.setdefault(self.env.docname, set()).add(name)
+        for header in INCLUDE.rglob("*.hpp"):
+            self.env.note_dependency(str(header))
+        options = {"project": "cartan", "content-only": None, "members": None, "undoc-members": None}
+        return DoxygenNamespaceDirective("doxygennamespace", [name], options, StringList(), self.lineno,
+                                         self.content_offset, self.block_text, self.state, self.state_machine).run()
 
 
 class GalleryFigure(Figure, SphinxDirective):
@@ -181,26 +180,25 @@ def plain_text_bars(app, what, name, obj, options, lines):
         lines[:] = [line.replace("|", "\\|") for line in lines]
 
 
-def check_every_header(app, env):
-    """Every header of include/cartan is on some page of the C++ reference."""
-    every = {p.relative_to(INCLUDE.parent).as_posix() for p in INCLUDE.rglob("*.hpp")}
-    shown = set().union(*getattr(env, "cartan_headers", {}).values())
-    missing = sorted(every - shown)
+def check_every_namespace(app, env):
+    """Every namespace of cartan (a layer of include/cartan) has a page in the C++ reference."""
+    shown = set().union(*getattr(env, "cartan_namespaces", {}).values())
+    missing = sorted(set(doxygen_namespaces()) - shown)
     if missing:
-        logger.warning("headers without a page in the C++ reference (add a cartan-headers directive): %s",
+        logger.warning("namespaces without a page in the C++ reference (add a cartan-namespace directive): %s",
                        ", ".join(missing))
 
 
-def purge_headers(app, env, docname):
-    getattr(env, "cartan_headers", {}).pop(docname, None)
+def purge_namespaces(app, env, docname):
+    getattr(env, "cartan_namespaces", {}).pop(docname, None)
 
 
 def setup(app):
-    app.connect("env-purge-doc", purge_headers)
+    app.connect("env-purge-doc", purge_namespaces)
     app.connect("doctree-read", register_html_anchors)
     app.connect("autodoc-process-docstring", plain_text_bars)
     app.connect("builder-inited", run_doxygen)
-    app.connect("env-check-consistency", check_every_header)
-    app.add_directive("cartan-headers", CartanHeaders)
+    app.connect("env-check-consistency", check_every_namespace)
+    app.add_directive("cartan-namespace", CartanNamespace)
     app.add_directive("gallery-figure", GalleryFigure)
     app.add_directive("gallery-output", GalleryOutput)
