@@ -7,10 +7,11 @@
 # site shows figures of the code it documents, not whatever out/ holds), then runs Sphinx with
 # warnings as errors (-W --keep-going: a broken reference, a missing figure or header fails).
 set -euo pipefail
-cd "$(dirname "$0")/.."
-build=${1:-build}
-python_path=${CARTAN_PYTHON_PATH:-$build/python}
-docs=${2:-$build/docs}
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=$(realpath -m "${1:-$root/build}")
+python_path=$(realpath -m "${CARTAN_PYTHON_PATH:-$build/python}")
+docs=$(realpath -m "${2:-$build/docs}")
+cd "$root"
 gallery=$docs/gallery
 mkdir -p "$gallery"
 

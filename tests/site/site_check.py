@@ -7,7 +7,8 @@ check_site(root) serves the folder `root` on a free port of 127.0.0.1 (http.serv
 * every error the browser's console shows: a stylesheet, script, image or font that fails to load
   ("Failed to load resource: ... 404"), a script error;
 * every <img> that did not render (not complete, or naturalWidth 0);
-* every internal <a href> (same host) whose target does not answer HTTP 200, or whose #fragment
+* every internal <a href> and <link href> (same host: next/previous page, index, search,
+  stylesheets) whose target does not answer HTTP 200, or whose #fragment
   names no element of the target page (id, or name of an <a>);
 * a page without a title.
 
@@ -32,7 +33,7 @@ CHROMEDRIVER = "/usr/bin/chromedriver"
 PAGE_SCRIPT = """
 const ids = Array.from(document.querySelectorAll('[id]'), e => e.id)
   .concat(Array.from(document.querySelectorAll('a[name]'), e => e.getAttribute('name')));
-const links = Array.from(document.querySelectorAll('a[href]'), a => a.href);
+const links = Array.from(document.querySelectorAll('a[href], link[href]'), a => a.href);
 const images = Array.from(document.images, i => ({src: i.currentSrc || i.src, complete: i.complete,
                                                   width: i.naturalWidth}));
 return {title: document.title, ids: ids, links: links, images: images};

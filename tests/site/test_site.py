@@ -42,7 +42,7 @@ def synthetic_site(folder, *, broken):
         links += ["<a href='missing.html'>missing</a>", "<a href='sub/other.html#nowhere'>bad anchor</a>"]
         images += ["<img src='missing.png' alt='missing'>", "<img src='empty.png' alt='empty'>"]
         (folder / "empty.png").write_bytes(b"not a png")
-        head += "<link rel='stylesheet' href='missing.css'>"
+        head += "<link rel='stylesheet' href='missing.css'><link rel='next' href='sub/missing.html'>"
     (folder / "index.html").write_text(page("index", "<h1 id='top'>top</h1>" + " ".join(links + images), head))
     (folder / "sub" / "other.html").write_text(page("other", "<p id='here'>here</p><a href='../index.html'>back</a>"))
 
@@ -52,7 +52,7 @@ def test_checker_passes_a_clean_site(tmp_path, browser):
     report = check_site(tmp_path, browser)
     assert report.problems == []
     assert report.pages == ["index.html", "sub/other.html"]
-    assert report.internal_links == 4 and report.external_links == 1
+    assert report.internal_links == 5 and report.external_links == 1   # 4 <a>, 1 <link> on index.html
     assert len(report.images["index.html"]) == 1
 
 
@@ -69,6 +69,7 @@ def test_checker_finds_each_kind_of_fault(tmp_path, browser):
     assert found("index.html: image not rendered", "empty.png")
     assert found("index.html: browser console", "missing.css", "404")
     assert found("index.html: browser console", "missing.png", "404")
+    assert found("index.html: broken link", "sub/missing.html", "HTTP 404")   # <link rel="next">
     assert not found("other.html#here") and not found("pixel.png") and not found("style.css")
 
 
