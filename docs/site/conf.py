@@ -50,7 +50,6 @@ copyright = "the cartan developers"
 root_doc = "index"
 extensions = ["myst_parser", "sphinx.ext.autodoc", "breathe"]
 source_suffix = {".md": "markdown", ".rst": "restructuredtext"}
-exclude_patterns = ["Doxyfile"]
 html_theme = "sphinx_rtd_theme"
 html_title = "cartan"
 html_show_sourcelink = False
@@ -65,9 +64,7 @@ autodoc_member_order = "bysource"
 breathe_projects = {"cartan": str(DOXYGEN_OUTPUT / "xml")}
 breathe_default_project = "cartan"
 breathe_default_members = ("members", "undoc-members")
-breathe_show_include = True
 primary_domain = "py"
-nitpicky = False
 
 
 def import_cartan():
