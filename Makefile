@@ -8,12 +8,16 @@ FUZZ_RUNS ?= 1000000
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build build-asan build-fuzz fuzz test test-release test-asan test-fuzz run bench clean
+.PHONY: all deps deps-docs docs build build-asan build-fuzz fuzz test test-release test-asan test-fuzz run bench clean
 
 all: build
 
 deps:
 	bash scripts/install-deps.sh
+
+# Sphinx, Doxygen, Chromium and WebDriver: for `make docs` and the site's browser test in `make test`.
+deps-docs:
+	bash scripts/install-deps.sh docs
 
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
@@ -33,7 +37,7 @@ build-asan: deps
 	  -DCARTAN_BUILD_BENCH=OFF $(CMAKE_FLAGS)
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
 
-test-release: build
+test-release: build deps-docs
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
 test-asan: build-asan
@@ -72,6 +76,17 @@ bench: build
 	/usr/bin/python3 bench/compare_collocation_warm.py --timer $(BUILD)/bench/collocation_timer --markdown out/bench_collocation_warm.md
 	/usr/bin/python3 bench/compare_solve_bvp.py --module $(BUILD)/python --rounds 5 --markdown out/bench_solve_bvp.md
 	/usr/bin/python3 bench/sweep_scaling.py --cartan $(BUILD)/cartan --repeat 3 | tee out/sweep_scaling.md
+
+# The documentation site (docs/site) into $(BUILD)/docs/html: the user guide and the other
+# docs/*.md, the README, the Python reference (docstrings; needs the compiled module), the C++
+# reference (Doxygen + Breathe), the gallery (figures and outputs made afresh by the scripts of
+# `make run` into $(BUILD)/docs/gallery). Sphinx runs with warnings as errors. Builds only what the
+# site needs: the Python module and the C++ examples. `make test` builds and checks it too
+# (ctest -L docs: tests/site, every page in headless Chromium).
+docs: deps deps-docs
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+	cmake --build $(BUILD) -j $(JOBS) --target cartan_python geometry_tour custom_group custom_lagrangian
+	bash scripts/build-docs.sh $(BUILD)
 
 clean:
 	rm -rf $(BUILD) $(BUILD_ASAN) out

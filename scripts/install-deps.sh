@@ -2,6 +2,9 @@
 # Installs the Debian packages cartan needs, and only those that are missing.
 # Idempotent; safe to run on every `make`. Works as root on a fresh Debian 12 machine
 # (uses sudo when not root and sudo is available).
+#   bash scripts/install-deps.sh          the build and its tests (`make build`, `make run`)
+#   bash scripts/install-deps.sh docs     also the documentation site and its browser test
+#                                         (`make docs`, `make test`)
 set -euo pipefail
 
 packages=(
@@ -14,6 +17,19 @@ packages=(
   python3-distributed
   clang libclang-rt-14-dev
 )
+# The documentation site (docs/site, scripts/build-docs.sh): Sphinx with MyST for the Markdown,
+# Doxygen + Breathe for the C++ reference; its test (tests/site) drives Chromium by WebDriver.
+# About 400 MB with Chromium, hence not part of `make build` / `make run`.
+docs_packages=(
+  python3-sphinx python3-sphinx-rtd-theme python3-myst-parser doxygen python3-breathe
+  chromium chromium-driver python3-selenium
+)
+for group in "$@"; do
+  case "$group" in
+    docs) packages+=("${docs_packages[@]}") ;;
+    *) echo "install-deps: unknown group '$group' (known: docs)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

@@ -29,7 +29,7 @@ std::string format_value(const Eigen::Ref<const Eigen::MatrixXd>& x);
 std::string format_value(double x);
 
 /// User-supplied text for a message: in double quotes, control and non-ASCII bytes escaped as
-/// \xNN, cut to 60 characters (then "..." follows), so that hostile input cannot flood or
+/// `\xNN`, cut to 60 characters (then "..." follows), so that hostile input cannot flood or
 /// corrupt a terminal.
 std::string quote_input(std::string_view text);
 

@@ -150,17 +150,17 @@ class SolveResult:
     residual history); method: the method that produced the result (one of :data:`METHODS`, never
     "auto"); branch: how it was reached (e.g. "continuation in T (continued in T from T = 3 (6
     stages)), after shooting failed").
-    t (N+1,), g (N+1, *element_shape), v, mu, xi (N+1, dim): the discrete solution at every node, v
+    t (N+1,), g (N+1, ``*element_shape``), v, mu, xi (N+1, dim): the discrete solution at every node, v
     the transported velocity left-trivialised at g0 (collocation: at the final mesh or `samples`
     times). A failed result carries the best iterate *of the requested problem* (never a stage of a
     continuation at another T or lambda), or no rows at all.
     g0, gT, tol: the problem's boundary elements and the requested tolerance (what :func:`verify` checks
     against).
-    v0, xi0: the initial values; terminal_error = |log(gT^-1 g_N)|, xi_terminal = |xi_N|;
+    v0, xi0: the initial values; terminal_error = ``|log(gT^-1 g_N)|``, xi_terminal = ``|xi_N|``;
     action: the discrete transported action S_h of the trajectory (tells branches apart);
     outer_iterations, inner_iterations, sweeps: work done (collocation: mesh refinements, Newton
     iterations, Jacobians); mesh_size, max_residual, group_defect: collocation only (else None;
-    group_defect = max |g^T g - I| over the mesh of g and the transport element on SO(3), NaN elsewhere);
+    group_defect = max ``|g^T g - I|`` over the mesh of g and the transport element on SO(3), NaN elsewhere);
     solve_time: seconds in the solver.
     """
     status: str
@@ -227,25 +227,30 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="no
     group_gradient (24 extra callbacks per node on a 3-dimensional group).
 
     method (one of :data:`METHODS`):
-      "auto"                (default) a strategy: shooting from the guess, continuation in T (not for
-                            purely kinetic Lagrangians), continuation in lambda from 0 and from 1,
-                            collocation then shooting from its solution, multiple shooting; it stops at
-                            the first success and `branch` names the path.
-      "shooting"            augmented shooting on (v0, xi0) with an analytic Jacobian; `continuation`
-                            "T" or "lambda" (from `lambda_start`, default 0) when it fails from the guess.
-      "multiple-shooting"   lifted Levenberg-Marquardt over `segments` segments.
-      "two-level"           the paper's scheme (inner LM shooting on v0, outer fixed point on xi).
-      "collocation"         the continuous problem by fourth-order adaptive collocation from the
-                            geodesic guess (or `guess`) on a uniform mesh of N intervals; tol bounds the
-                            relative RMS residual per interval; `samples` (0: the final mesh, else >= 2
-                            uniform times) and `max_nodes` (default 20000); `continuation` "T"/"lambda":
-                            where to start when Newton fails (from that order-2 shooting solution).
-                            Built-in natural models only.
-      "variational"         Newton on the discrete Euler-Lagrange equations of the discrete action S_h
-                            for the interior nodes (second order; dense, for N up to a few hundred);
-                            from the geodesic path or `guess` (its g); tol bounds the last Newton
-                            correction (radians); no v0/xi0, order 1 only.
-    tol: shooting methods, on |(log(gT^-1 g_N), xi_N / xi_scale)| (radians and a relative xi, so that
+
+    "auto"
+        (default) a strategy: shooting from the guess, continuation in T (not for purely kinetic
+        Lagrangians), continuation in lambda from 0 and from 1, collocation then shooting from its
+        solution, multiple shooting; it stops at the first success and `branch` names the path.
+    "shooting"
+        augmented shooting on (v0, xi0) with an analytic Jacobian; `continuation` "T" or "lambda"
+        (from `lambda_start`, default 0) when it fails from the guess.
+    "multiple-shooting"
+        lifted Levenberg-Marquardt over `segments` segments.
+    "two-level"
+        the paper's scheme (inner LM shooting on v0, outer fixed point on xi).
+    "collocation"
+        the continuous problem by fourth-order adaptive collocation from the geodesic guess (or
+        `guess`) on a uniform mesh of N intervals; tol bounds the relative RMS residual per
+        interval; `samples` (0: the final mesh, else >= 2 uniform times) and `max_nodes` (default
+        20000); `continuation` "T"/"lambda": where to start when Newton fails (from that order-2
+        shooting solution). Built-in natural models only.
+    "variational"
+        Newton on the discrete Euler-Lagrange equations of the discrete action S_h for the interior
+        nodes (second order; dense, for N up to a few hundred); from the geodesic path or `guess`
+        (its g); tol bounds the last Newton correction (radians); no v0/xi0, order 1 only.
+
+    tol: shooting methods, on ``|(log(gT^-1 g_N), xi_N / xi_scale)|`` (radians and a relative xi, so that
     it means the same at every horizon); two-level, the outer change of xi relative to xi_scale.
     v0, xi0: guesses (default: the geodesic velocity log(g0^-1 gT)/T and 0); guess: a whole trajectory
     (any object with t, g, v, xi, e.g. a previous SolveResult), as scipy.integrate.solve_bvp takes y.
@@ -281,12 +286,12 @@ class GeneralSolveResult:
     status: one of :data:`STATUSES`; success (also `converged`): status == "converged"; message,
     method ("shooting" or "collocation"), order, branch: as in SolveResult; manifold: the manifold's
     name; T, N, q0, qT, tol: the problem and the requested tolerance.
-    t (N+1,), q (N+1, *point_shape): the nodes and points (collocation: the final mesh or the
+    t (N+1,), q (N+1, ``*point_shape``): the nodes and points (collocation: the final mesh or the
     `samples` times); frame (N+1, d, m): the parallel frame
     e_i(t_k) (frame[0] = frame0); v, mu (N+1, m): the transported velocity and the momentum in
     components of frame0 (q' = frame @ v); Xi (N+1, m, m): the auxiliary Xi^k_n = int_t^T v^k mu_n.
     A failed result carries the best iterate of the requested problem, or no rows at all.
-    v0, Xi0: the initial values; terminal_error = |difference(qT, q_N)|, xi_terminal = |Xi_N|;
+    v0, Xi0: the initial values; terminal_error = ``|difference(qT, q_N)|``, xi_terminal = ``|Xi_N|``;
     iterations (Levenberg-Marquardt or collocation's Newton), sweeps (runs of the scheme; collocation:
     Jacobian evaluations); residual_history; solve_time: seconds in the solver; mesh_size,
     max_residual: collocation only (else None; order is then 4).
@@ -346,19 +351,23 @@ def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, poten
     points (on the sphere, on the upper sheet of the hyperboloid, group elements).
 
     The Lagrangian, either
-      l = 1/2 v.A v - V(q): inertia A, a symmetric positive-definite (m, m) matrix or its (m,)
-        diagonal (default identity); potential V(q) -> float with potential_gradient(q) -> an ambient
-        (d,) covector zeta with zeta . x = d/de V(step(q, e x)) for tangent x (both or neither; on a
-        group, the left-trivialised gradient); or gravity G, on the Sphere only: V = G q[2];
-      or lagrangian: an object with methods value(t, q, v), momentum(t, q, v) (= dl/dv, (m,)),
-        velocity(t, q, mu) (the inverse Legendre map) and point_gradient(t, q, v) (an ambient (d,)
-        covector with zeta . x = d/de l(t, step(q, e x), v)), taking and returning NumPy arrays.
+
+    l = 1/2 v.A v - V(q)
+        inertia A, a symmetric positive-definite (m, m) matrix or its (m,) diagonal (default
+        identity); potential V(q) -> float with potential_gradient(q) -> an ambient (d,) covector
+        zeta with zeta . x = d/de V(step(q, e x)) for tangent x (both or neither; on a group, the
+        left-trivialised gradient); or gravity G, on the Sphere only: V = G q[2];
+    or lagrangian
+        an object with methods value(t, q, v), momentum(t, q, v) (= dl/dv, (m,)), velocity(t, q, mu)
+        (the inverse Legendre map) and point_gradient(t, q, v) (an ambient (d,) covector with
+        zeta . x = d/de l(t, step(q, e x), v)), taking and returning NumPy arrays.
+
     method: "auto" (shooting from the guess, then continuation in T, then collocation), "shooting"
     (with continuation "none" or "T") or "collocation" of the continuous system (fourth order,
     adaptive mesh; from `guess` or the geodesic guess, and with continuation "T" from the order-2
     shooting solution when Newton fails from the geodesic guess); the Lie-group solver's other
     methods need cartan.solve. tol: shooting, on the dimensionless terminal residual
-    |(difference(qT, q_N), Xi_N / s)|; collocation, on the relative RMS residual per interval.
+    ``|(difference(qT, q_N), Xi_N / s)|``; collocation, on the relative RMS residual per interval.
     max_iterations: Levenberg-Marquardt (Newton) iterations per stage (per mesh). v0 (m,), Xi0 (m, m):
     guesses (default: the geodesic guess and 0); guess: a whole trajectory instead, any object with
     t (from 0 to T), q, frame, v, mu, Xi such as an earlier GeneralSolveResult. samples (collocation):

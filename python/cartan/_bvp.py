@@ -250,9 +250,9 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
     or, with parameters, (df_dy, df_dp (n, k, m)); bc_jac(ya, yb[, p]) -> (dbc_dya, dbc_dyb[,
     dbc_dp]); without them, forward differences. x (m,) strictly increasing, y (n, m) the guess
     (complex for a complex problem), p (k,) or None, S (n, n) or None: the singular term, with
-    S y(a) = 0 imposed on the guess; tol: each interval's RMS residual relative to 1 + |f| (below
+    S y(a) = 0 imposed on the guess; tol: each interval's RMS residual relative to ``1 + |f|`` (below
     100 eps: a warning, and 100 eps); max_nodes; verbose 0, 1 (a termination report) or 2 (a line
-    per iteration too); bc_tol: max |bc| (default tol).
+    per iteration too); bc_tol: ``max |bc|`` (default tol).
 
     Returns a scipy.optimize.OptimizeResult (:class:`cartan.BvpResult`) with SciPy's fields: sol
     (scipy.interpolate.PPoly, the C^1 cubic spline: sol(x), sol(x, 1), sol.derivative(), ...), p
@@ -263,6 +263,7 @@ def solve_bvp(fun, bc, x, y, p=None, S=None, fun_jac=None, bc_jac=None, tol=0.00
     (the C++ solver's report on the last mesh) and solve_time (seconds).
 
     Where cartan differs from SciPy:
+
     * fun and fun_jac are called on whole sweeps of the mesh as SciPy calls them (x (m,),
       y (n, m)), but not always on the same sweeps (nodes, midpoints, quadrature points); without
       fun_jac, the differences move one component at every point at once (n + k calls of fun).
