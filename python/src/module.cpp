@@ -2,6 +2,7 @@
 // pybind11 turns std::invalid_argument and std::domain_error into ValueError and other
 // std::exceptions into RuntimeError, keeping the message.
 #include <algorithm>
+#include <memory>
 #include <sstream>
 
 #include "bind_all.hpp"
@@ -69,9 +70,16 @@ transport::TransportMethod parse_transport_method(const std::string& method, std
 SolveMonitor python_monitor(const py::object& progress) {
   SolveMonitor::ProgressCallback report;
   if (!progress.is_none()) {
-    report = [progress](const Progress& p) {
+    // The solver copies and destroys its monitor (stages) without the GIL: it holds the callable
+    // through a shared_ptr, whose count is atomic, and only the last owner touches the Python
+    // reference count, with the GIL.
+    const std::shared_ptr<py::object> callable(new py::object(progress), [](py::object* object) {
       py::gil_scoped_acquire gil;
-      progress(std::string(p.stage), p.iteration, p.residual);
+      delete object;
+    });
+    report = [callable](const Progress& p) {
+      py::gil_scoped_acquire gil;
+      (*callable)(std::string(p.stage), p.iteration, p.residual);
     };
   }
   return {report, [] {

@@ -338,3 +338,35 @@ def test_progress_callback_and_its_errors():
         raise RuntimeError("stop here")
     with pytest.raises(RuntimeError, match="stop here"):
         cartan.solve(cartan.SO3Oscillator(INERTIA), lam=0.5, T=3, N=100, gT=gT, progress=stop)
+
+
+def test_progress_callbacks_from_concurrent_solves():
+    # Built-in models solve without the GIL, copying their monitor by stages; each thread's
+    # callable must see exactly its own solve's reports (the same as a solve alone), and the
+    # callables must be released (their reference counts are touched only with the GIL held).
+    import concurrent.futures
+    import sys
+
+    gT = cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1])
+    alone = []
+    cartan.solve(cartan.SO3Oscillator(INERTIA), lam=0.5, T=3, N=100, gT=gT,
+                 progress=lambda *report: alone.append(report))
+
+    class Recorder:
+        def __init__(self):
+            self.seen = []
+
+        def __call__(self, *report):
+            self.seen.append(report)
+
+    recorders = [Recorder() for _ in range(8)]
+    before = [sys.getrefcount(r) for r in recorders]
+
+    def run(recorder):
+        return cartan.solve(cartan.SO3Oscillator(INERTIA), lam=0.5, T=3, N=100, gT=gT, progress=recorder)
+
+    with concurrent.futures.ThreadPoolExecutor(max_workers=4) as pool:
+        results = list(pool.map(run, recorders))
+    assert all(r.success for r in results)
+    assert all(recorder.seen == alone for recorder in recorders)
+    assert [sys.getrefcount(r) for r in recorders] == before
