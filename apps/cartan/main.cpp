@@ -1,6 +1,7 @@
 // The cartan command-line tool. `cartan <command> --help` lists each command's options. Exit codes:
 // 0 success, 1 the solver failed (the JSON result is still written), 2 bad input (one line on stderr).
 #include <iostream>
+#include <string>
 
 #include "command.hpp"
 
@@ -8,12 +9,15 @@ int main(int argc, char** argv) {
   using namespace cartan::cli;
   CLI::App tool{"cartan: geometric mechanics on Lie groups with invariant connections"};
   tool.require_subcommand(1);
+  tool.set_version_flag("--version", std::string("cartan ") + CARTAN_VERSION);  // the project's VERSION (CMake)
   const std::vector<Command> commands = {add_solve_command(tool), add_sweep_command(tool), add_merge_command(tool),
                                          add_verify_command(tool)};
 
   try {
     tool.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
+    return tool.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return tool.exit(e);
   } catch (const CLI::ParseError& e) {
     std::string help = "cartan --help";

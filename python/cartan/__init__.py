@@ -53,6 +53,9 @@ import numpy as np
 from . import _bvp, _cartan
 from ._bvp import solve_bvp  # noqa: F401  (re-exported)
 from ._sweep import sweep  # noqa: F401  (re-exported)
+
+#: The version of cartan (the CMake project's VERSION, compiled into the module; as `cartan --version`).
+__version__ = _cartan.__version__
 from ._cartan import (  # noqa: F401  (re-exported)
     SE2,
     Chart,

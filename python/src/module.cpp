@@ -93,6 +93,7 @@ SolveMonitor python_monitor(const py::object& progress) {
 
 PYBIND11_MODULE(_cartan, m) {
   m.doc() = "cartan: geometric mechanics on Lie groups with invariant connections (compiled core).";
+  m.attr("__version__") = CARTAN_VERSION;
   pybind11::class_<cartan::python::SolveRequest>(m, "_SolveRequest")
       .def(pybind11::init<>())
       .def_readwrite("method", &cartan::python::SolveRequest::method)

@@ -23,3 +23,13 @@ def test_installed_package_imports(tmp_path):
     assert out.returncode == 0, out.stderr
     assert out.stdout.startswith(str(sites[0] / "cartan"))
     assert "[0.1 0.2 0.3]" in out.stdout
+
+
+def test_version_is_the_projects():
+    # cartan.__version__ is the VERSION of the top-level CMakeLists.txt's project(), compiled in.
+    import re
+
+    import cartan
+
+    version = re.search(r"project\(cartan VERSION ([0-9.]+)", (ROOT / "CMakeLists.txt").read_text()).group(1)
+    assert cartan.__version__ == version

@@ -26,6 +26,20 @@ def solve(*args):
     return json.loads(result.stdout)
 
 
+def project_version():
+    """The VERSION of the top-level CMakeLists.txt's project(), read from the source."""
+    import re
+    text = (ROOT / "CMakeLists.txt").read_text()
+    return re.search(r"project\(cartan VERSION ([0-9.]+)", text).group(1)
+
+
+def test_version_is_the_projects():
+    result = run("--version")
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == "cartan " + project_version()
+    assert "--version" in run("--help").stdout
+
+
 FREE_BODY = ["--model", "free-rigid-body", "--T", "50", "--N", "1000", "--a0=-1,-1,-1", "--aT", "0.9,1,1"]
 OSCILLATOR = ["--model", "oscillator", "--T", "12", "--N", "800", "--a0", "-0.7,-1,-0.7", "--aT", "0.8,0.8,1"]
 
