@@ -33,7 +33,7 @@ inline RefinedMesh scipy_refinement(const CubicHermite& solution, const Eigen::V
   std::vector<int> inserted(static_cast<std::size_t>(intervals), 0);
   int added = 0;
   for (Eigen::Index i = 0; i < intervals; ++i) {
-    const int count = rms[i] >= 100 * tol ? 2 : (rms[i] > tol && rms[i] < 100 * tol ? 1 : 0);
+    const int count = rms[i] >= 100 * tol ? 2 : rms[i] > tol ? 1 : 0;  // NaN compares false: 0
     inserted[static_cast<std::size_t>(i)] = count;
     added += count;
   }
