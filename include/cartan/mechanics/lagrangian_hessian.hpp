@@ -4,6 +4,8 @@
 // LagrangianHessian<G>; otherwise they are computed by central differences of its first
 // derivatives (momentum, group_gradient).
 
+#include <array>
+
 #include "cartan/mechanics/lagrangian.hpp"
 
 namespace cartan::mechanics {
@@ -43,26 +45,61 @@ struct HessianStructure {
 /// Central-difference step: truncation ~ step^2 |l'''|, rounding ~ 1e-16 / step: both ~1e-10.
 inline constexpr double kHessianStep = 1e-5;
 
+/// The 4 dim points at which lagrangian_hessian_fd evaluates momentum and group_gradient, in
+/// the order point(i, j): for direction i, j = 0, 1 move v by +-hv e_i, j = 2, 3 move g to
+/// g exp(+-hg e_i). A model that evaluates many points in one call (a vectorised Python
+/// Lagrangian) takes them all at once and hands the values to hessian_from_stencil.
+template <groups::LieGroup G>
+struct HessianStencil {
+  static constexpr int kPoints = 4 * G::kDim;
+  double hv = 0, hg = 0;
+  std::array<groups::ElementOf<G>, kPoints> g;
+  std::array<groups::TangentOf<G>, kPoints> v;
+  static constexpr int index(int direction, int j) { return 4 * direction + j; }
+};
+
+template <groups::LieGroup G>
+HessianStencil<G> hessian_stencil(const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) {
+  HessianStencil<G> s;
+  s.hv = kHessianStep * (1 + v.cwiseAbs().maxCoeff());
+  s.hg = kHessianStep;
+  for (int i = 0; i < G::kDim; ++i) {
+    const groups::TangentOf<G> ev = groups::TangentOf<G>::Unit(i) * s.hv;
+    const groups::TangentOf<G> eg = groups::TangentOf<G>::Unit(i) * s.hg;
+    const int k = HessianStencil<G>::index(i, 0);
+    s.g[k] = g, s.v[k] = v + ev;
+    s.g[k + 1] = g, s.v[k + 1] = v - ev;
+    s.g[k + 2] = G::compose(g, G::exp(eg)), s.v[k + 2] = v;
+    s.g[k + 3] = G::compose(g, G::exp(groups::TangentOf<G>(-eg))), s.v[k + 3] = v;
+  }
+  return s;
+}
+
+/// The central differences of momentum (mu[k]) and group_gradient (zeta[k]) at the stencil's points.
+template <groups::LieGroup G>
+LagrangianHessian<G> hessian_from_stencil(const HessianStencil<G>& s, const std::array<groups::CovectorOf<G>, HessianStencil<G>::kPoints>& mu,
+                                          const std::array<groups::CovectorOf<G>, HessianStencil<G>::kPoints>& zeta) {
+  LagrangianHessian<G> out;
+  for (int i = 0; i < G::kDim; ++i) {
+    const int k = HessianStencil<G>::index(i, 0);
+    out.momentum_v.col(i) = (mu[k] - mu[k + 1]) / (2 * s.hv);
+    out.gradient_v.col(i) = (zeta[k] - zeta[k + 1]) / (2 * s.hv);
+    out.momentum_g.col(i) = (mu[k + 2] - mu[k + 3]) / (2 * s.hg);
+    out.gradient_g.col(i) = (zeta[k + 2] - zeta[k + 3]) / (2 * s.hg);
+  }
+  return out;
+}
+
 /// Second derivatives by central differences of momentum and group_gradient.
 template <groups::LieGroup G, ReducedLagrangian<G> L>
 LagrangianHessian<G> lagrangian_hessian_fd(const L& l, double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) {
-    LagrangianHessian<G> out;
-    const double hv = kHessianStep * (1 + v.cwiseAbs().maxCoeff());
-    const double hg = kHessianStep;
-    for (int i = 0; i < G::kDim; ++i) {
-      const groups::TangentOf<G> ev = groups::TangentOf<G>::Unit(i) * hv;
-      const groups::TangentOf<G> vp = v + ev, vm = v - ev;
-      out.momentum_v.col(i) = (groups::CovectorOf<G>(l.momentum(t, g, vp)) - groups::CovectorOf<G>(l.momentum(t, g, vm))) / (2 * hv);
-      out.gradient_v.col(i) =
-          (groups::CovectorOf<G>(l.group_gradient(t, g, vp)) - groups::CovectorOf<G>(l.group_gradient(t, g, vm))) / (2 * hv);
-      const groups::TangentOf<G> eg = groups::TangentOf<G>::Unit(i) * hg;
-      const groups::ElementOf<G> gp = G::compose(g, G::exp(eg));
-      const groups::ElementOf<G> gm = G::compose(g, G::exp(groups::TangentOf<G>(-eg)));
-      out.momentum_g.col(i) = (groups::CovectorOf<G>(l.momentum(t, gp, v)) - groups::CovectorOf<G>(l.momentum(t, gm, v))) / (2 * hg);
-      out.gradient_g.col(i) =
-          (groups::CovectorOf<G>(l.group_gradient(t, gp, v)) - groups::CovectorOf<G>(l.group_gradient(t, gm, v))) / (2 * hg);
-    }
-    return out;
+  const HessianStencil<G> s = hessian_stencil<G>(g, v);
+  std::array<groups::CovectorOf<G>, HessianStencil<G>::kPoints> mu, zeta;
+  for (int k = 0; k < HessianStencil<G>::kPoints; ++k) {
+    mu[k] = l.momentum(t, s.g[k], s.v[k]);
+    zeta[k] = l.group_gradient(t, s.g[k], s.v[k]);
+  }
+  return hessian_from_stencil<G>(s, mu, zeta);
 }
 
 /// The model's analytic `hessian(t, g, v)` when it has one (checked: require_finite_result),
