@@ -9,7 +9,10 @@
 #include <pybind11/pybind11.h>
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <array>
 #include <string>
+#include <type_traits>
 #include <string_view>
 #include <vector>
 
@@ -27,6 +30,31 @@ std::string shape_text(Eigen::Index rows, Eigen::Index cols, bool vector);
 
 /// Any array-like as a C-contiguous double array; throws std::invalid_argument if it is not one.
 Array as_array(const py::handle& obj, std::string_view where, std::string_view name);
+
+/// The result of a vectorised callback (`who`) as an array of `count` rows, each of shape
+/// `row_shape` (() for numbers, (n,) for vectors); throws std::invalid_argument naming `who` for
+/// any other shape.
+Array batch_rows(const py::handle& result, std::size_t count, const std::vector<py::ssize_t>& row_shape,
+                 std::string_view who);
+
+/// The K rows of a vectorised callback's result as numbers or fixed-size Eigen vectors, read from
+/// the array's memory (one shape check, no per-row conversion).
+template <class R, std::size_t K>
+std::array<R, K> batch_values(const py::handle& result, std::string_view who) {
+  if constexpr (std::is_same_v<R, double>) {
+    const Array a = batch_rows(result, K, {}, who);
+    std::array<double, K> out;
+    std::copy_n(a.data(), K, out.begin());
+    return out;
+  } else {
+    static_assert(R::ColsAtCompileTime == 1 && R::RowsAtCompileTime > 0, "vectorised callbacks return numbers or vectors");
+    constexpr Eigen::Index n = R::RowsAtCompileTime;
+    const Array a = batch_rows(result, K, {n}, who);
+    std::array<R, K> out;
+    for (std::size_t k = 0; k < K; ++k) out[k] = Eigen::Map<const R>(a.data() + k * n);
+    return out;
+  }
+}
 
 /// A fixed-size Eigen vector (from a 1-D array of its length) or matrix (from a 2-D array of its
 /// shape). Throws std::invalid_argument naming `where` and `name` on any other shape.

@@ -31,6 +31,21 @@ Array as_array(const py::handle& obj, std::string_view where, std::string_view n
   return a;
 }
 
+Array batch_rows(const py::handle& result, std::size_t count, const std::vector<py::ssize_t>& row_shape,
+                 std::string_view who) {
+  const Array a = as_array(result, who, "return value");
+  bool fits = a.ndim() == static_cast<py::ssize_t>(row_shape.size() + 1) && a.shape(0) == static_cast<py::ssize_t>(count);
+  for (std::size_t i = 0; fits && i < row_shape.size(); ++i) fits = a.shape(static_cast<py::ssize_t>(i + 1)) == row_shape[i];
+  if (!fits) {
+    std::string expected = "(" + std::to_string(count);
+    for (const py::ssize_t n : row_shape) expected += ", " + std::to_string(n);
+    expected += row_shape.empty() ? ",)" : ")";
+    throw_invalid(who, "return value", "array of shape " + shape_text(a),
+                  "must have shape " + expected + ", one row per point (the model is vectorized)");
+  }
+  return a;
+}
+
 void rethrow_callback_error(const CallbackState& state) {
   if (state.first_error) std::rethrow_exception(state.first_error);
 }
@@ -52,6 +67,7 @@ PythonModel::PythonModel(const py::object& object, std::string_view kind, std::i
     names_.emplace_back(method);
     methods_.push_back(py::hasattr(object, method) ? py::object(object.attr(method)) : py::object(py::none()));
   }
+  vectorized_ = py::hasattr(object, "vectorized") && py::bool_(object.attr("vectorized"));
 }
 
 groups::Side parse_side(const std::string& side, std::string_view where) {

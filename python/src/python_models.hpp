@@ -8,6 +8,12 @@
 // hessian(t, g, v) or else from the library's central differences of momentum and
 // group_gradient (lagrangian_hessian_fd, lagrangian_hessian.hpp).
 //
+// Vectorised models. An object whose attribute `vectorized` is true takes and returns stacked
+// points: t (K,), g (K, *element shape), v or mu (K, n), and returns (K,) values or (K, n) rows.
+// Single evaluations are batches of one; the finite-difference Hessian's 4 n points go in one
+// call of momentum and one of group_gradient (2 callbacks a node instead of 8 n). The optional
+// `hessian` is always called with one point.
+//
 // Errors. The solvers treat an exception in a sweep as a failed evaluation and go on (a
 // rejected Levenberg–Marquardt step). A Python error is a bug in user code, not a numerical
 // outcome, so the first one is kept in the shared CallbackState, every later callback fails at
@@ -15,6 +21,8 @@
 // (guarded_callback, run_with_callbacks; cartan.solve_bvp's callbacks use the same two).
 // Callbacks run with the GIL held.
 
+#include <algorithm>
+#include <array>
 #include <exception>
 #include <memory>
 #include <cmath>
@@ -109,9 +117,17 @@ class PythonModel {
  protected:
   bool has(std::size_t index) const { return !methods_[index].is_none(); }
 
-  /// Calls method `index` with (t, g, x) and converts the result to R, recording failures.
+  /// Calls method `index` with (t, g, x) and converts the result to R, recording failures. A
+  /// vectorised model gets a batch of one point (call_batch).
   template <class R, class E, class X>
   R call(std::size_t index, double t, const E& g, const X& x) const {
+    if (vectorized_) return call_batch<R>(index, t, std::array<E, 1>{g}, std::array<X, 1>{x})[0];
+    return call_one<R>(index, t, g, x);
+  }
+
+  /// Calls method `index` with (t, g, x) as they are (never batched: the optional `hessian`).
+  template <class R, class E, class X>
+  R call_one(std::size_t index, double t, const E& g, const X& x) const {
     const std::string who = kind_ + "." + names_[index];
     return guarded_callback(*state_, who, [&] {
       // A non-finite value from finite arguments is named at once (require_finite_result).
@@ -120,11 +136,31 @@ class PythonModel {
     });
   }
 
+  /// A vectorised model (attribute `vectorized` true): one call of method `index` with the K
+  /// points stacked along a new first axis (t (K,), g (K, *element shape), x (K, n)); row k of
+  /// its result is the value at point k.
+  template <class R, class E, class X, std::size_t K>
+  std::array<R, K> call_batch(std::size_t index, double t, const std::array<E, K>& g, const std::array<X, K>& x) const {
+    const std::string who = kind_ + "." + names_[index];
+    return guarded_callback(*state_, who, [&] {
+      py::array_t<double> times(static_cast<py::ssize_t>(K));
+      std::fill_n(times.mutable_data(), K, t);
+      const std::array<R, K> out = batch_values<R, K>(
+          methods_[index](times, to_numpy(std::vector<E>(g.begin(), g.end())), to_numpy(std::vector<X>(x.begin(), x.end()))),
+          who);
+      for (std::size_t k = 0; k < K; ++k) mechanics::require_finite_result(out[k], who, t, g[k], x[k]);
+      return out;
+    });
+  }
+
+  bool vectorized() const { return vectorized_; }
+
  private:
   py::object object_;
   std::string kind_;
   std::vector<std::string> names_;
   std::vector<py::object> methods_;
+  bool vectorized_ = false;
   std::shared_ptr<CallbackState> state_ = std::make_shared<CallbackState>();
 };
 
@@ -145,10 +181,14 @@ class PythonLagrangian : public PythonModel {
     return call<groups::TangentOf<G>>(3, t, g, mu);
   }
   /// Second derivatives for the tangent-linear sweeps: the object's `hessian` if it has one,
-  /// else central differences of momentum and group_gradient (lagrangian_hessian_fd).
+  /// else central differences of momentum and group_gradient (lagrangian_hessian_fd), the 4 dim
+  /// points of the stencil in one call of each for a vectorised model (2 callbacks, not 8 dim).
   mechanics::LagrangianHessian<G> hessian(double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) const {
-    if (!has(4)) return mechanics::lagrangian_hessian_fd<G>(*this, t, g, v);
-    return call<mechanics::LagrangianHessian<G>>(4, t, g, v);
+    if (has(4)) return call_one<mechanics::LagrangianHessian<G>>(4, t, g, v);
+    if (!vectorized()) return mechanics::lagrangian_hessian_fd<G>(*this, t, g, v);
+    const mechanics::HessianStencil<G> s = mechanics::hessian_stencil<G>(g, v);
+    return mechanics::hessian_from_stencil<G>(s, call_batch<groups::CovectorOf<G>>(1, t, s.g, s.v),
+                                              call_batch<groups::CovectorOf<G>>(2, t, s.g, s.v));
   }
 };
 
