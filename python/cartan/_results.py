@@ -313,6 +313,7 @@ def plot(r, path=None):
                                  np.outer(np.ones_like(sphere[0]), np.cos(sphere[1])), color="0.85", linewidth=0.5)
         for i, colour in enumerate("rgb"):
             path_axes.plot(*r.g[:, :, i].T, color=colour, label=f"g e{i + 1}")
+        path_axes.set_box_aspect((1, 1, 1))  # the sphere round
         path_axes.set_title("body axes on the sphere")
     elif group.name == "heisenberg":
         for i, name in enumerate("abc"):
