@@ -90,7 +90,7 @@ def to_json_dict(r):
         "group": _group_class(r.group, "SolveResult.to_json").name, "model": r.model,
         "inertia": _inertia_json(r.inertia), "lambda": r.lam, "T": r.T, "N": r.N, "tol": r.tol,
         "g0": np.ravel(r.g0), "gT": np.ravel(r.gT), "connection": r.connection, "side": r.side,
-        "t": r.t, "g": np.reshape(r.g, (rows, -1)), "v": r.v, "mu": r.mu, "xi": r.xi,
+        "t": r.t, "g": np.reshape(r.g, (rows, int(np.prod(np.shape(r.g)[1:])))), "v": r.v, "mu": r.mu, "xi": r.xi,
         "terminal_error": r.terminal_error, "xi_terminal": r.xi_terminal,
         "iterations": {"outer": r.outer_iterations, "inner": r.inner_iterations, "sweeps": r.sweeps},
         "action": r.action, "solve_time_s": r.solve_time,

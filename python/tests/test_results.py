@@ -173,6 +173,17 @@ def test_non_finite_numbers_are_null_both_ways(tmp_path):
     assert math.isnan(back.action) and math.isnan(back.terminal_error)
 
 
+def test_a_result_without_rows_travels_and_has_no_dense_output(tmp_path):
+    r = solve("heisenberg/oscillator", N=10)
+    empty = dataclasses.replace(r, status="max-iterations", success=False, t=np.zeros(0), g=np.zeros((0, 3)),
+                                v=np.zeros((0, 3)), mu=np.zeros((0, 3)), xi=np.zeros((0, 3)))
+    empty.to_json(tmp_path / "empty.json")
+    back = cartan.load(tmp_path / "empty.json")
+    assert back.status == "max-iterations" and back.g.shape == (0, 3) and back.P.shape == (0, 3, 3)
+    with pytest.raises(ValueError, match="0 samples"):
+        back.sol(0.5)
+
+
 def _bad(key, change):
     return pytest.param(change, key, id=key)
 
