@@ -169,8 +169,8 @@ class SolveResult:
 
     Self-description (what :meth:`to_json` writes and :func:`load` reads, the CLI's vocabulary):
     model: the CLI's model name of a built-in model ("free-rigid-body" or "oscillator" on SO3,
-    "oscillator" on Heisenberg, "free-body" on SE2 and SE3; with the CLI's group, ``group.lower()``
-    but for "heisenberg") or "python:<type name>" for a Lagrangian defined in Python, which a file
+    "oscillator" on Heisenberg, "free-body" on SE2 and SE3; the CLI's group is ``group.lower()``)
+    or "python:<type name>" for a Lagrangian defined in Python, which a file
     cannot rebuild; inertia: the built-in model's (n, n) inertia (a Python Lagrangian's `inertia`
     attribute, else None); connection "cartan-schouten" with parameter `lam` and side "left" (v is
     left-trivialised; the transport P acts on it from the left, eq:reduced-system).
@@ -183,7 +183,8 @@ class SolveResult:
     velocity u_k = P_k v_k = g^-1 g' (disc-body-v); energy (N+1,): E_k = mu_k.v_k - l(t_k, g_k, v_k),
     what `cartan verify` checks; cumulative_action (N+1,): the discrete transported action S_h over
     the first k steps (0 at k = 0; its last entry is `action`). energy and cumulative_action are None
-    for a loaded file of a Python-defined model.
+    for a loaded file of a Python-defined model. (They are computed once after the solve: for a
+    Lagrangian defined in Python, N+1 more calls of value and momentum.)
     Dense output :meth:`sol`, the CLI's JSON :meth:`to_json` and :func:`load`, a figure :meth:`plot`.
     """
     status: str
@@ -237,7 +238,8 @@ class SolveResult:
         `t`). At a node it returns the sample itself.
 
         Discrete schemes (shooting, two-level, multiple-shooting, variational): on step k, g(t) =
-        g_k exp(s log(g_k^-1 g_k+1)), s = (t - t_k)/h, the one-parameter subgroup through both nodes:
+        g_k exp(s log(g_k^-1 g_k+1)), s = (t - t_k)/h, the translated one-parameter subgroup through
+        both nodes:
         the Lie–Euler and RKMK steps of the scheme (disc-grp) move g along exactly such a curve, it
         stays on the group (a linear blend of matrices would leave SO(3)), and its error against the
         smooth solution is O(h^2), no larger than the nodes' own error at order 1 or 2; v, mu, xi are
