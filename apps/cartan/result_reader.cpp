@@ -123,7 +123,10 @@ ProblemSpec problem_of(const nlohmann::json& j) {
     bad("inertia", excerpt(p.inertia), "must have " + std::to_string(n) + " or " + std::to_string(n * n) + " numbers");
   }
   check_inertia(model, p.inertia, kWhere);
-  if (j.contains("connection")) {  // the general solver's results on a group (connection_command.hpp)
+  if (j.contains("side") && json_text(j["side"], kWhere, "side") != "left") {
+    bad("side", describe(j["side"]), "must be \"left\" (the transported velocity is left-trivialised)");
+  }
+  if (j.contains("connection")) {  // cartan-schouten, or the general solver's on a group (connection_command.hpp)
     p.connection = json_text(j["connection"], kWhere, "connection");
     if (j.contains("metric")) p.metric = json_numbers(j["metric"], kWhere, "metric");
     if (j.contains("alpha")) p.alpha_values = nested_numbers(j["alpha"], "alpha", n);

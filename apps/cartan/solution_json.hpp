@@ -34,15 +34,19 @@ inline void add_collocation_report(nlohmann::json& out, const std::optional<tran
   if (std::isfinite(report->group_defect)) out["group_defect"] = report->group_defect;
 }
 
-/// Every key of a `cartan solve` result: result_header, the trajectory (t, g, v, mu, xi), the
-/// diagnostics (terminal_error, xi_terminal, action, iterations, solve_time_s) and, for
-/// collocation, mesh_size, max_residual and (matrix groups) group_defect. `order` is the scheme's order
-/// (1 or 2 for the discrete schemes, 4 for collocation).
+/// Every key of a `cartan solve` result: result_header, the connection ("connection":
+/// "cartan-schouten" with "lambda", and "side": "left", the trivialisation of v), the trajectory
+/// (t, g, v, mu, xi), the diagnostics (terminal_error, xi_terminal, action, iterations,
+/// solve_time_s) and, for collocation, mesh_size, max_residual and (matrix groups) group_defect.
+/// `order` is the scheme's order (1 or 2 for the discrete schemes, 2 for variational, 4 for
+/// collocation). python/cartan/_results.py writes and reads the same keys.
 template <groups::LieGroup G>
 nlohmann::json solution_json(const ProblemSpec& spec, const transported::TransportedSolution<G>& s) {
   const auto& tr = s.trajectory;
   nlohmann::json out = result_header(spec, std::string(to_string(s.status)), s.message,
                                      std::string(to_string(s.method)), s.order, s.branch);
+  out["connection"] = "cartan-schouten";
+  out["side"] = "left";
   out["t"] = tr.t;
   out["g"] = rows(tr.g);
   out["v"] = rows(tr.v);

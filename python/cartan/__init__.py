@@ -46,11 +46,12 @@ Errors: invalid input raises ValueError with the C++ library's message; an excep
 a Python callback during a solve is re-raised unchanged when the solver returns.
 """
 from dataclasses import dataclass, field
+from types import SimpleNamespace
 from typing import Optional
 
 import numpy as np
 
-from . import _bvp, _cartan
+from . import _bvp, _cartan, _results
 from ._bvp import solve_bvp  # noqa: F401  (re-exported)
 from ._sweep import sweep  # noqa: F401  (re-exported)
 
@@ -94,7 +95,7 @@ __all__ = [
     "RigidBodyHamiltonian", "SO3OscillatorHamiltonian", "SpatialRigidBodyHamiltonian", "H3OscillatorHamiltonian",
     "SE2FreeBodyHamiltonian", "SE3FreeBodyHamiltonian",
     "Trajectory", "SolveResult", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve", "sweep",
-    "VerifyReport", "verify",
+    "VerifyReport", "verify", "load", "model_of",
     "BvpResult", "solve_bvp",
     "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "Chart", "MANIFOLDS", "GeneralSolveResult", "solve_general",
     "verify_general",
@@ -165,6 +166,26 @@ class SolveResult:
     iterations, Jacobians); mesh_size, max_residual, group_defect: collocation only (else None;
     group_defect = max ``|g^T g - I|`` over the mesh of g and the transport element on SO(3), NaN elsewhere);
     solve_time: seconds in the solver.
+
+    Self-description (what :meth:`to_json` writes and :func:`load` reads, the CLI's vocabulary):
+    model: the CLI's model name of a built-in model ("free-rigid-body" or "oscillator" on SO3,
+    "oscillator" on Heisenberg, "free-body" on SE2 and SE3; the CLI's group is ``group.lower()``)
+    or "python:<type name>" for a Lagrangian defined in Python, which a file
+    cannot rebuild; inertia: the built-in model's (n, n) inertia (a Python Lagrangian's `inertia`
+    attribute, else None); connection "cartan-schouten" with parameter `lam` and side "left" (v is
+    left-trivialised; the transport P acts on it from the left, eq:reduced-system).
+    :func:`model_of` rebuilds the built-in model.
+
+    Along the solution (one row per node, computed by the library, include/cartan/transported/along.hpp):
+    P (N+1, dim, dim): the transport operator P_k = Ad(h_k) of eq:reduced-system, h_0 = e and
+    h_k+1 = exp(-lam log(g_k^-1 g_k+1)) h_k (disc-exp; exact for the shooting schemes and the
+    variational integrator, second order in the spacing for collocation); u (N+1, dim): the body
+    velocity u_k = P_k v_k = g^-1 g' (disc-body-v); energy (N+1,): E_k = mu_k.v_k - l(t_k, g_k, v_k),
+    what `cartan verify` checks; cumulative_action (N+1,): the discrete transported action S_h over
+    the first k steps (0 at k = 0; its last entry is `action`). energy and cumulative_action are None
+    for a loaded file of a Python-defined model. (They are computed once after the solve: for a
+    Lagrangian defined in Python, N+1 more calls of value and momentum.)
+    Dense output :meth:`sol`, the CLI's JSON :meth:`to_json` and :func:`load`, a figure :meth:`plot`.
     """
     status: str
     message: str
@@ -197,11 +218,50 @@ class SolveResult:
     mesh_size: Optional[int] = None
     max_residual: Optional[float] = None
     group_defect: Optional[float] = None
+    model: str = ""
+    inertia: Optional[np.ndarray] = field(default=None, repr=False)
+    connection: str = "cartan-schouten"
+    side: str = "left"
+    u: Optional[np.ndarray] = field(default=None, repr=False)
+    P: Optional[np.ndarray] = field(default=None, repr=False)
+    energy: Optional[np.ndarray] = field(default=None, repr=False)
+    cumulative_action: Optional[np.ndarray] = field(default=None, repr=False)
 
     @property
     def converged(self):
         """The same as `success` (the C++ result's converged())."""
         return self.success
+
+    def sol(self, t):
+        """Dense output: the solution at the time or times `t` in [t_0, t_N] = [0, T] (outside:
+        ValueError), as a :class:`cartan._results.State` (g, v, mu, xi; a leading axis for an array
+        `t`). At a node it returns the sample itself.
+
+        Discrete schemes (shooting, two-level, multiple-shooting, variational): on step k, g(t) =
+        g_k exp(s log(g_k^-1 g_k+1)), s = (t - t_k)/h, the translated one-parameter subgroup through
+        both nodes:
+        the Lie–Euler and RKMK steps of the scheme (disc-grp) move g along exactly such a curve, it
+        stays on the group (a linear blend of matrices would leave SO(3)), and its error against the
+        smooth solution is O(h^2), no larger than the nodes' own error at order 1 or 2; v, mu, xi are
+        linear in s (O(h^2)). Collocation: g by the cubic Hermite interpolant in the chart g_k exp(X),
+        with X' from the body velocities u at both ends; xi by cubic Hermite with xi' = -ad*_v mu
+        (disc-aux); v and mu by not-a-knot cubic splines through the nodes (their derivatives need the
+        model). The measured orders are in python/tests/test_results.py."""
+        return _results.dense(self, t)
+
+    def to_json(self, path):
+        """Writes the result to `path` as the JSON of `cartan solve --output` (the same keys; NaN and
+        infinities as null), which `cartan verify path` checks and :func:`load` reads back. A
+        Lagrangian defined in Python is written as model "python:<type name>", which `cartan verify`
+        rejects (it cannot rebuild the model) and :func:`load` accepts."""
+        _results.to_json(self, path)
+
+    def plot(self, path=None):
+        """A matplotlib Figure (matplotlib is imported on first use): the path in the group (SO(3):
+        the body axes g e1, g e2, g e3 on the unit sphere; Heisenberg: a, b, c against t; SE(2), SE(3):
+        the translation), then v and mu against t, one line per component. With `path`, also saved
+        there (the format from its extension)."""
+        return _results.plot(self, path)
 
     def __repr__(self):
         return (f"SolveResult(status={self.status!r}, success={self.success}, method={self.method!r}, "
@@ -262,7 +322,31 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="no
     any work. Solves of built-in models run without the GIL (so that threads solve in parallel).
     Many problems at once, on threads, processes or a cluster: :func:`sweep`.
     """
-    return SolveResult(**_transported("_solve", locals()))
+    result = _transported("_solve", locals())
+    grp = _group_of(lagrangian, group, "solve")
+    result["model"], result["inertia"] = _results.describe_model(lagrangian, grp)
+    return SolveResult(**result, **grp._along(lagrangian, result, lam))
+
+
+def load(path):
+    """Reads a :class:`SolveResult` from the JSON `cartan solve --output` writes (or
+    :meth:`SolveResult.to_json`): every key is checked, and a bad or missing one raises ValueError
+    naming it; null (the CLI's NaN or infinity) becomes NaN. What the file does not hold is rebuilt:
+    v0 and xi0 are the first rows of v and xi, residual_history is empty, and u, P, energy and
+    cumulative_action come from the library as after a solve (for a built-in model, with the model
+    :func:`model_of` rebuilds; for "python:<name>" models energy and cumulative_action are None).
+    ``cartan.verify(r, cartan.model_of(r))`` then checks the file as `cartan verify` does."""
+    fields = _results.load_dict(path)
+    grp = _results._group_class(fields["group"], "cartan.load")
+    model = None if fields["model"].startswith(_results.PYTHON_MODEL) else _results.model_of(SimpleNamespace(**fields))
+    return SolveResult(**fields, **grp._along(model, fields, fields["lam"]))
+
+
+def model_of(result):
+    """The built-in model of a :class:`SolveResult` (e.g. one from :func:`load`), rebuilt from its
+    group, model name and inertia: ``cartan.verify(r, cartan.model_of(r))``. Raises ValueError for a
+    Lagrangian defined in Python (model "python:<type name>"), which a result cannot rebuild."""
+    return _results.model_of(result)
 
 
 def _transported(entry, arguments):

@@ -8,7 +8,8 @@
 // of a built-in model (which runs without the GIL) raises KeyboardInterrupt within one iteration.
 // A `progress` callable receives (stage, iteration, residual) once per iteration.
 // `<Group>._verify(...)`: the library's checks and verdict (include/cartan/verify/report.hpp) on a
-// result of any model, as a dict of VerifyReport's fields.
+// result of any model, as a dict of VerifyReport's fields. `<Group>._along(...)`: the transport
+// P_k, body velocity u_k, energy and cumulative action along a result (transported/along.hpp).
 
 #include <optional>
 #include <string>
@@ -18,6 +19,7 @@
 
 #include "bind_models.hpp"
 #include "report_dict.hpp"
+#include "cartan/transported/along.hpp"
 #include "cartan/transported/solve.hpp"
 #include "cartan/verify/report.hpp"
 
@@ -189,6 +191,20 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
     return report_dict(report);
   }, py::arg("lagrangian"), py::arg("result"), py::arg("lam"), py::arg("T"), py::arg("g0"), py::arg("gT"),
      py::arg("order"), py::arg("tol"), py::arg("status"));
+  group.def_static("_along", [a](const py::object& model, const py::object& result, double lambda) {
+    const transported::TransportedTrajectory<G> x = trajectory_of<G>(result, a, "along", "result", true);
+    const transported::AlongSolution<G> along =
+        model.is_none() ? transported::along_transport<G>(lambda, x)
+                        : visit_model<PythonLagrangian<G>, Models...>(model, [&](const auto& l) {
+                            return transported::along_solution<G>(l, lambda, x);
+                          });
+    py::dict d;
+    d["P"] = to_numpy(along.P);
+    d["u"] = to_numpy(along.u);
+    d["energy"] = model.is_none() ? py::object(py::none()) : py::object(to_numpy(along.energy));
+    d["cumulative_action"] = model.is_none() ? py::object(py::none()) : py::object(to_numpy(along.action));
+    return d;
+  }, py::arg("lagrangian"), py::arg("result"), py::arg("lam"));
 }
 
 }  // namespace cartan::python

@@ -50,6 +50,7 @@ def test_output_contract_fields_and_shapes():
                 "mu", "xi", "terminal_error", "iterations", "solve_time_s"]:
         assert key in d, key
     assert d["status"] == "converged"
+    assert (d["connection"], d["side"]) == ("cartan-schouten", "left")  # self-description (python/cartan/_results.py)
     assert set(d["iterations"]) == {"outer", "inner", "sweeps"}
     for key in ["t", "g", "v", "mu", "xi"]:
         assert len(d[key]) == 1001, key

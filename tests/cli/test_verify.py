@@ -229,6 +229,8 @@ def test_bad_files_exit_2(tmp_path, content, needle):
     (lambda d: d.update(group="se3"), "model = \"free-rigid-body\" is not one of: free-body"),
     (lambda d: d.update(T=-1), "T = -1 must be positive"),
     (lambda d: d.update(status="done"), "status = \"done\" is not one of"),
+    (lambda d: d.update(side="right"), "side = \"right\" must be \"left\""),
+    (lambda d: d.update(connection="torsion-free"), "connection = \"torsion-free\" is not one of"),
 ])
 def test_bad_content_exit_2(tmp_path, change, needle):
     path = solve(tmp_path, "--model", "free-rigid-body", *SO3_CASE)

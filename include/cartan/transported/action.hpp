@@ -19,9 +19,6 @@
 
 namespace cartan::transported {
 
-/// S_h of the path through g[k] at the increasing times t[k] (at least two; steps may differ in
-/// length). Throws std::invalid_argument for fewer than two nodes, sizes that differ, times that
-/// do not increase, or a non-finite lambda.
 namespace detail {
 
 /// Throws std::invalid_argument (naming `where`) for a non-finite lambda, fewer than two nodes,
@@ -49,14 +46,11 @@ inline std::vector<double> uniform_times(std::string_view where, double T, std::
   return t;
 }
 
-}  // namespace detail
-
-template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-double transported_action(const L& lagrangian, double lambda, const std::vector<double>& t,
-                          const std::vector<groups::ElementOf<G>>& g) {
-  detail::check_action_path<G>("transported_action", lambda, t, g);
+/// Calls add(h l_k) for each step k of S_h in turn (the midpoint terms above).
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L, class Add>
+void for_each_action_term(const L& lagrangian, double lambda, const std::vector<double>& t,
+                          const std::vector<groups::ElementOf<G>>& g, Add add) {
   groups::ElementOf<G> transport = G::identity();  // h_k with P_k = Ad(h_k)
-  double action = 0;
   for (std::size_t k = 0; k + 1 < g.size(); ++k) {
     const double h = t[k + 1] - t[k];
     const groups::TangentOf<G> u = groups::log_between<G>(g[k], g[k + 1]) / h;
@@ -66,10 +60,35 @@ double transported_action(const L& lagrangian, double lambda, const std::vector<
     const groups::ElementOf<G> half_step = transport::disc_exp_update<G>(lambda, h / 2, u, G::identity());
     const groups::ElementOf<G> transport_mid = G::compose(half_step, transport);
     const groups::TangentOf<G> v_mid = G::Ad(G::inverse(transport_mid)) * u;
-    action += h * lagrangian.value(t[k] + h / 2, g_mid, v_mid);
+    add(h * lagrangian.value(t[k] + h / 2, g_mid, v_mid));
     transport = G::compose(half_step, transport_mid);
   }
+}
+
+}  // namespace detail
+
+/// S_h of the path through g[k] at the increasing times t[k] (at least two; steps may differ in
+/// length). Throws std::invalid_argument for fewer than two nodes, sizes that differ, times that
+/// do not increase, or a non-finite lambda.
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+double transported_action(const L& lagrangian, double lambda, const std::vector<double>& t,
+                          const std::vector<groups::ElementOf<G>>& g) {
+  detail::check_action_path<G>("transported_action", lambda, t, g);
+  double action = 0;
+  detail::for_each_action_term<G>(lagrangian, lambda, t, g, [&](double term) { action += term; });
   return action;
+}
+
+/// S_h over the first k steps, k = 0..N: out[0] = 0 and out[N] = transported_action (the same sum
+/// in the same order, so bit-identical). Throws as transported_action.
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+std::vector<double> cumulative_transported_action(const L& lagrangian, double lambda, const std::vector<double>& t,
+                                                  const std::vector<groups::ElementOf<G>>& g) {
+  detail::check_action_path<G>("cumulative_transported_action", lambda, t, g);
+  std::vector<double> out{0.0};
+  out.reserve(g.size());
+  detail::for_each_action_term<G>(lagrangian, lambda, t, g, [&](double term) { out.push_back(out.back() + term); });
+  return out;
 }
 
 /// S_h of the path through g[0..N] at the uniform times k T / N over [0, T] (N >= 1). Throws

@@ -25,7 +25,7 @@
 #include "cartan/mechanics/lagrangian_hessian.hpp"
 #include "cartan/transported/scheme.hpp"
 #include "cartan/transported/action.hpp"
-#include "cartan/transport/disc_exp.hpp"
+#include "cartan/transported/along.hpp"
 
 namespace cartan::verify {
 
@@ -75,14 +75,8 @@ class TrajectoryChecks {
   /// velocity; exact for both shooting schemes, whose steps are g_{k+1} = g_k exp(h u), and
   /// second order otherwise; exact on H3, where P depends on g - g0 only, para-trans-Heis).
   TrajectoryChecks(L lagrangian, double lambda, double T, transported::TransportedTrajectory<G> trajectory)
-      : l_(std::move(lagrangian)), lambda_(lambda), T_(T), x_(std::move(trajectory)) {
-    const std::size_t m = x_.t.size();
-    transport_.reserve(m);
-    transport_.push_back(G::identity());
-    for (std::size_t k = 0; k + 1 < m; ++k) {
-      transport_.push_back(transport::disc_exp_update<G>(lambda_, 1.0, step_log(k), transport_.back()));
-    }
-  }
+      : l_(std::move(lagrangian)), lambda_(lambda), T_(T), x_(std::move(trajectory)),
+        transport_(transported::transport_elements<G>(lambda_, x_.g)) {}
 
   std::size_t size() const { return x_.t.size(); }
   const transported::TransportedTrajectory<G>& trajectory() const { return x_; }
