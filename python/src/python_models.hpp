@@ -115,10 +115,13 @@ class PythonModel {
     const std::string who = kind_ + "." + names_[index];
     return guarded_callback(*state_, who, [&] {
       // A non-finite value from finite arguments is named at once (require_finite_result).
-      return mechanics::require_finite_result(FromPython<R>::convert(methods_[index](t, to_numpy(g), to_numpy(x)), who),
-                                              who, t, g, x);
+      R result = FromPython<R>::convert(methods_[index](t, to_numpy(g), to_numpy(x)), who);
+      return require_finite_ ? mechanics::require_finite_result(result, who, t, g, x) : result;
     });
   }
+
+  /// false: a non-finite result is returned as it is (check_lagrangian reports it).
+  bool require_finite_ = true;
 
  private:
   py::object object_;
@@ -149,6 +152,18 @@ class PythonLagrangian : public PythonModel {
   mechanics::LagrangianHessian<G> hessian(double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) const {
     if (!has(4)) return mechanics::lagrangian_hessian_fd<G>(*this, t, g, v);
     return call<mechanics::LagrangianHessian<G>>(4, t, g, v);
+  }
+  /// Whether the object has its own hessian (what check_lagrangian checks).
+  bool has_hessian() const { return has(4); }
+};
+
+/// A Python Lagrangian as check_lagrangian sees it: non-finite results are returned (and
+/// reported by the check), not raised; a Python exception is still re-raised.
+template <groups::LieGroup G>
+class CheckedPythonLagrangian : public PythonLagrangian<G> {
+ public:
+  explicit CheckedPythonLagrangian(const py::object& object) : PythonLagrangian<G>(object) {
+    this->require_finite_ = false;
   }
 };
 
