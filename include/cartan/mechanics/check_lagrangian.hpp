@@ -48,6 +48,7 @@
 #include <utility>
 #include <vector>
 
+#include "cartan/groups/side.hpp"
 #include "cartan/mechanics/check_report.hpp"
 #include "cartan/mechanics/lagrangian.hpp"
 #include "cartan/mechanics/lagrangian_hessian.hpp"
@@ -106,7 +107,7 @@ std::vector<LagrangianSample<G>> lagrangian_samples(const CheckLagrangianOptions
 namespace detail {
 
 /// A central difference of f (a vector-valued function of the step e) at e = 0, with the
-/// estimate of its own absolute error (the header's comment) and the largest |f| it saw.
+/// estimate of its own absolute error (the header's comment).
 template <class F>
 auto central_difference(const F& f, double h) {
   const auto plus = f(h), minus = f(-h), plus2 = f(2 * h), minus2 = f(-2 * h);
