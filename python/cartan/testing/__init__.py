@@ -20,7 +20,7 @@ model").
 Relative discrepancies ``|a - b| / max(|a|, |b|, floor)``, with floor the largest term that enters
 the identity (so that cancelling terms are measured against their own size, and the scale of the
 object does not matter). Exact identities fail above 1e-10 (rounding of a few dozen flops on the
-terms is ~1e-15); identities with central differences (step 1e-5 (1 + |q|): error ~1e-10) above
+terms is ~1e-15); identities with central differences (step ``1e-5 (1 + |q|)``: error ~1e-10) above
 max(1e-6, 10 x the differences' estimated error), as in the C++ check_lagrangian.
 """
 import numpy as np
