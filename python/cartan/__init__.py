@@ -20,6 +20,9 @@ Models
     SE3FreeBodyHamiltonian``. Any Python object with the methods ``value(t, g, v),
     momentum(t, g, v), group_gradient(t, g, v), velocity(t, g, mu)`` (and a ``group``
     attribute, or pass ``group=``) is a Lagrangian; see :func:`solve`.
+Checking your own model
+    :func:`check_lagrangian` compares a Lagrangian's callbacks with finite differences of each
+    other (a :class:`CheckReport`); :mod:`cartan.testing` adds checks of connections and charts.
 Integrators
     :func:`euler_poincare` (eq:EP-left, eq:EP-right), :func:`lie_poisson` (eq:LP-left, eq:LP-right).
 The transported-velocity boundary-value problem (eq:reduced-system)
@@ -95,7 +98,7 @@ __all__ = [
     "RigidBodyHamiltonian", "SO3OscillatorHamiltonian", "SpatialRigidBodyHamiltonian", "H3OscillatorHamiltonian",
     "SE2FreeBodyHamiltonian", "SE3FreeBodyHamiltonian",
     "Trajectory", "SolveResult", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve", "sweep",
-    "VerifyReport", "verify", "load", "model_of",
+    "VerifyReport", "verify", "load", "model_of", "CheckReport", "check_lagrangian",
     "BvpResult", "solve_bvp",
     "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "Chart", "MANIFOLDS", "GeneralSolveResult", "solve_general",
     "verify_general",
@@ -475,8 +478,15 @@ def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, poten
     return GeneralSolveResult(**_cartan._solve_general(manifold, request))
 
 
+class _Printed:
+    """A report whose ``str`` is its ``text``."""
+
+    def __str__(self):
+        return self.text
+
+
 @dataclass
-class VerifyReport:
+class VerifyReport(_Printed):
     """The verdict of :func:`verify` (the same checks and thresholds as `cartan verify`;
     docs/verify.md): passed (every check passes), verdict ("PASS" or "FAIL"), resolution
     rho = h omega, order p of the thresholds, amplification a (the lambda factor), checks (a list of
@@ -489,9 +499,6 @@ class VerifyReport:
     amplification: float
     checks: list
     text: str = field(repr=False)
-
-    def __str__(self):
-        return self.text
 
 
 def verify_general(result, manifold, *, inertia=None, potential=None, potential_gradient=None, gravity=None,
@@ -522,6 +529,57 @@ def verify(result, lagrangian, *, group=None):
     d = grp._verify(lagrangian, result, result.lam, result.T, result.g0, result.gT, result.order, result.tol,
                     result.status)
     return VerifyReport(**d)
+
+
+@dataclass
+class CheckReport(_Printed):
+    """The report of :func:`check_lagrangian` and of the checks in :mod:`cartan.testing`: ok (every
+    check passed), samples (how many sample points), checks (one dict per check: callback (the
+    callback checked, e.g. "group_gradient" or "hessian.gradient_g"), reference (what it is
+    compared with), checked (False when there is nothing to check), ok, discrepancy (the largest
+    relative discrepancy over the samples), reference_error (the relative error of the reference
+    itself there, e.g. of the finite differences), threshold, sample (its index, -1 for none), at
+    (that sample), note (a non-finite value or an exception)), and text (also ``str(report)``),
+    which names each failing callback and the size of its discrepancy."""
+    ok: bool
+    samples: int
+    checks: list
+    text: str = field(repr=False)
+
+    @property
+    def failing(self):
+        """The callbacks whose check failed, in order."""
+        return [c["callback"] for c in self.checks if not c["ok"]]
+
+
+def check_lagrangian(model, group=None, *, samples=8, seed=20261122, scale=1.0, side=None):
+    """Checks a Lagrangian's callbacks against each other (the C++ mechanics::check_lagrangian,
+    include/cartan/mechanics/check_lagrangian.hpp) and returns a :class:`CheckReport`:
+
+    - momentum against central differences of value along v + e E_i,
+    - group_gradient against central differences of value along g exp(e E_i) (``side="right"``:
+      exp(e E_i) g),
+    - velocity against the inverse of momentum (velocity(momentum(v)) = v, momentum(velocity(mu)) = mu),
+    - the model's own hessian, if it has one, block by block against central differences of momentum
+      and group_gradient (the solvers otherwise difference them; :func:`lagrangian_hessian`).
+
+    Discrepancies are relative, with the differences' own error estimate as floor, so that the
+    scale of the model does not matter; a derivative fails above a relative 1e-6 (or ten times the
+    differences' error where that is larger; they are accurate to about 1e-10), the inverse above
+    1e-8. A sign error or a wrong factor gives a discrepancy of order 1.
+
+    model: a built-in Lagrangian or a Python object as for :func:`solve` (value, momentum,
+    group_gradient, velocity and optionally hessian); its group is `group` or its ``group``
+    attribute. samples: a count of seeded pseudo-random points (t in [0, scale], g = exp(w) and v
+    with coordinates in [-scale, scale]; `seed`), or a sequence of (t, g, v) triples. side: how
+    group_gradient is trivialised, "left" or "right" (default: the model's ``side`` attribute, else
+    "left"). A non-finite value is reported (note) rather than raised; an exception raised in a
+    Python callback is re-raised."""
+    grp = _group_of(model, group, "check_lagrangian")
+    side = side if side is not None else getattr(model, "side", "left")
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or not 0 <= seed < 2**32:
+        raise ValueError(f"cartan.check_lagrangian: seed = {seed!r} is not an integer in [0, 2**32)")
+    return CheckReport(**grp._check_lagrangian(model, samples, int(seed), scale, side))
 
 
 def __getattr__(name):

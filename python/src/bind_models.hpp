@@ -7,10 +7,12 @@
 #include <string>
 
 #include "bind_group.hpp"
+#include "cartan/mechanics/check_lagrangian.hpp"
 #include "cartan/mechanics/euler_poincare.hpp"
 #include "cartan/mechanics/lagrangian_hessian.hpp"
 #include "cartan/mechanics/lie_poisson.hpp"
 #include "python_models.hpp"
+#include "report_dict.hpp"
 
 namespace cartan::python {
 
@@ -96,8 +98,38 @@ py::dict trajectory_dict(const mechanics::Trajectory<G>& tr) {
   return d;
 }
 
+/// The samples of cartan.check_lagrangian: a count (seeded samples of options) or a sequence of
+/// (t, g, v) triples.
+template <groups::LieGroup G>
+std::vector<mechanics::LagrangianSample<G>> check_samples(const py::object& samples, mechanics::CheckLagrangianOptions options,
+                                                          const Args<G>& a) {
+  const std::string where = "check_lagrangian";
+  const auto repr_of = [](const py::handle& x) { return quote_input(py::repr(x).cast<std::string>()); };
+  if (py::isinstance<py::int_>(samples) && !py::isinstance<py::bool_>(samples)) {
+    options.samples = samples.cast<int>();
+    return mechanics::lagrangian_samples<G>(options);
+  }
+  if (!py::isinstance<py::sequence>(samples) || py::isinstance<py::str>(samples)) {
+    throw_invalid("cartan." + where, "samples", repr_of(samples), "is neither a count nor a sequence of (t, g, v)");
+  }
+  std::vector<mechanics::LagrangianSample<G>> out;
+  for (const auto& item : py::reinterpret_borrow<py::sequence>(samples)) {
+    const std::string name = "samples[" + std::to_string(out.size()) + "]";
+    if (!py::isinstance<py::sequence>(item) || py::len(item) != 3) {
+      throw_invalid("cartan." + where, name, repr_of(item), "is not a triple (t, g, v)");
+    }
+    const py::sequence triple = py::reinterpret_borrow<py::sequence>(item);
+    const py::object t = triple[0];
+    if (!py::isinstance<py::float_>(t) && !py::isinstance<py::int_>(t)) {
+      throw_invalid("cartan." + where, name + "[0]", repr_of(t), "is not a number (the time t)");
+    }
+    out.push_back({t.cast<double>(), a.element(triple[1], where, name + "[1]"), a.tangent(triple[2], where, name + "[2]")});
+  }
+  return out;
+}
+
 /// Static methods of the group class that take a model, built-in (one of the listed types) or
-/// written in Python: _euler_poincare, _lie_poisson, _lagrangian_hessian.
+/// written in Python: _euler_poincare, _lie_poisson, _lagrangian_hessian, _check_lagrangian.
 template <groups::LieGroup G, class... Lagrangians, class... Hamiltonians>
 void bind_mechanics(GroupClass<G>& group, const std::string& name, Types<Lagrangians...>, Types<Hamiltonians...>) {
   const Args<G> a{name};
@@ -130,6 +162,16 @@ void bind_mechanics(GroupClass<G>& group, const std::string& name, Types<Lagrang
     d["gradient_g"] = to_numpy(h.gradient_g);
     return d;
   }, py::arg("lagrangian"), py::arg("t"), py::arg("g"), py::arg("v"));
+  group.def_static("_check_lagrangian", [a](const py::object& model, const py::object& samples, std::uint32_t seed,
+                                            double scale, const std::string& side) {
+    mechanics::CheckLagrangianOptions options;
+    options.seed = seed;
+    options.scale = scale;
+    options.side = parse_side(side, "cartan.check_lagrangian");
+    const auto points = check_samples<G>(samples, options, a);
+    return check_report_dict(visit_model<CheckedPythonLagrangian<G>, Lagrangians...>(
+        model, [&](const auto& l) { return mechanics::check_lagrangian<G>(l, points, options.side); }));
+  }, py::arg("lagrangian"), py::arg("samples"), py::arg("seed"), py::arg("scale"), py::arg("side"));
 }
 
 }  // namespace cartan::python

@@ -122,6 +122,10 @@ PYBIND11_MODULE(_cartan, m) {
       .def_readwrite("samples", &cartan::python::SolveRequest::samples)
       .def_readwrite("max_nodes", &cartan::python::SolveRequest::max_nodes);
   m.attr("statuses") = cartan::enum_words<cartan::Status>();
+  m.def("_check_report", [](const std::string& title, const pybind11::list& checks, int samples) {
+    return cartan::python::check_report_dict(cartan::python::check_report_of(title, checks, samples));
+  }, pybind11::arg("title"), pybind11::arg("checks"), pybind11::arg("samples"),
+     "A CheckReport's dict from the dicts of its checks (cartan.testing), printed by the C++ CheckReport::text.");
   cartan::python::bind_so3(m);
   cartan::python::bind_heisenberg(m);
   cartan::python::bind_se3(m);

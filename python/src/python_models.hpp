@@ -131,8 +131,8 @@ class PythonModel {
     const std::string who = kind_ + "." + names_[index];
     return guarded_callback(*state_, who, [&] {
       // A non-finite value from finite arguments is named at once (require_finite_result).
-      return mechanics::require_finite_result(FromPython<R>::convert(methods_[index](t, to_numpy(g), to_numpy(x)), who),
-                                              who, t, g, x);
+      R result = FromPython<R>::convert(methods_[index](t, to_numpy(g), to_numpy(x)), who);
+      return require_finite_ ? mechanics::require_finite_result(result, who, t, g, x) : result;
     });
   }
 
@@ -148,12 +148,15 @@ class PythonModel {
       const std::array<R, K> out = batch_values<R, K>(
           methods_[index](times, to_numpy(std::vector<E>(g.begin(), g.end())), to_numpy(std::vector<X>(x.begin(), x.end()))),
           who);
-      for (std::size_t k = 0; k < K; ++k) mechanics::require_finite_result(out[k], who, t, g[k], x[k]);
+      for (std::size_t k = 0; require_finite_ && k < K; ++k) mechanics::require_finite_result(out[k], who, t, g[k], x[k]);
       return out;
     });
   }
 
   bool vectorized() const { return vectorized_; }
+
+  /// false: a non-finite result is returned as it is (check_lagrangian reports it).
+  bool require_finite_ = true;
 
  private:
   py::object object_;
@@ -189,6 +192,18 @@ class PythonLagrangian : public PythonModel {
     const mechanics::HessianStencil<G> s = mechanics::hessian_stencil<G>(g, v);
     return mechanics::hessian_from_stencil<G>(s, call_batch<groups::CovectorOf<G>>(1, t, s.g, s.v),
                                               call_batch<groups::CovectorOf<G>>(2, t, s.g, s.v));
+  }
+  /// Whether the object has its own hessian (what check_lagrangian checks).
+  bool has_hessian() const { return has(4); }
+};
+
+/// A Python Lagrangian as check_lagrangian sees it: non-finite results are returned (and
+/// reported by the check), not raised; a Python exception is still re-raised.
+template <groups::LieGroup G>
+class CheckedPythonLagrangian : public PythonLagrangian<G> {
+ public:
+  explicit CheckedPythonLagrangian(const py::object& object) : PythonLagrangian<G>(object) {
+    this->require_finite_ = false;
   }
 };
 

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "bindings.hpp"
+#include "cartan/mechanics/check_report.hpp"
 #include "cartan/transported/solution.hpp"
 #include "cartan/verify/report.hpp"
 
@@ -29,6 +30,44 @@ inline py::dict report_dict(const verify::Report& report) {
   d["checks"] = checks;
   d["text"] = report.text();
   return d;
+}
+
+/// The report of mechanics::check_lagrangian as a dict (python/cartan/__init__.py, CheckReport):
+/// ok, samples, text and checks, a list of dicts with CallbackCheck's fields.
+inline py::dict check_report_dict(const mechanics::CheckReport& report) {
+  py::list checks;
+  for (const auto& c : report.checks) {
+    py::dict d;
+    d["callback"] = c.callback, d["reference"] = c.reference, d["checked"] = c.checked, d["ok"] = c.ok;
+    d["discrepancy"] = c.discrepancy, d["reference_error"] = c.reference_error, d["threshold"] = c.threshold;
+    d["sample"] = c.sample, d["at"] = c.at, d["note"] = c.note;
+    checks.append(d);
+  }
+  py::dict d;
+  d["ok"] = report.ok();
+  d["samples"] = report.samples;
+  d["checks"] = checks;
+  d["text"] = report.text();
+  return d;
+}
+
+/// The inverse: a report from such dicts (the checks that cartan.testing runs in Python), so that
+/// every report is printed by CheckReport::text.
+inline mechanics::CheckReport check_report_of(const std::string& title, const py::list& checks, int samples) {
+  mechanics::CheckReport report;
+  report.title = title;
+  report.samples = samples;
+  for (const auto& item : checks) {
+    const py::dict d = py::reinterpret_borrow<py::dict>(item);
+    mechanics::CallbackCheck c;
+    c.callback = d["callback"].cast<std::string>(), c.reference = d["reference"].cast<std::string>();
+    c.checked = d["checked"].cast<bool>(), c.ok = d["ok"].cast<bool>();
+    c.discrepancy = d["discrepancy"].cast<double>(), c.reference_error = d["reference_error"].cast<double>();
+    c.threshold = d["threshold"].cast<double>(), c.sample = d["sample"].cast<int>();
+    c.at = d["at"].cast<std::string>(), c.note = d["note"].cast<std::string>();
+    report.checks.push_back(c);
+  }
+  return report;
 }
 
 /// mesh_size and max_residual of a collocation result, None for the other methods.

@@ -18,10 +18,12 @@ def test_installed_package_imports(tmp_path):
     assert len(sites) == 1, sites
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     env["PYTHONPATH"] = str(sites[0])
-    code = "import cartan; print(cartan.__file__); print(cartan.SO3.log(cartan.SO3.exp([0.1, 0.2, 0.3])))"
+    code = ("import cartan, cartan.testing; print(cartan.__file__); print(cartan.testing.__file__); "
+            "print(cartan.SO3.log(cartan.SO3.exp([0.1, 0.2, 0.3])))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, cwd=tmp_path)
     assert out.returncode == 0, out.stderr
     assert out.stdout.startswith(str(sites[0] / "cartan"))
+    assert str(sites[0] / "cartan" / "testing" / "__init__.py") in out.stdout  # the subpackage is installed
     assert "[0.1 0.2 0.3]" in out.stdout
 
 

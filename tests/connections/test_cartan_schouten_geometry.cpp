@@ -20,7 +20,8 @@
 #include "cartan/mechanics/geodesic.hpp"
 #include "cartan/mechanics/rigid_body.hpp"
 #include "cartan/transport/parallel_transport.hpp"
-#include "connections/connection_identities.hpp"
+#include "cartan/testing/connection_identities.hpp"
+#include "test_support.hpp"
 #include "mechanics/mechanics_support.hpp"
 
 namespace cartan::testing {

@@ -1,5 +1,8 @@
 // Invariant connections and the Cartan–Schouten family, typed over every group.
-#include "connections/connection_identities.hpp"
+#include <gtest/gtest-spi.h>
+
+#include "cartan/testing/connection_identities.hpp"
+#include "test_support.hpp"
 #include "groups/all_groups.hpp"
 
 namespace cartan::testing {
@@ -82,6 +85,53 @@ TYPED_TEST(ConnectionTest, BianchiIdentityForRandomConnections) {
       EXPECT_LE(bianchi_defect<G>(conn, u, v, w).norm(), 1e-12) << to_string(side);
     }
   }
+}
+
+// The installed helper (cartan/testing/connection_identities.hpp) passes on every Cartan–Schouten
+// and random connection, both sides.
+TYPED_TEST(ConnectionTest, InstalledIdentitiesHold) {
+  using G = TypeParam;
+  std::mt19937 rng(kSeed + 12);
+  for (groups::Side side : {groups::Side::Left, groups::Side::Right}) {
+    for (double lambda : kLambdas) expect_connection_identities<G>(connections::cartan_schouten<G>(lambda, side));
+    expect_connection_identities<G>(random_connection<G>(side, rng));
+  }
+}
+
+/// A user's connection class whose curvature drops the term -nabla_[u,v] w: the installed helper
+/// must report the curvature formula and the Bianchi identity (a random, non-Cartan map, for which
+/// cyc nabla_[u,v] w does not vanish by Jacobi as it does for lambda ad), and nothing about the torsion.
+struct CurvatureWithoutBracketTerm {
+  static connections::InvariantConnection<groups::SO3> make() {
+    std::mt19937 rng(kSeed + 13);
+    return random_connection<groups::SO3>(groups::Side::Left, rng);
+  }
+  connections::InvariantConnection<groups::SO3> c = make();
+  groups::Side side() const { return c.side(); }
+  Eigen::Vector3d nabla(const Eigen::Vector3d& u, const Eigen::Vector3d& w) const { return c.nabla(u, w); }
+  Eigen::Vector3d torsion(const Eigen::Vector3d& v, const Eigen::Vector3d& w) const { return c.torsion(v, w); }
+  Eigen::Vector3d curvature(const Eigen::Vector3d& u, const Eigen::Vector3d& v, const Eigen::Vector3d& w) const {
+    return c.nabla(u, c.nabla(v, w)) - c.nabla(v, c.nabla(u, w));
+  }
+};
+
+TEST(InstalledConnectionIdentities, ReportAWrongCurvature) {
+  ::testing::TestPartResultArray failures;
+  {
+    ::testing::ScopedFakeTestPartResultReporter reporter(
+        ::testing::ScopedFakeTestPartResultReporter::INTERCEPT_ONLY_CURRENT_THREAD, &failures);
+    expect_connection_identities<groups::SO3>(CurvatureWithoutBracketTerm{});
+  }
+  int curvature = 0, bianchi = 0, torsion = 0;
+  for (int i = 0; i < failures.size(); ++i) {
+    const std::string message = failures.GetTestPartResult(i).message();
+    curvature += message.find("curvature formula") != std::string::npos;
+    bianchi += message.find("first Bianchi identity") != std::string::npos;
+    torsion += message.find("torsion") != std::string::npos;
+  }
+  EXPECT_EQ(curvature, 10);  // every trial: the dropped term is generically nonzero
+  EXPECT_GT(bianchi, 0);
+  EXPECT_EQ(torsion, 0);
 }
 
 // Bi-invariance (CS-conn-right): the left description lambda ad and the right description

@@ -13,7 +13,7 @@
 #include "cartan/groups/se2.hpp"
 #include "cartan/groups/se3.hpp"
 #include "cartan/groups/so3.hpp"
-#include "groups/group_axioms.hpp"  // sample_tangents
+#include "cartan/testing/group_axioms.hpp"  // sample_tangents
 #include "test_support.hpp"
 
 namespace cartan::testing {

@@ -1,6 +1,6 @@
 # Installs the built cartan into a fresh prefix, then configures, builds and runs a consumer
-# project that only uses find_package(cartan). Invoked by ctest with -DBUILD_DIR, -DSOURCE_DIR,
-# -DWORK_DIR.
+# project that only uses find_package(cartan) (and GoogleTest, for the installed test helpers).
+# Invoked by ctest with -DBUILD_DIR, -DSOURCE_DIR, -DWORK_DIR.
 file(REMOVE_RECURSE "${WORK_DIR}")
 execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${WORK_DIR}/prefix"
                 RESULT_VARIABLE rc)
@@ -17,7 +17,9 @@ execute_process(COMMAND "${CMAKE_COMMAND}" --build "${WORK_DIR}/build" RESULT_VA
 if(rc)
   message(FATAL_ERROR "consumer build failed: ${rc}")
 endif()
-execute_process(COMMAND "${WORK_DIR}/build/consumer" RESULT_VARIABLE rc)
-if(rc)
-  message(FATAL_ERROR "consumer run failed: ${rc}")
-endif()
+foreach(program consumer consumer_testing)
+  execute_process(COMMAND "${WORK_DIR}/build/${program}" RESULT_VARIABLE rc)
+  if(rc)
+    message(FATAL_ERROR "${program} run failed: ${rc}")
+  endif()
+endforeach()

@@ -9,7 +9,7 @@
 #include "cartan/connections/cartan_schouten.hpp"
 #include "cartan/transport/disc_exp.hpp"
 #include "cartan/transport/parallel_transport.hpp"
-#include "connections/connection_identities.hpp"
+#include "cartan/testing/connection_identities.hpp"
 #include "groups/all_groups.hpp"
 #include "test_support.hpp"
 

@@ -1,12 +1,31 @@
 #pragma once
-// Reusable checks of the Lie group concept (STYLE.md practice 5), run as typed tests over every
-// group. Each compares the group's own formulas with an independent reference: the matrix
-// representation, Eigen's matrix exponential, or finite differences.
+// Reusable checks of the Lie group concept (STYLE.md practice 5), installed for users who write
+// their own group (docs/user-guide.md, "Checking your own model"), as Ceres ships its manifold
+// invariants. GoogleTest expectations; the group's own formulas are compared with independent
+// references: the matrix representation G::matrix, Eigen's matrix exponential of G::hat, and
+// central differences.
+//
+//   #include <cartan/testing/group_axioms.hpp>
+//   TEST(MyGroup, IsALieGroup) { cartan::testing::expect_lie_group<MyGroup>(); }
+//
+// Each check runs at the identity, at a point 1e-8 from it and at 20 seeded random points with
+// coordinates in [-1, 1] (sample_tangents). Tolerances are absolute, for elements of entries of
+// size <= e^2 (rounding of a handful of flops: 1e-13 to 1e-12; differences: 1e-9 to 1e-8, see
+// each function), so a group whose matrices have entries far above 1 needs its own scaling.
+//   expect_group_axioms            compose = matrix product, associativity, identity, inverse
+//   expect_exp_log                 exp = matrix exponential of hat, log inverts exp, vee inverts hat
+//   expect_adjoint                 Ad_g v = vee(g hat(v) g^-1), Ad a homomorphism, Ad_{exp u} = exp(ad_u)
+//   expect_ad_and_coad             ad_u v = vee([hat u, hat v]), ad = d Ad, Jacobi, ad* = ad^T
+//   expect_translations            left/right translations and trivialisations, of vectors and covectors
+//   expect_left_jacobian_is_the_series  groups::left_jacobian against sum ad^k / (k+1)!
+//   expect_lie_group               all of the above
+// Needs GoogleTest (link GTest::gtest); the library never includes cartan/testing/.
 
 #include <unsupported/Eigen/MatrixFunctions>
+#include <vector>
 
 #include "cartan/groups/exp_jacobian.hpp"
-#include "test_support.hpp"
+#include "cartan/testing/support.hpp"
 
 namespace cartan::testing {
 
@@ -146,6 +165,17 @@ void expect_left_jacobian_is_the_series() {
     EXPECT_NEAR_MATRIX(G::matrix(e), G::matrix(G::exp(x)), 0.0) << "|x| = " << size;
     EXPECT_NEAR_MATRIX(j, groups::left_jacobian<G>(x), 1e-15 * (1 + size * size)) << "|x| = " << size;
   }
+}
+
+/// Every check above.
+template <groups::LieGroup G>
+void expect_lie_group() {
+  expect_group_axioms<G>();
+  expect_exp_log<G>();
+  expect_adjoint<G>();
+  expect_ad_and_coad<G>();
+  expect_translations<G>();
+  expect_left_jacobian_is_the_series<G>();
 }
 
 }  // namespace cartan::testing
