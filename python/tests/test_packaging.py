@@ -55,6 +55,7 @@ def test_build_jobs_from_the_environment():
 
 def copy_source(target):
     """The files `pip install .` reads, copied from this working tree (uncommitted changes included)."""
+    target.mkdir()
     for name in ("setup.py", "pyproject.toml", "README.md", "CMakeLists.txt"):
         (target / name).write_bytes((ROOT / name).read_bytes())
     for file in pip_install.source_package_files(ROOT):
