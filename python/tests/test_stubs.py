@@ -19,8 +19,8 @@ import generate_stubs  # noqa: E402
 
 STUB = ROOT / "python" / "cartan" / "_cartan.pyi"
 EXAMPLES = Path(__file__).resolve().parent / "typing"
-REGENERATE = ("after changing the bindings (python/src): rebuild cartan_python, run "
-              "`PYTHONPATH=build/python /usr/bin/python3 scripts/generate_stubs.py` and commit python/cartan/_cartan.pyi")
+REGENERATE = ("after changing the bindings (python/src): rebuild cartan_python, run `PYTHONPATH=build/python "
+              "/usr/bin/python3 scripts/generate_stubs.py` and commit python/cartan/_cartan.pyi")
 
 
 @pytest.fixture(scope="module")
