@@ -87,3 +87,27 @@ def test_mypy_accepts_right_calls_and_rejects_wrong_ones(mypy_env):
     assert set(found) == set(expected), f"mypy: {done.stdout}{done.stderr}\n{REGENERATE}"
     for line, message in expected.items():
         assert found[line].startswith(message), (line, found[line])
+
+
+def test_generator_reads_pybind11_signatures():
+    # What the module does not use today but new bindings may: shapes, callables, defaults with
+    # commas, keyword-only markers, overloads, and a C++ type pybind11 could not name.
+    assert generate_stubs.annotation("numpy.ndarray[numpy.float64[3, 1], flags.writeable]") == "NDArray[numpy.float64]"
+    assert generate_stubs.annotation("Callable[[float, numpy.ndarray[numpy.float64]], None]") \
+        == "Callable[[float, NDArray[numpy.float64]], None]"
+    assert generate_stubs.annotation("Dict[str, cartan._cartan.SO3.Connection]") == "Dict[str, SO3.Connection]"
+    with pytest.raises(ValueError, match="cartan::Foo"):
+        generate_stubs.annotation("cartan::Foo")
+    name, params, result = generate_stubs.parse_signature(
+        "f(self: cartan._cartan.X, a: Tuple[int, int] = (1, 2), *, b: str = 'x, y') -> List[float]")
+    assert (name, result) == ("f", "List[float]")
+    assert [generate_stubs.parameter(p, i, True) for i, p in enumerate(params)] \
+        == ["self", "a: Tuple[int, int] = ...", "*", "b: str = ..."]
+
+    def overloaded():
+        pass
+    overloaded.__doc__ = ("overloaded(*args, **kwargs)\nOverloaded function.\n\n1. overloaded(x: int) -> int\n\nOn ints."
+                          "\n\n2. overloaded(x: float) -> float\n")
+    assert generate_stubs.function_stub("overloaded", overloaded, "", None) == (
+        '@overload\ndef overloaded(x: int) -> int:\n    """On ints."""\n'
+        "@overload\ndef overloaded(x: float) -> float: ...\n")
