@@ -106,8 +106,8 @@ def test_generator_reads_pybind11_signatures():
 
     def overloaded():
         pass
-    overloaded.__doc__ = ("overloaded(*args, **kwargs)\nOverloaded function.\n\n1. overloaded(x: int) -> int\n\nOn ints."
-                          "\n\n2. overloaded(x: float) -> float\n")
+    overloaded.__doc__ = ("overloaded(*args, **kwargs)\nOverloaded function.\n\n"
+                          "1. overloaded(x: int) -> int\n\nOn ints.\n\n2. overloaded(x: float) -> float\n")
     assert generate_stubs.function_stub("overloaded", overloaded, "", None) == (
         '@overload\ndef overloaded(x: int) -> int:\n    """On ints."""\n'
         "@overload\ndef overloaded(x: float) -> float: ...\n")
