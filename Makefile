@@ -8,7 +8,7 @@ FUZZ_RUNS ?= 1000000
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps deps-docs docs build build-asan build-fuzz fuzz test test-release test-asan test-fuzz run bench clean
+.PHONY: all deps deps-docs docs build build-asan build-fuzz fuzz test test-release test-asan test-fuzz test-install run bench clean
 
 all: build
 
@@ -37,8 +37,9 @@ build-asan: deps
 	  -DCARTAN_BUILD_BENCH=OFF $(CMAKE_FLAGS)
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
 
+# Label `install` (the fresh-clone `pip install`, which compiles everything again): make test-install.
 test-release: build deps-docs
-	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -LE install
 
 test-asan: build-asan
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
@@ -61,6 +62,12 @@ fuzz: build-asan
 	done
 
 test: test-release test-asan test-fuzz
+
+# `pip install --no-build-isolation` of a fresh clone of HEAD into a fresh virtual environment, then
+# `import cartan` from elsewhere (tests/package/pip_install.py; compiles the module: ~15-20 CPU-minutes).
+test-install: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+	CMAKE_BUILD_PARALLEL_LEVEL=$(JOBS) ctest --test-dir $(BUILD) --output-on-failure -L install
 
 run: build
 	bash scripts/run-experiments.sh $(BUILD)

@@ -16,6 +16,10 @@ def test_installed_package_imports(tmp_path):
                    capture_output=True, text=True)
     sites = list(prefix.glob("lib*/python3*/site-packages"))
     assert len(sites) == 1, sites
+    # The stubs of the compiled module and the PEP 561 marker go with it (python/CMakeLists.txt).
+    stub = "cartan/_cartan.pyi"
+    assert (sites[0] / stub).read_bytes() == (ROOT / "python" / stub).read_bytes()
+    assert (sites[0] / "cartan" / "py.typed").exists()
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     env["PYTHONPATH"] = str(sites[0])
     code = ("import cartan, cartan.testing; print(cartan.__file__); print(cartan.testing.__file__); "
