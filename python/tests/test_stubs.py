@@ -80,7 +80,7 @@ def test_mypy_accepts_right_calls_and_rejects_wrong_ones(mypy_env):
             continue
         match = re.match(r"(.*?):(\d+): error: (.*)", line)
         assert match, f"unexpected mypy output: {line}"
-        assert Path(match.group(1)).resolve() == wrong, f"mypy rejects the right use: {line}\n{REGENERATE}"
+        assert (ROOT / match.group(1)).resolve() == wrong, f"mypy rejects the right use: {line}\n{REGENERATE}"
         found[int(match.group(2))] = match.group(3)
     expected = expected_errors(wrong)
     assert len(expected) == 4
