@@ -52,6 +52,7 @@
 #include "cartan/mechanics/check_report.hpp"
 #include "cartan/mechanics/lagrangian.hpp"
 #include "cartan/mechanics/lagrangian_hessian.hpp"
+#include "cartan/mechanics/lie_group_integrator.hpp"
 
 namespace cartan::mechanics {
 
@@ -203,11 +204,6 @@ void run_sample(CheckAccumulator& acc, int k, const std::string& at, double base
   }
 }
 
-template <groups::LieGroup G>
-groups::ElementOf<G> perturb(groups::Side side, const groups::ElementOf<G>& g, const groups::TangentOf<G>& x) {
-  return side == groups::Side::Left ? groups::ElementOf<G>(G::compose(g, G::exp(x))) : groups::ElementOf<G>(G::compose(G::exp(x), g));
-}
-
 /// momentum and group_gradient against differences of value at one sample.
 template <groups::LieGroup G, class L>
 void check_first_derivatives(const L& l, const LagrangianSample<G>& s, groups::Side side, int k, const std::string& at,
@@ -223,7 +219,7 @@ void check_first_derivatives(const L& l, const LagrangianSample<G>& s, groups::S
   run_sample(gradient, k, at, kCheckThreshold, [&] {
     const groups::CovectorOf<G> zeta = l.group_gradient(s.t, s.g, s.v);
     const auto fd = difference_jacobian<G, 1>(
-        [&](const groups::TangentOf<G>& x) { return Scalar(l.value(s.t, perturb<G>(side, s.g, x), s.v)); }, kCheckStep);
+        [&](const groups::TangentOf<G>& x) { return Scalar(l.value(s.t, mechanics::advance<G>(side, s.g, x), s.v)); }, kCheckStep);
     const groups::CovectorOf<G> d = fd.jacobian.transpose();
     return std::pair{relative_discrepancy(zeta, d, fd.error), finiteness_note(zeta, d, "group_gradient", "value")};
   });
