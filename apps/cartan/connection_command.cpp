@@ -9,7 +9,7 @@ namespace cartan::cli {
 
 namespace {
 
-constexpr std::string_view kWhere = "cartan solve";
+constexpr std::string_view kConnectionWhere = "cartan solve";
 
 /// alpha_values as the nested array alpha[i][j][k].
 nlohmann::json nested_alpha(const std::vector<double>& values, std::size_t n) {
@@ -28,13 +28,13 @@ nlohmann::json nested_alpha(const std::vector<double>& values, std::size_t n) {
 }  // namespace
 
 nlohmann::json solve_with_connection(const ProblemSpec& spec, const SolveMonitor& monitor) {
-  const ModelInfo& info = find_model(spec.group, spec.model, kWhere);
-  info.check_element(spec.g0, kWhere, "g0");
-  if (spec.a0.empty()) info.check_element(spec.gT, kWhere, "gT");
-  return visit_model(spec.group, spec.model, kWhere, [&]<class Entry>(const Entry&) {
+  const ModelInfo& info = find_model(spec.group, spec.model, kConnectionWhere);
+  info.check_element(spec.g0, kConnectionWhere, "g0");
+  if (spec.a0.empty()) info.check_element(spec.gT, kConnectionWhere, "gT");
+  return visit_model(spec.group, spec.model, kConnectionWhere, [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;
     using M = manifolds::GroupManifold<G>;
-    const auto problem = connection_problem<Entry>(spec, kWhere);
+    const auto problem = connection_problem<Entry>(spec, kConnectionWhere);
     transported::SolveOptions options = solve_options(spec);
     options.monitor = monitor;
     general::GeneralGuess<M> guess;

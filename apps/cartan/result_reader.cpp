@@ -16,23 +16,23 @@ namespace cartan::cli {
 
 namespace {
 
-constexpr std::string_view kWhere = "cartan verify";
+constexpr std::string_view kResultWhere = "cartan verify";
 constexpr std::string_view kResultFile = "a result file";
 
 /// The first and last times must match 0 and T to this fraction of T (shooting accumulates t_k
 /// by adding h, which leaves a rounding error of about N eps T).
 constexpr double kTimeSpanTolerance = 1e-6;
 
-[[noreturn]] void bad(const std::string& name, const std::string& value, const std::string& problem) {
-  throw_invalid(kWhere, name, value, problem);
+[[noreturn]] void bad_result(const std::string& name, const std::string& value, const std::string& problem) {
+  throw_invalid(kResultWhere, name, value, problem);
 }
 
 std::string one_of(const nlohmann::json& value, const std::string& name, const std::vector<std::string>& choices) {
-  const std::string s = json_text(value, kWhere, name);
+  const std::string s = json_text(value, kResultWhere, name);
   if (std::find(choices.begin(), choices.end(), s) == choices.end()) {
     std::string list;
     for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
-    bad(name, describe(value), "is not one of: " + list);
+    bad_result(name, describe(value), "is not one of: " + list);
   }
   return s;
 }
@@ -40,16 +40,16 @@ std::string one_of(const nlohmann::json& value, const std::string& name, const s
 /// A flat list of exactly `size` finite numbers.
 Eigen::VectorXd numbers(const nlohmann::json& value, const std::string& name, std::size_t size) {
   if (!value.is_array() || value.size() != size) {
-    bad(name, describe(value), "must be a list of " + std::to_string(size) + " numbers");
+    bad_result(name, describe(value), "must be a list of " + std::to_string(size) + " numbers");
   }
-  const std::vector<double> x = json_numbers(value, kWhere, name);
+  const std::vector<double> x = json_numbers(value, kResultWhere, name);
   return Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
 }
 
 /// `rows` rows of `width` finite numbers each, as a rows x width matrix.
 Eigen::MatrixXd table(const nlohmann::json& value, const std::string& name, std::size_t rows, std::size_t width) {
   if (!value.is_array() || value.size() != rows) {
-    bad(name, describe(value), "must have " + std::to_string(rows) + " rows (one per entry of t)");
+    bad_result(name, describe(value), "must have " + std::to_string(rows) + " rows (one per entry of t)");
   }
   Eigen::MatrixXd out(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(width));
   for (std::size_t k = 0; k < rows; ++k) {
@@ -59,17 +59,17 @@ Eigen::MatrixXd table(const nlohmann::json& value, const std::string& name, std:
 }
 
 Eigen::VectorXd times(const nlohmann::json& value, double T) {
-  if (!value.is_array() || value.size() < 2) bad("t", describe(value), "must be a list of at least 2 times");
+  if (!value.is_array() || value.size() < 2) bad_result("t", describe(value), "must be a list of at least 2 times");
   const Eigen::VectorXd t = numbers(value, "t", value.size());
   for (Eigen::Index k = 1; k < t.size(); ++k) {
     if (!(t[k] > t[k - 1])) {
-      bad("t[" + std::to_string(k) + "]", format_value(t[k]),
+      bad_result("t[" + std::to_string(k) + "]", format_value(t[k]),
           "is not greater than t[" + std::to_string(k - 1) + "] = " + format_value(t[k - 1]) + " (times must increase)");
     }
   }
-  if (std::abs(t[0]) > kTimeSpanTolerance * T) bad("t[0]", format_value(t[0]), "must be 0");
+  if (std::abs(t[0]) > kTimeSpanTolerance * T) bad_result("t[0]", format_value(t[0]), "must be 0");
   if (std::abs(t[t.size() - 1] - T) > kTimeSpanTolerance * T) {
-    bad("t[" + std::to_string(t.size() - 1) + "]", format_value(t[t.size() - 1]), "must equal T = " + format_value(T));
+    bad_result("t[" + std::to_string(t.size() - 1) + "]", format_value(t[t.size() - 1]), "must equal T = " + format_value(T));
   }
   return t;
 }
@@ -77,7 +77,7 @@ Eigen::VectorXd times(const nlohmann::json& value, double T) {
 /// An n x n x n nested array of finite numbers, flattened in (i, j, k) order.
 std::vector<double> nested_numbers(const nlohmann::json& value, const std::string& name, std::size_t n) {
   std::vector<double> out;
-  if (!value.is_array() || value.size() != n) bad(name, describe(value), "must be an n x n x n array, n = " + std::to_string(n));
+  if (!value.is_array() || value.size() != n) bad_result(name, describe(value), "must be an n x n x n array, n = " + std::to_string(n));
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::MatrixXd plane = table(value[i], name + "[" + std::to_string(i) + "]", n, n);
     for (Eigen::Index a = 0; a < plane.rows(); ++a) {
@@ -92,18 +92,18 @@ std::vector<double> nested_numbers(const nlohmann::json& value, const std::strin
 ResultFile read_sphere(const nlohmann::json& j, ResultFile& r) {
   for (const auto& field : problem_fields()) {
     if (!field.echoed || field.scope == ProblemField::Scope::Group) continue;
-    read_field(r.problem, field, require_key(j, field.key, kWhere, kResultFile), kWhere);
+    read_field(r.problem, field, require_key(j, field.key, kResultWhere, kResultFile), kResultWhere);
   }
   if (r.order != 1 && r.order != 2 && r.order != transported::kCollocationOrder) {
-    bad("order", std::to_string(r.order), "must be 1 or 2 (the general solver's schemes) or 4 (collocation)");
+    bad_result("order", std::to_string(r.order), "must be 1 or 2 (the general solver's schemes) or 4 (collocation)");
   }
   validate(r.problem);
-  r.t = times(require_key(j, "t", kWhere, kResultFile), r.problem.T);
+  r.t = times(require_key(j, "t", kResultWhere, kResultFile), r.problem.T);
   const auto rows = static_cast<std::size_t>(r.t.size());
-  r.g = table(require_key(j, "q", kWhere, kResultFile), "q", rows, 3);
-  r.v = table(require_key(j, "v", kWhere, kResultFile), "v", rows, 2);
-  r.mu = table(require_key(j, "mu", kWhere, kResultFile), "mu", rows, 2);
-  r.Xi = table(require_key(j, "Xi", kWhere, kResultFile), "Xi", rows, 4);
+  r.g = table(require_key(j, "q", kResultWhere, kResultFile), "q", rows, 3);
+  r.v = table(require_key(j, "v", kResultWhere, kResultFile), "v", rows, 2);
+  r.mu = table(require_key(j, "mu", kResultWhere, kResultFile), "mu", rows, 2);
+  r.Xi = table(require_key(j, "Xi", kResultWhere, kResultFile), "Xi", rows, 4);
   return r;
 }
 
@@ -113,63 +113,63 @@ ProblemSpec problem_of(const nlohmann::json& j) {
   ProblemSpec p;
   for (const auto& field : problem_fields()) {
     if (!field.echoed || field.scope == ProblemField::Scope::Sphere) continue;
-    read_field(p, field, require_key(j, field.key, kWhere, kResultFile), kWhere);
+    read_field(p, field, require_key(j, field.key, kResultWhere, kResultFile), kResultWhere);
     if (field.key == "group" || field.key == "model") continue;  // checked against the table below
-    check_field(p, field, kWhere);
+    check_field(p, field, kResultWhere);
   }
-  const ModelInfo& model = find_model(p.group, p.model, kWhere);
+  const ModelInfo& model = find_model(p.group, p.model, kResultWhere);
   const auto n = static_cast<std::size_t>(model.dim);
   if (p.inertia.size() != n && p.inertia.size() != n * n) {
-    bad("inertia", excerpt(p.inertia), "must have " + std::to_string(n) + " or " + std::to_string(n * n) + " numbers");
+    bad_result("inertia", excerpt(p.inertia), "must have " + std::to_string(n) + " or " + std::to_string(n * n) + " numbers");
   }
-  check_inertia(model, p.inertia, kWhere);
-  if (j.contains("side") && json_text(j["side"], kWhere, "side") != "left") {
-    bad("side", describe(j["side"]), "must be \"left\" (the transported velocity is left-trivialised)");
+  check_inertia(model, p.inertia, kResultWhere);
+  if (j.contains("side") && json_text(j["side"], kResultWhere, "side") != "left") {
+    bad_result("side", describe(j["side"]), "must be \"left\" (the transported velocity is left-trivialised)");
   }
   if (j.contains("connection")) {  // cartan-schouten, or the general solver's on a group (connection_command.hpp)
-    p.connection = json_text(j["connection"], kWhere, "connection");
-    if (j.contains("metric")) p.metric = json_numbers(j["metric"], kWhere, "metric");
+    p.connection = json_text(j["connection"], kResultWhere, "connection");
+    if (j.contains("metric")) p.metric = json_numbers(j["metric"], kResultWhere, "metric");
     if (j.contains("alpha")) p.alpha_values = nested_numbers(j["alpha"], "alpha", n);
     check_connection(p, n);
   }
   for (const char* key : {"g0", "gT"}) {
-    const Eigen::VectorXd x = numbers(require_key(j, key, kWhere, kResultFile), key, model.element_size);
+    const Eigen::VectorXd x = numbers(require_key(j, key, kResultWhere, kResultFile), key, model.element_size);
     (key == std::string("g0") ? p.g0 : p.gT) = std::vector<double>(x.data(), x.data() + x.size());
-    model.check_element(key == std::string("g0") ? p.g0 : p.gT, kWhere, key);
+    model.check_element(key == std::string("g0") ? p.g0 : p.gT, kResultWhere, key);
   }
   return p;
 }
 
 ResultFile read(const nlohmann::json& j) {
-  if (!j.is_object()) bad("result file", describe(j), "must be a JSON object");
+  if (!j.is_object()) bad_result("result file", describe(j), "must be a JSON object");
   ResultFile r;
-  r.status = one_of(require_key(j, "status", kWhere, kResultFile), "status", enum_words<Status>());
+  r.status = one_of(require_key(j, "status", kResultWhere, kResultFile), "status", enum_words<Status>());
   const auto read_method_and_order = [&] {
-    r.method = one_of(require_key(j, "method", kWhere, kResultFile), "method", enum_words<transported::Method>());
-    r.order = json_integer(require_key(j, "order", kWhere, kResultFile), kWhere, "order");
-    if (r.order != 1 && r.order != 2 && r.order != 4) bad("order", std::to_string(r.order), "must be 1, 2 or 4");
+    r.method = one_of(require_key(j, "method", kResultWhere, kResultFile), "method", enum_words<transported::Method>());
+    r.order = json_integer(require_key(j, "order", kResultWhere, kResultFile), kResultWhere, "order");
+    if (r.order != 1 && r.order != 2 && r.order != 4) bad_result("order", std::to_string(r.order), "must be 1, 2 or 4");
   };
   if (j.contains("manifold")) {
     read_method_and_order();
     return read_sphere(j, r);
   }
   r.problem = problem_of(j);
-  const ModelInfo& model = find_model(r.problem.group, r.problem.model, kWhere);
+  const ModelInfo& model = find_model(r.problem.group, r.problem.model, kResultWhere);
   read_method_and_order();
-  r.t = times(require_key(j, "t", kWhere, kResultFile), r.problem.T);
+  r.t = times(require_key(j, "t", kResultWhere, kResultFile), r.problem.T);
   const auto rows = static_cast<std::size_t>(r.t.size());
-  r.g = table(require_key(j, "g", kWhere, kResultFile), "g", rows, model.element_size);
+  r.g = table(require_key(j, "g", kResultWhere, kResultFile), "g", rows, model.element_size);
   for (Eigen::Index k = 0; k < r.g.rows(); ++k) {
     const Eigen::VectorXd row = r.g.row(k).transpose();
-    model.check_element(std::vector<double>(row.data(), row.data() + row.size()), kWhere, "g[" + std::to_string(k) + "]");
+    model.check_element(std::vector<double>(row.data(), row.data() + row.size()), kResultWhere, "g[" + std::to_string(k) + "]");
   }
   const auto n = static_cast<std::size_t>(model.dim);
-  r.v = table(require_key(j, "v", kWhere, kResultFile), "v", rows, n);
-  r.mu = table(require_key(j, "mu", kWhere, kResultFile), "mu", rows, n);
+  r.v = table(require_key(j, "v", kResultWhere, kResultFile), "v", rows, n);
+  r.mu = table(require_key(j, "mu", kResultWhere, kResultFile), "mu", rows, n);
   if (r.general()) {
-    r.Xi = table(require_key(j, "Xi", kWhere, kResultFile), "Xi", rows, n * n);
+    r.Xi = table(require_key(j, "Xi", kResultWhere, kResultFile), "Xi", rows, n * n);
   } else {
-    r.xi = table(require_key(j, "xi", kWhere, kResultFile), "xi", rows, n);
+    r.xi = table(require_key(j, "xi", kResultWhere, kResultFile), "xi", rows, n);
   }
   return r;
 }
@@ -180,7 +180,7 @@ ResultFile read_result(const nlohmann::json& j) {
   try {
     return read(j);
   } catch (const nlohmann::json::exception& e) {  // unreachable by the checks above; kept as a guarantee
-    throw std::invalid_argument(std::string(kWhere) + ": result file: " + e.what());
+    throw std::invalid_argument(std::string(kResultWhere) + ": result file: " + e.what());
   }
 }
 

@@ -10,7 +10,7 @@ namespace cartan::cli {
 
 namespace {
 
-constexpr std::string_view kWhere = "cartan solve";
+constexpr std::string_view kSolveCommandWhere = "cartan solve";
 
 template <groups::LieGroup G>
 transported::SolveGuess<G> guess_of(const ProblemSpec& spec) {
@@ -23,9 +23,9 @@ transported::SolveGuess<G> guess_of(const ProblemSpec& spec) {
 /// Throws std::invalid_argument ("cartan solve: g0 = ... is not ...") unless g0 and gT are
 /// elements of the spec's group (ModelInfo::check_element).
 void check_endpoints(const ProblemSpec& spec) {
-  const ModelInfo& model = find_model(spec.group, spec.model, kWhere);
-  model.check_element(spec.g0, kWhere, "g0");
-  if (spec.a0.empty()) model.check_element(spec.gT, kWhere, "gT");
+  const ModelInfo& model = find_model(spec.group, spec.model, kSolveCommandWhere);
+  model.check_element(spec.g0, kSolveCommandWhere, "g0");
+  if (spec.a0.empty()) model.check_element(spec.gT, kSolveCommandWhere, "gT");
 }
 
 }  // namespace
@@ -51,10 +51,10 @@ nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor) {
   if (is_manifold_problem(spec)) return solve_manifold(spec, monitor);
   if (is_general_connection(spec)) return solve_with_connection(spec, monitor);
   check_endpoints(spec);
-  return visit_model(spec.group, spec.model, kWhere, [&]<class Entry>(const Entry&) {
+  return visit_model(spec.group, spec.model, kSolveCommandWhere, [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;
     const transported::TransportedProblem<G, typename Entry::Lagrangian> problem{
-        make_lagrangian<Entry>(spec.inertia, kWhere), spec.lambda, spec.T, spec.N, element_of<G>(spec.g0),
+        make_lagrangian<Entry>(spec.inertia, kSolveCommandWhere), spec.lambda, spec.T, spec.N, element_of<G>(spec.g0),
         element_of<G>(final_element(spec))};
     transported::SolveOptions options = solve_options(spec);
     options.monitor = monitor;

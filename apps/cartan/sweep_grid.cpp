@@ -11,7 +11,7 @@ namespace cartan::cli {
 
 namespace {
 
-constexpr const char* kWhere = "cartan sweep";
+constexpr const char* kGridWhere = "cartan sweep";
 
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> parts;
@@ -24,7 +24,7 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 /// "START:STOP:COUNT" -> COUNT evenly spaced values, the last one exactly STOP.
 std::vector<double> lambda_range(const std::string& text) {
-  const auto bad = [&](const std::string& problem) { throw_invalid(kWhere, "lambda-range", "\"" + text + "\"", problem); };
+  const auto bad = [&](const std::string& problem) { throw_invalid(kGridWhere, "lambda-range", "\"" + text + "\"", problem); };
   const auto parts = split(text, ':');
   if (parts.size() != 3) bad("must be START:STOP:COUNT");
   const auto number = [&](const std::string& part) {
@@ -61,10 +61,10 @@ std::vector<std::vector<double>> endpoint_list(const std::string& text, const st
 std::vector<GridPoint> file_points(const ProblemSpec& base, const std::string& path) {
   const nlohmann::json file = read_json_file(path, "cartan sweep: --grid");
   if (!file.is_array() || file.empty()) {
-    throw_invalid(kWhere, "--grid", path, "must hold a non-empty JSON array of objects of problem keys");
+    throw_invalid(kGridWhere, "--grid", path, "must hold a non-empty JSON array of objects of problem keys");
   }
   if (file.size() > kMaxGridPoints) {
-    throw_invalid(kWhere, "--grid", path, "has more than " + std::to_string(kMaxGridPoints) + " points");
+    throw_invalid(kGridWhere, "--grid", path, "has more than " + std::to_string(kMaxGridPoints) + " points");
   }
   std::vector<GridPoint> points;
   for (std::size_t i = 0; i < file.size(); ++i) {
@@ -86,7 +86,7 @@ std::vector<GridPoint> file_points(const ProblemSpec& base, const std::string& p
 /// The Cartesian product of the lambda list and the endpoint list (either may be absent).
 std::vector<GridPoint> flag_points(const ProblemSpec& base, const GridFlags& flags) {
   if (!flags.aT_list.empty() && !flags.gT_list.empty()) {
-    throw_invalid(kWhere, "--aT-list/--gT-list", flags.aT_list + " / " + flags.gT_list, "conflict: give one");
+    throw_invalid(kGridWhere, "--aT-list/--gT-list", flags.aT_list + " / " + flags.gT_list, "conflict: give one");
   }
   std::vector<double> lambdas;
   if (!flags.lambdas.empty()) lambdas = parse_list(flags.lambdas, "lambdas");
@@ -105,7 +105,7 @@ std::vector<GridPoint> flag_points(const ProblemSpec& base, const GridFlags& fla
   const std::size_t n_lambda = std::max<std::size_t>(lambdas.size(), 1);
   const std::size_t n_end = std::max<std::size_t>(endpoints.size(), 1);
   if (n_lambda * n_end > kMaxGridPoints) {
-    throw_invalid(kWhere, "grid size", std::to_string(n_lambda) + " x " + std::to_string(n_end),
+    throw_invalid(kGridWhere, "grid size", std::to_string(n_lambda) + " x " + std::to_string(n_end),
                   "is more than " + std::to_string(kMaxGridPoints) + " points");
   }
   std::vector<GridPoint> points;
@@ -135,7 +135,7 @@ Shard parse_shard(const std::string& text) {
   const auto k = parts.size() == 2 ? count_of(parts[0]) : std::nullopt;
   const auto m = parts.size() == 2 ? count_of(parts[1]) : std::nullopt;
   if (!k || !m || *k > *m) {
-    throw_invalid(kWhere, "--shard", quote_input(text),
+    throw_invalid(kGridWhere, "--shard", quote_input(text),
                   "must be K/M, two integers with 1 <= K <= M <= " + std::to_string(kMaxGridPoints) +
                       " (the K-th of M shards)");
   }
@@ -146,7 +146,7 @@ std::invalid_argument retitled(const std::invalid_argument& error, const std::st
   const std::string message = error.what();
   const std::string shared = "cartan solve: ";
   if (message.rfind(shared, 0) == 0) return std::invalid_argument(where + ": " + message.substr(shared.size()));
-  if (message.rfind(kWhere, 0) == 0) return error;  // already a sweep message
+  if (message.rfind(kGridWhere, 0) == 0) return error;  // already a sweep message
   return std::invalid_argument(where + ": " + message);
 }
 
@@ -154,22 +154,22 @@ std::vector<GridPoint> build_grid(const ProblemSpec& base, const GridFlags& flag
   const bool from_flags = !(flags.lambdas.empty() && flags.lambda_range.empty() && flags.aT_list.empty() &&
                             flags.gT_list.empty());
   if (from_flags && !flags.grid_file.empty()) {
-    throw_invalid(kWhere, "--grid", flags.grid_file,
+    throw_invalid(kGridWhere, "--grid", flags.grid_file,
                   "conflicts with --lambdas/--lambda-range/--aT-list/--gT-list (give the whole grid in the file)");
   }
   std::vector<GridPoint> points;
   try {
     points = flags.grid_file.empty() ? flag_points(base, flags) : file_points(base, flags.grid_file);
   } catch (const std::invalid_argument& e) {
-    throw retitled(e, kWhere);
+    throw retitled(e, kGridWhere);
   }
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (is_manifold_problem(points[i].spec)) {
-      throw_invalid(kWhere, "manifold", quote_input(points[i].spec.manifold),
+      throw_invalid(kGridWhere, "manifold", quote_input(points[i].spec.manifold),
                     "problems are solved one at a time (cartan solve --manifold); sweeps cover problems on a group");
     }
     if (is_general_connection(points[i].spec)) {
-      throw_invalid(kWhere, "connection", quote_input(points[i].spec.connection),
+      throw_invalid(kGridWhere, "connection", quote_input(points[i].spec.connection),
                     "problems are solved one at a time (cartan solve); sweeps cover Cartan-Schouten connections");
     }
     try {

@@ -16,12 +16,12 @@ namespace cartan::cli {
 
 namespace {
 
-constexpr const char* kWhere = "cartan merge";
+constexpr const char* kMergeWhere = "cartan merge";
 
 std::string read_text(const std::string& path) {
-  if (std::filesystem::is_directory(path)) throw_invalid(kWhere, "table", path, "is a directory");
+  if (std::filesystem::is_directory(path)) throw_invalid(kMergeWhere, "table", path, "is a directory");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw_invalid(kWhere, "table", path, "cannot be opened");
+  if (!in) throw_invalid(kMergeWhere, "table", path, "cannot be opened");
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
@@ -41,18 +41,18 @@ std::vector<Located> in_grid_order(std::vector<Located> rows, const std::vector<
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const Located& row = rows[i];
     if (i > 0 && rows[i - 1].index == row.index) {
-      throw_invalid(kWhere, "grid index", std::to_string(row.index),
+      throw_invalid(kMergeWhere, "grid index", std::to_string(row.index),
                     "appears twice (in " + paths[rows[i - 1].file] + " and " + paths[row.file] + ")");
     }
     if (row.index >= n) {
-      throw_invalid(kWhere, "grid index", std::to_string(row.index),
+      throw_invalid(kMergeWhere, "grid index", std::to_string(row.index),
                     "(in " + paths[row.file] + ") is beyond the grid of " + std::to_string(n) + " points");
     }
   }
   if (rows.size() != n) {  // no repeats and all below n: some index is missing
     std::size_t missing = 0;
     while (missing < rows.size() && rows[missing].index == missing) ++missing;
-    throw_invalid(kWhere, "grid index", std::to_string(missing),
+    throw_invalid(kMergeWhere, "grid index", std::to_string(missing),
                   "is missing: " + std::to_string(n - rows.size()) + " of " + std::to_string(n) +
                       " points are in none of the tables (a shard left out?)");
   }
@@ -69,7 +69,7 @@ std::optional<ShardRecord> shard_of(const nlohmann::json& table, const std::stri
   const nlohmann::json& shard = table.at("shard");
   const auto field = [&](const char* key) {
     if (!shard.is_object() || !shard.contains(key) || !shard.at(key).is_number_unsigned()) {
-      throw_invalid(kWhere, "table", path, std::string("has a \"shard\" record without a count ") + key);
+      throw_invalid(kMergeWhere, "table", path, std::string("has a \"shard\" record without a count ") + key);
     }
     return shard.at(key).get<std::size_t>();
   };
@@ -85,21 +85,21 @@ std::optional<std::size_t> shards_complete(const std::vector<std::optional<Shard
   const ShardRecord& one = **first;
   std::map<std::size_t, std::string> seen;  // k -> path
   for (std::size_t f = 0; f < shards.size(); ++f) {
-    if (!shards[f]) throw_invalid(kWhere, "table", paths[f], "is not a shard (no \"shard\" record) while others are");
+    if (!shards[f]) throw_invalid(kMergeWhere, "table", paths[f], "is not a shard (no \"shard\" record) while others are");
     const ShardRecord& s = *shards[f];
     if (s.m != one.m || s.grid_points != one.grid_points) {
-      throw_invalid(kWhere, "table", paths[f],
+      throw_invalid(kMergeWhere, "table", paths[f],
                     "is shard " + std::to_string(s.k) + "/" + std::to_string(s.m) + " of a grid of " +
                         std::to_string(s.grid_points) + " points; " + paths[first - shards.begin()] + " is of " +
                         std::to_string(one.m) + " shards and " + std::to_string(one.grid_points) + " points");
     }
     if (!seen.emplace(s.k, paths[f]).second) {
-      throw_invalid(kWhere, "shard", std::to_string(s.k) + "/" + std::to_string(s.m),
+      throw_invalid(kMergeWhere, "shard", std::to_string(s.k) + "/" + std::to_string(s.m),
                     "appears twice (" + seen.at(s.k) + " and " + paths[f] + ")");
     }
   }
   for (std::size_t k = 1; k <= one.m; ++k) {
-    if (!seen.contains(k)) throw_invalid(kWhere, "shard", std::to_string(k) + "/" + std::to_string(one.m), "is missing");
+    if (!seen.contains(k)) throw_invalid(kMergeWhere, "shard", std::to_string(k) + "/" + std::to_string(one.m), "is missing");
   }
   return one.grid_points;
 }
@@ -111,17 +111,17 @@ std::string merge_json(const std::vector<std::string>& paths, const std::vector<
   std::vector<Located> rows;
   double wall_time_s = 0;
   for (std::size_t f = 0; f < paths.size(); ++f) {
-    nlohmann::json table = parse_json(texts[f], std::string(kWhere) + ": table = " + paths[f]);
+    nlohmann::json table = parse_json(texts[f], std::string(kMergeWhere) + ": table = " + paths[f]);
     if (!table.is_object() || !table.contains("rows") || !table.at("rows").is_array() ||
         !table.contains("wall_time_s") || !table.at("wall_time_s").is_number()) {
-      throw_invalid(kWhere, "table", paths[f], "is not a JSON table of cartan sweep (an object with rows, wall_time_s)");
+      throw_invalid(kMergeWhere, "table", paths[f], "is not a JSON table of cartan sweep (an object with rows, wall_time_s)");
     }
     shards.push_back(shard_of(table, paths[f]));
     wall_time_s = std::max(wall_time_s, table.at("wall_time_s").get<double>());
     const nlohmann::json& list = table.at("rows");
     for (std::size_t r = 0; r < list.size(); ++r) {
       if (!list[r].is_object() || !list[r].contains("index") || !list[r].at("index").is_number_unsigned()) {
-        throw_invalid(kWhere, "table", paths[f], "has row " + std::to_string(r) + " without a grid index");
+        throw_invalid(kMergeWhere, "table", paths[f], "has row " + std::to_string(r) + " without a grid index");
       }
       rows.push_back({list[r].at("index").get<std::size_t>(), f, r});
     }
@@ -129,7 +129,7 @@ std::string merge_json(const std::vector<std::string>& paths, const std::vector<
   }
   if (const auto grid_points = shards_complete(shards, paths)) {
     if (points && *points != *grid_points) {
-      throw_invalid(kWhere, "--points", std::to_string(*points),
+      throw_invalid(kMergeWhere, "--points", std::to_string(*points),
                     "disagrees with the shards' grid of " + std::to_string(*grid_points) + " points");
     }
     points = grid_points;
@@ -167,15 +167,15 @@ std::string merge_csv(const std::vector<std::string>& paths, const std::vector<s
   for (std::size_t f = 0; f < paths.size(); ++f) {
     std::vector<std::string> records = csv_records(texts[f]);
     if (records.empty() || records.front().rfind("index,", 0) != 0) {
-      throw_invalid(kWhere, "table", paths[f], "is not a table of cartan sweep (JSON, or CSV with the header index,...)");
+      throw_invalid(kMergeWhere, "table", paths[f], "is not a table of cartan sweep (JSON, or CSV with the header index,...)");
     }
     if (f > 0 && records.front() != files.front().front()) {
-      throw_invalid(kWhere, "table", paths[f], "has another CSV header than " + paths.front());
+      throw_invalid(kMergeWhere, "table", paths[f], "has another CSV header than " + paths.front());
     }
     for (std::size_t r = 1; r < records.size(); ++r) {
       const std::string field = records[r].substr(0, records[r].find(','));
       if (field.empty() || field.size() > 7 || field.find_first_not_of("0123456789") != std::string::npos) {
-        throw_invalid(kWhere, "table", paths[f],
+        throw_invalid(kMergeWhere, "table", paths[f],
                       "has line " + std::to_string(r + 1) + " without a grid index: " + quote_input(records[r]));
       }
       rows.push_back({std::stoul(field), f, r});
@@ -199,7 +199,7 @@ std::string merge_tables(const std::vector<std::string>& paths, std::optional<st
   };
   for (std::size_t f = 1; f < paths.size(); ++f) {
     if (is_json(texts[f]) != is_json(texts.front())) {
-      throw_invalid(kWhere, "table", paths[f], "is in another format (JSON or CSV) than " + paths.front());
+      throw_invalid(kMergeWhere, "table", paths[f], "is in another format (JSON or CSV) than " + paths.front());
     }
   }
   return is_json(texts.front()) ? merge_json(paths, texts, points) : merge_csv(paths, texts, points);

@@ -9,7 +9,7 @@ namespace cartan::cli {
 
 namespace {
 
-constexpr std::string_view kWhere = "cartan verify";
+constexpr std::string_view kVerifyCommandWhere = "cartan verify";
 
 /// A row of numbers as the group element it writes (not projected: the checks see the file's data).
 template <groups::LieGroup G>
@@ -67,10 +67,10 @@ verify::Report verify_general_result(const ResultFile& r) {
     const auto x = general_trajectory<manifolds::Sphere>(r, [](const Eigen::VectorXd& q) { return Eigen::Vector3d(q); });
     return general::verify_general(sphere_problem(p), x, r.order, p.tol, status);
   }
-  return visit_model(p.group, p.model, kWhere, [&]<class Entry>(const Entry&) {
+  return visit_model(p.group, p.model, kVerifyCommandWhere, [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;
     const auto x = general_trajectory<manifolds::GroupManifold<G>>(r, [](const Eigen::VectorXd& g) { return element<G>(g); });
-    return general::verify_general(connection_problem<Entry>(p, kWhere), x, r.order, p.tol, status);
+    return general::verify_general(connection_problem<Entry>(p, kVerifyCommandWhere), x, r.order, p.tol, status);
   });
 }
 
@@ -89,10 +89,10 @@ nlohmann::json report_json(const verify::Report& report) {
 verify::Report verify(const ResultFile& r) {
   if (r.general()) return verify_general_result(r);
   const ProblemSpec& p = r.problem;
-  return visit_model(p.group, p.model, kWhere, [&]<class Entry>(const Entry&) {
+  return visit_model(p.group, p.model, kVerifyCommandWhere, [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;
     const transported::TransportedProblem<G, typename Entry::Lagrangian> problem{
-        make_lagrangian<Entry>(p.inertia, kWhere), p.lambda, p.T, p.N, element<G>(p.g0), element<G>(p.gT)};
+        make_lagrangian<Entry>(p.inertia, kVerifyCommandWhere), p.lambda, p.T, p.N, element<G>(p.g0), element<G>(p.gT)};
     return verify::verify_trajectory(problem, trajectory<G>(r), r.order, p.tol, parse_enum<Status>(r.status));
   });
 }

@@ -15,6 +15,11 @@
 
 namespace cartan::testing {
 
+/// A full symmetric positive-definite inertia (no principal axes along the basis), shared by the
+/// mechanics tests.
+inline const Eigen::Matrix3d kInertia =
+    (Eigen::Matrix3d() << 2.0, 0.3, 0.1, 0.3, 3.0, -0.2, 0.1, -0.2, 4.0).finished();
+
 /// A non-Cartan bilinear map with a symmetric part: 0.3 [u, w] + (u . A w) c + (u . w) d with A
 /// symmetric, plus a non-symmetric, non-bracket part u1 w3 e.
 template <groups::LieGroup G>

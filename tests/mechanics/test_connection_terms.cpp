@@ -29,8 +29,6 @@
 namespace cartan::testing {
 namespace {
 
-const Eigen::Matrix3d kInertia = (Eigen::Matrix3d() << 2.0, 0.3, 0.1, 0.3, 3.0, -0.2, 0.1, -0.2, 4.0).finished();
-
 /// The exponential chart at g on the connection's side, its coordinate fields and Christoffel
 /// symbols, all by differences (steps 1e-3: fourth-order differences with errors ~1e-12 for the
 /// frame and ~1e-9 for its derivative, nested).

@@ -13,8 +13,6 @@
 namespace cartan::testing {
 namespace {
 
-const Eigen::Matrix3d kInertia = (Eigen::Matrix3d() << 2.0, 0.3, 0.1, 0.3, 3.0, -0.2, 0.1, -0.2, 4.0).finished();
-
 // (EL-Lie) with each connection reproduces eq:EP-left / eq:EP-right (same side, same model).
 // Both runs take identical RKMK4 steps; their momentum rates differ only by the rounding of
 // the cancelling connection terms, each O(|nabla| |v| |mu|) ~ 1-10, so ~1e-15 per evaluation.

@@ -12,7 +12,6 @@
 namespace cartan::testing {
 namespace {
 
-const Eigen::Matrix3d kInertia = (Eigen::Matrix3d() << 2.0, 0.3, 0.1, 0.3, 3.0, -0.2, 0.1, -0.2, 4.0).finished();
 const groups::SO3::Element kG0 = groups::SO3::exp(groups::SO3::Tangent(0.3, -0.5, 0.4));
 const groups::SO3::Tangent kV0(0.9, -0.6, 0.7);
 constexpr double kT = 10.0;

@@ -11,8 +11,6 @@
 namespace cartan::testing {
 namespace {
 
-const Eigen::Matrix3d kInertia = (Eigen::Matrix3d() << 2.0, 0.3, 0.1, 0.3, 3.0, -0.2, 0.1, -0.2, 4.0).finished();
-
 static_assert(mechanics::ReducedLagrangian<mechanics::RigidBody, groups::SO3>);
 static_assert(mechanics::ReducedLagrangian<mechanics::SpatialRigidBody, groups::SO3>);
 static_assert(mechanics::ReducedLagrangian<mechanics::SO3Oscillator, groups::SO3>);

@@ -12,9 +12,9 @@
 // LU with partial pivoting would consider. What is left is a dense (n + k) x (n + k) system for
 // (y_0, p). Work and storage are O(m n^2 (n + k)); the result equals Eigen's SparseLU up to
 // rounding (tests/numerics/test_collocation_jacobian.cpp), without its per-factorisation overhead on small blocks.
-// Where the block size is known (k = 0 and n = 6, 12 or 24: the H3 and SO(3) transported
-// systems) the panels have compile-time shapes and each column's elimination is unrolled: the
-// same factors, bit for bit, in a third of the instructions (bench/README.md, "Collocation").
+// Where the block size is small and known (n = 6, k = 0: the closed-form H3 system; n = 2,
+// k <= 1) the panels have compile-time shapes and each column's elimination is unrolled: the
+// same factors, bit for bit, in fewer instructions (bench/README.md, "Collocation").
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
