@@ -39,6 +39,8 @@ class GeneralCollocation {
   const GeneralProblem<M, L>& problem() const { return scheme_->problem(); }
   /// difference(qT, q) in the components of tangent_basis(qT) (the scheme's terminal residual).
   manifolds::ComponentsOf<M> terminal_residual(const manifolds::PointOf<M>& q) const { return scheme_->terminal_residual(q); }
+  bool terminal_residual_defined(const manifolds::PointOf<M>& q) const { return scheme_->terminal_residual_defined(q); }
+  double terminal_error(const manifolds::PointOf<M>& q) const { return scheme_->terminal_error(q); }
 
   /// The node (v from the inverse Legendre map) stored in y at time t.
   Node node(double t, numerics::ConstVectorRef y) const {
@@ -148,8 +150,13 @@ GeneralSolution<M> general_collocation_solution(const GeneralCollocation<M, L>& 
   if (!x.t.empty()) {
     s.v0 = x.v.front();
     s.Xi0 = x.Xi.front();
-    s.terminal_error = collocation.terminal_residual(x.q.back()).norm();
+    s.terminal_error = collocation.terminal_error(x.q.back());
     s.xi_terminal = x.Xi.back().norm();
+    if (s.converged() && !collocation.terminal_residual_defined(x.q.back())) {  // never a wrong "converged"
+      s.status = Status::NotConverged;
+      s.message += "; q(T) is where difference(qT, .) is not defined (the cut locus of qT), " +
+                   format_value(s.terminal_error) + " from qT";
+    }
   }
   s.collocation = transported::CollocationReport{static_cast<int>(result.t.size()), result.max_rms_residual};
   s.iterations = result.newton_iterations;

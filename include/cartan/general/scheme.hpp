@@ -155,6 +155,13 @@ class GeneralScheme {
     const Frame basis = problem_.manifold.tangent_basis(problem_.qT);
     return manifolds::dual_frame<M>(basis) * problem_.manifold.difference(problem_.qT, q);
   }
+  /// False where difference(qT, q) is not a logarithm (q at the cut locus of qT, or NaN): there
+  /// the terminal residual means nothing and must not be read as small (manifolds/manifold.hpp).
+  bool terminal_residual_defined(const Point& q) const {
+    return manifolds::checked_difference(problem_.manifold, problem_.qT, q).reaches;
+  }
+  /// The terminal error a convergence test may trust: separation(qT, q) (manifolds/geometry.hpp).
+  double terminal_error(const Point& q) const { return manifolds::separation(problem_.manifold, problem_.qT, q); }
 
   /// The rate of mu at a node (mu' of problem.hpp), for the checks of the equations.
   Components momentum_rate(const Node& node) const { return rates(node).dmu; }

@@ -2,7 +2,9 @@
 // The verdict on a solution of the general problem (problem.hpp), with the checks, report and
 // thresholds of the Lie-group verifier (verify/report.hpp, docs/verify.md), reading only the samples
 // t_k, q_k, v_k, mu_k, Xi_k and the problem, never the solver:
-//   * boundary: |difference(q0, q_0)|, |difference(qT, q_N)|, |Xi_N| / max(1, xi_scale) against tol;
+//   * boundary: the separations (manifolds/geometry.hpp: |difference| where it is a logarithm, the
+//     storage distance at the cut locus) of q_0 from q0 and q_N from qT, |Xi_N| / max(1, xi_scale),
+//     against tol;
 //   * legendre: mu_k = dl/dv(t_k, q_k, v_k);
 //   * energy: E = mu.v - l is conserved for every connection when l does not depend on t
 //     (docs/general-connections.md#energy);
@@ -44,8 +46,8 @@ class GeneralChecks {
   double step() const { return p_.T / static_cast<double>(size() - 1); }
 
   double boundary_error(double xi_unit) const {
-    return std::max({p_.manifold.difference(p_.q0, x_.q.front()).norm(), p_.manifold.difference(p_.qT, x_.q.back()).norm(),
-                     x_.Xi.back().norm() / xi_unit});
+    return std::max({manifolds::separation(p_.manifold, p_.q0, x_.q.front()),
+                     manifolds::separation(p_.manifold, p_.qT, x_.q.back()), x_.Xi.back().norm() / xi_unit});
   }
 
   double legendre_residual() const {
@@ -207,7 +209,7 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
   };
   if (status != Status::Converged) report.checks.push_back(verify::convergence_check(status));
   report.checks.push_back({"boundary", checks.boundary_error(std::max(1.0, xi_scale(problem))), tol, true,
-                           "max(|difference(q0, q_0)|, |difference(qT, q_N)|, |Xi_N| / max(1, xi_scale)) against tol"});
+                           "max(separation(q0, q_0), separation(qT, q_N), |Xi_N| / max(1, xi_scale)) against tol"});
   report.checks.push_back({"legendre", checks.legendre_residual(), verify::kLegendreThreshold, true,
                            "max |mu - dl/dv(q, v)|, relative"});
   // Energy: the schemes are not symplectic, and away from the Lie-group case the drift is not

@@ -85,6 +85,20 @@ Eigen::Matrix<double, M::kDim, M::kAmbientDim> dual_frame(const FrameOf<M>& fram
   return gram.ldlt().solve(frame.transpose());
 }
 
+/// How far b is from a, as the solvers' convergence tests and the verifiers may trust it: the
+/// length of difference(a, b) in the components of tangent_basis(a) where that is a logarithm of
+/// b, otherwise the storage distance |b - a| (never the zero that a logarithm may return at the
+/// cut locus), and +inf when that is not finite. Zero only when b = a.
+template <ManifoldWithConnection M>
+double separation(const M& manifold, const typename M::Point& a, const typename M::Point& b) {
+  const CheckedDifference<M> d = checked_difference(manifold, a, b);
+  if (d.reaches) {
+    return (dual_frame<M>(manifold.tangent_basis(a)) * d.x).norm();
+  }
+  const double gap = point_distance(manifold, a, b);
+  return std::isfinite(gap) ? gap : std::numeric_limits<double>::infinity();
+}
+
 /// Frame components T_ij^k (entry [i](k, j), i.e. the m x m matrix of e_j -> T(e_i, e_j) in the frame).
 template <ManifoldWithConnection M>
 std::array<ComponentMatrixOf<M>, M::kDim> torsion_components(const M& manifold, const PointOf<M>& q,

@@ -24,7 +24,9 @@
 // curves of the solver are chains of such pieces.
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <concepts>
+#include <limits>
 #include <optional>
 #include <string_view>
 
@@ -94,6 +96,44 @@ typename M::Point point_velocity(const M& manifold, const typename M::Point& q, 
                   "an instance whose points are not vectors must define point_velocity(q, x)");
     return x;
   }
+}
+
+/// The distance of two points in their storage, |b - a|: the embedding's (chordal) distance on
+/// the quadrics, the distance of the matrices of group elements, of coordinates in a chart; or
+/// the instance's own `point_distance(a, b)`. Zero exactly when the points are equal; NaN when
+/// either is not finite. Used where the logarithm cannot be trusted (separation).
+template <ManifoldWithConnection M>
+double point_distance(const M& manifold, const typename M::Point& a, const typename M::Point& b) {
+  if constexpr (requires { { manifold.point_distance(a, b) } -> std::convertible_to<double>; }) {
+    return manifold.point_distance(a, b);
+  } else {
+    return (b - a).norm();
+  }
+}
+
+/// Where difference(a, b) is a logarithm, i.e. step(a, difference(a, b)) returns to b: to within
+/// kLogRoundTrip (1 + |b|) in storage. Away from the cut locus the round trip is exact to
+/// rounding (~1e-15); at it (antipodal points of a sphere, a rotation by pi outside the principal
+/// logarithm) or outside a chart's domain it misses b by O(1) or gives NaN. 1e-8 = sqrt(eps)
+/// leaves room for logarithms that lose half their digits near the cut locus.
+inline constexpr double kLogRoundTrip = 1e-8;
+
+/// The difference x = difference(a, b) with its verdict: `reaches` is false where x is not a
+/// logarithm of b at a (the round trip above fails, or x is not finite).
+template <ManifoldWithConnection M>
+struct CheckedDifference {
+  typename M::Vector x;
+  bool reaches = false;
+};
+
+template <ManifoldWithConnection M>
+CheckedDifference<M> checked_difference(const M& manifold, const typename M::Point& a, const typename M::Point& b) {
+  CheckedDifference<M> out{manifold.difference(a, b), false};
+  if (!out.x.allFinite()) return out;
+  double size = 0;  // |b| in storage, where the storage has a norm
+  if constexpr (requires { { b.norm() } -> std::convertible_to<double>; }) size = b.norm();
+  out.reaches = point_distance(manifold, manifold.step(a, out.x), b) <= kLogRoundTrip * (1 + size);
+  return out;
 }
 
 template <ManifoldWithConnection M> using PointOf = typename M::Point;

@@ -13,6 +13,7 @@
 // (docs/general-connections.md#surfaces).
 
 #include <cmath>
+#include <numbers>
 #include <string_view>
 
 #include "cartan/errors.hpp"
@@ -60,11 +61,17 @@ class Quadric {
     return p / std::sqrt(K * inner(p, p));  // back onto the quadric (rounding only)
   }
 
-  /// The logarithm: the tangent x at a with step(a, x) = b (b not antipodal to a on S^2).
+  /// The logarithm: the tangent x at a with step(a, x) = b. On S^2 the antipode -a is the cut
+  /// locus of a, reached by every great circle: there x is pi times the first vector of
+  /// tangent_basis(a) (one chosen geodesic, so that a geodesic guess between antipodal endpoints
+  /// is a half great circle and a terminal residual there is pi, never 0).
   static Vector difference(const Point& a, const Point& b) {
     const Vector w = b - K * inner(a, b) * a;  // tangent part of b at a, of length sin_K(distance)
     const double s = std::sqrt(std::max(0.0, inner(w, w)));
-    if (!(s > 0)) return Vector::Zero();
+    if (!(s > 0)) {
+      if (Curvature > 0 && inner(a, b) < 0) return std::numbers::pi * Vector(tangent_basis(a).col(0));
+      return Vector::Zero();
+    }
     const double angle = Curvature > 0 ? std::atan2(s, inner(a, b)) : std::asinh(s);
     return (angle / s) * w;
   }
