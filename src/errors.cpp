@@ -1,25 +1,25 @@
 #include "cartan/errors.hpp"
 
+#include <charconv>
 #include <cmath>
-#include <iomanip>
 #include <limits>
 
 namespace cartan {
 
 std::string format_value(double x) {
-  std::ostringstream out;
-  out << std::setprecision(std::numeric_limits<double>::max_digits10) << x;
-  return out.str();
+  char buffer[32];  // the shortest round trip of a double has at most 24 characters
+  const std::to_chars_result end = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, end.ptr);
 }
 
 std::string format_value(const Eigen::Ref<const Eigen::MatrixXd>& x) {
   std::ostringstream out;
-  out << std::setprecision(std::numeric_limits<double>::max_digits10) << '[';
+  out << '[';
   for (Eigen::Index i = 0; i < x.rows(); ++i) {
     if (i > 0) out << "; ";
     for (Eigen::Index j = 0; j < x.cols(); ++j) {
       if (j > 0) out << ", ";
-      out << x(i, j);
+      out << format_value(x(i, j));
     }
   }
   out << ']';

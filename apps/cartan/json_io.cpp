@@ -1,11 +1,9 @@
 #include "json_io.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -54,29 +52,6 @@ nlohmann::json read_json_file(const std::string& path, const std::string& what) 
   std::ostringstream text;
   text << in.rdbuf();
   return parse_json(text.str(), what + " = " + path);
-}
-
-void write_json(const nlohmann::json& value, const std::string& path, const std::string& what) {
-  if (path.empty()) {
-    std::cout << value.dump() << '\n';
-    return;
-  }
-  // Written beside the target and renamed into place, so that an interrupted run never leaves
-  // a half-written file under the requested name.
-  const std::string partial = path + ".partial";
-  {
-    std::ofstream out(partial);
-    if (!out) throw std::invalid_argument(what + " = " + path + " cannot be written");
-    out << value.dump() << '\n';
-    if (!out) {
-      std::remove(partial.c_str());
-      throw std::invalid_argument(what + " = " + path + " could not be written completely");
-    }
-  }
-  if (std::rename(partial.c_str(), path.c_str()) != 0) {
-    std::remove(partial.c_str());
-    throw std::invalid_argument(what + " = " + path + " cannot be written");
-  }
 }
 
 }  // namespace cartan::cli

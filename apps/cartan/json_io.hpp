@@ -21,16 +21,12 @@ nlohmann::json parse_json(const std::string& text, const std::string& what);
 /// "cartan solve: --problem") when the file cannot be read or is not valid JSON.
 nlohmann::json read_json_file(const std::string& path, const std::string& what);
 
-/// Writes `value` as one line to `path`, or to stdout when `path` is empty. Throws
-/// std::invalid_argument starting with `what` when the file cannot be written.
-void write_json(const nlohmann::json& value, const std::string& path, const std::string& what);
-
 /// A short description of a JSON value for messages: a number printed, a string quoted, escaped
 /// and cut (quote_input), a container by kind and size ("(an array of 3 entries)", "(an object
 /// with 2 keys)"), never dumped: a hostile document may be huge or deeply nested.
 std::string describe(const nlohmann::json& value);
 
-/// Numbers separated by commas (17 significant digits), cut after about 60 characters ("...").
+/// Numbers separated by commas (the fewest digits that read back exactly), cut after about 60 characters ("...").
 std::string excerpt(const std::vector<double>& values);
 
 /// Parses "x,y,z" into numbers; throws std::invalid_argument "<where>: <name> = ..." on a bad entry.

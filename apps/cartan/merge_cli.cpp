@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "output.hpp"
 #include "sweep_merge.hpp"
 #include "sweep_table.hpp"
 
@@ -33,7 +34,8 @@ Command add_merge_command(CLI::App& tool) {
       "  cartan sweep --model oscillator --T 3 --N 300 --a0=-1,-1,-1 --aT 1,0.2,0.1 --lambda-range 0:1:101 --shard 2/3 > part2.json\n"
       "  cartan merge part1.json part2.json part3.json > all.json\n"
       "  cartan merge --points 101 part1.csv part2.csv part3.csv --output all.csv\n"
-      "Exit codes: 0 the table was written, 2 bad input (one line on stderr naming the file or the grid index).");
+      "Exit codes: 0 the table was written, 2 bad input (one line on stderr naming the file or the grid index),\n"
+      "130 interrupted (SIGINT: no output written).");
   auto flags = std::make_shared<MergeFlags>();
   merge->add_option("tables", flags->tables, "the shards' tables (JSON or CSV files of cartan sweep)")->required();
   merge->add_option("--points", flags->points, "CSV: the grid's number of points (indices 0 .. N-1 must all be there)")
@@ -42,7 +44,9 @@ Command add_merge_command(CLI::App& tool) {
   return {merge, [flags] {
             const std::optional<std::size_t> points =
                 flags->points == 0 ? std::nullopt : std::optional<std::size_t>(flags->points);
-            write_table(merge_tables(flags->tables, points), flags->output, "cartan merge");
+            if (!flags->output.empty()) require_writable(flags->output, "cartan merge: --output");
+            const std::string table = merge_tables(flags->tables, points);
+            if (!write_output(table, flags->output, "cartan merge: --output")) return exit_interrupted("cartan merge");
             return kExitConverged;
           }};
 }

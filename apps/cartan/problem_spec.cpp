@@ -49,6 +49,9 @@ const char* finite_value(double x) { return std::isfinite(x) ? nullptr : "is not
 const char* positive_finite(double x) { return std::isfinite(x) && x > 0 ? nullptr : "must be positive and finite"; }
 const char* at_least_one(double x) { return x >= 1 ? nullptr : "must be at least 1"; }
 const char* non_negative(double x) { return x >= 0 ? nullptr : "must be non-negative"; }
+const char* non_negative_finite(double x) {
+  return std::isfinite(x) && x >= 0 ? nullptr : "must be a non-negative number of seconds (0: no limit)";
+}
 const char* one_or_two(double x) { return x == 1 || x == 2 ? nullptr : "must be 1 or 2"; }
 
 std::vector<ProblemField> make_fields() {
@@ -102,6 +105,10 @@ std::vector<ProblemField> make_fields() {
       {"samples", &S::samples, "collocation only: output at this many uniform times on [0, T] (0: the final mesh)",
        false, non_negative, ProblemField::Scope::Any},
       {"max_iterations", &S::max_iterations, "iteration limit of each loop (default 200)", false, at_least_one, ProblemField::Scope::Any},
+      {"time_limit", &S::time_limit,
+       "seconds the whole solve may take, every method and attempt (default 0: no limit); past it the running method "
+       "stops at its next iteration with status time-limit",
+       false, non_negative_finite, ProblemField::Scope::Any},
       {"output", &S::output, "output file (default stdout)", false, nullptr, ProblemField::Scope::Any},
       {"connection", &S::connection,
        "groups: cartan-schouten (default, with --lambda) | levi-civita (of the left-invariant metric --metric) | "

@@ -33,6 +33,7 @@ struct ProblemSpec {
   std::vector<double> v0, xi0;          ///< optional guesses of v(0) and xi(0) (n numbers each)
   int segments = 0;                     ///< multiple shooting: number of segments (0: default_segments(N))
   int max_iterations = 200;
+  double time_limit = 0;                ///< seconds; 0: no limit
   std::string output;                   ///< empty: stdout
   std::vector<double> mass;             ///< sphere: a1, a2 of l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1, 1)
   double gravity = 0;                   ///< sphere: G

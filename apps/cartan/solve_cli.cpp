@@ -1,11 +1,10 @@
 // `cartan solve`: the problem options (problem_options.cpp), --output, and the solve itself
 // (solve_command.cpp).
-#include <csignal>
 #include <cstdio>
 #include <memory>
 
 #include "command.hpp"
-#include "json_io.hpp"
+#include "output.hpp"
 #include "problem_options.hpp"
 #include "cartan/status.hpp"
 #include "solve_command.hpp"
@@ -13,10 +12,6 @@
 namespace cartan::cli {
 
 namespace {
-
-volatile std::sig_atomic_t interrupted = 0;
-
-extern "C" void on_sigint(int) { interrupted = 1; }
 
 /// The monitor of `cartan solve`: stops on SIGINT; with --progress, one line per iteration on stderr.
 SolveMonitor cli_monitor(bool progress) {
@@ -27,20 +22,18 @@ SolveMonitor cli_monitor(bool progress) {
                    p.stage.data(), p.iteration, p.residual);
     };
   }
-  return {report, [] { return interrupted != 0; }};
+  return interruptible(SolveMonitor(report, {}));
 }
 
 int run_solve(const CLI::App& command, ProblemFlags& flags, bool progress) {
   ProblemSpec spec = problem_from(command, flags);
   validate(spec);
-  std::signal(SIGINT, on_sigint);
+  if (!spec.output.empty()) require_writable(spec.output, "cartan solve: --output");
   const nlohmann::json result = solve(spec, cli_monitor(progress));
-  std::signal(SIGINT, SIG_DFL);
-  if (result["status"] == std::string(to_string(Status::Interrupted))) {
-    std::fputs("cartan solve: interrupted (no output written)\n", stderr);
-    return kExitInterrupted;
+  if (result["status"] == std::string(to_string(Status::Interrupted)) ||
+      !write_output(result.dump() + "\n", spec.output, "cartan solve: --output")) {
+    return exit_interrupted("cartan solve");
   }
-  write_json(result, spec.output, "cartan solve: --output");
   return result["status"] == std::string(to_string(Status::Converged)) ? kExitConverged : kExitFailed;
 }
 

@@ -37,6 +37,7 @@ transported::SolveOptions solve_options(const ProblemSpec& spec) {
   options.order = spec.order == 2 ? transported::SchemeOrder::Second : transported::SchemeOrder::First;
   options.tol = spec.tol;
   options.max_iterations = spec.max_iterations;
+  if (spec.time_limit > 0) options.time_limit = spec.time_limit;
   if (spec.segments > 0) options.segments = spec.segments;
   options.samples = spec.samples;
   return options;

@@ -4,7 +4,6 @@
 // (sweep_grid.hpp, Shard), whose tables `cartan merge` joins (sweep_merge.cpp).
 #include <algorithm>
 #include <chrono>
-#include <fstream>
 #include <memory>
 #include <thread>
 #include <unistd.h>
@@ -12,7 +11,7 @@
 #include <Eigen/Core>
 
 #include "command.hpp"
-#include "json_io.hpp"
+#include "output.hpp"
 #include "problem_options.hpp"
 #include "solve_command.hpp"
 #include "sweep_run.hpp"
@@ -30,10 +29,12 @@ struct SweepFlags {
   bool trajectories = false, quiet = false;
 };
 
-/// Solves one point; anything it throws becomes an error row. Returns whether the point failed.
+/// Solves one point (none once interrupted: the sweep then writes nothing); anything it throws
+/// becomes an error row. Returns whether the point failed.
 bool solve_into(std::size_t index, const GridPoint& point, bool trajectories, nlohmann::json& row) noexcept {
+  if (interrupted()) return true;
   try {
-    row = result_row(index, point, solve(point.spec), trajectories);
+    row = result_row(index, point, solve(point.spec, interruptible(SolveMonitor())), trajectories);
   } catch (const std::invalid_argument& e) {  // boundary data solve() rejects, e.g. a gT that is no rotation
     row = error_row(index, point, retitled(e, "cartan sweep: grid point " + std::to_string(index)).what());
   } catch (const std::exception& e) {
@@ -56,9 +57,7 @@ int run_sweep(const CLI::App& command, SweepFlags& flags) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (shard.contains(i)) mine.push_back(i);
   }
-  if (!flags.output.empty() && !std::ofstream(flags.output, std::ios::app)) {  // before hours of solving
-    throw std::invalid_argument("cartan sweep: --output = " + flags.output + " cannot be written");
-  }
+  if (!flags.output.empty()) require_writable(flags.output, "cartan sweep: --output");  // before hours of solving
 
   Eigen::initParallel();  // Eigen's documented step before calling it from several threads
   const auto start = std::chrono::steady_clock::now();
@@ -69,6 +68,7 @@ int run_sweep(const CLI::App& command, SweepFlags& flags) {
       [&](std::size_t r) { return solve_into(mine[r], points[mine[r]], flags.trajectories, rows[r]); },
       flags.quiet ? nullptr : &report);
   const double wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (interrupted()) return exit_interrupted("cartan sweep");
 
   std::string text;
   if (flags.format == "csv") {
@@ -78,7 +78,7 @@ int run_sweep(const CLI::App& command, SweepFlags& flags) {
     if (!shard.whole()) table["shard"] = shard_json(shard, points.size());
     text = table.dump() + "\n";
   }
-  write_table(text, flags.output, "cartan sweep");
+  if (!write_output(text, flags.output, "cartan sweep: --output")) return exit_interrupted("cartan sweep");
   const bool any_failed = std::any_of(rows.begin(), rows.end(), row_failed);
   return any_failed ? kExitFailed : kExitConverged;
 }
@@ -99,7 +99,8 @@ Command add_sweep_command(CLI::App& tool) {
       "Across machines: each solves one shard, `cartan merge` joins the tables into the unsharded one:\n"
       "  cartan sweep ... --shard 1/3 --format csv --output part1.csv   # points 0, 3, 6, ...\n"
       "  cartan merge part1.csv part2.csv part3.csv > all.csv\n"
-      "Exit codes: 0 every point converged, 1 some point failed (the table is still written), 2 bad input.");
+      "Exit codes: 0 every point converged, 1 some point failed (the table is still written), 2 bad input,\n"
+      "130 interrupted (SIGINT: the running solves stop, no output written).");
   auto flags = std::make_shared<SweepFlags>();
   add_problem_options(*sweep, flags->problem);
   GridFlags& grid = flags->grid;

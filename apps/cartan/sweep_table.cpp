@@ -1,7 +1,5 @@
 #include "sweep_table.hpp"
 
-#include <fstream>
-#include <iostream>
 #include <sstream>
 
 #include "cartan/errors.hpp"
@@ -31,7 +29,7 @@ std::string csv_text(const std::string& text) {
   return out;
 }
 
-/// A number with 17 significant digits (format_value), a string as text, null as an empty field.
+/// A number with the fewest digits that read back exactly (format_value), a string as text, null as an empty field.
 std::string csv_field(const nlohmann::json& value) {
   if (value.is_null()) return "";
   if (value.is_string()) return csv_text(value.get<std::string>());
@@ -110,17 +108,6 @@ std::string table_csv(const std::vector<nlohmann::json>& rows) {
         << csv_element(v0, 2) << '\n';
   }
   return out.str();
-}
-
-void write_table(const std::string& text, const std::string& path, const std::string& where) {
-  if (path.empty()) {
-    std::cout << text << std::flush;
-    return;
-  }
-  std::ofstream out(path);
-  if (!out) throw std::invalid_argument(where + ": --output = " + path + " cannot be written");
-  out << text;
-  if (!out) throw std::invalid_argument(where + ": --output = " + path + " could not be written completely");
 }
 
 }  // namespace cartan::cli

@@ -29,12 +29,8 @@ nlohmann::json table_json(const std::vector<nlohmann::json>& rows, double wall_t
 nlohmann::json shard_json(const Shard& shard, std::size_t grid_points);
 
 /// A header line and one line per row with the scalar columns of the rows (v0 as v0_1..v0_3, the
-/// endpoint as its key and its numbers separated by spaces), numbers with 17 significant digits;
+/// endpoint as its key and its numbers separated by spaces), numbers with the fewest digits that read back exactly;
 /// text fields are quoted as RFC 4180 requires.
 std::string table_csv(const std::vector<nlohmann::json>& rows);
-
-/// Writes a table to `path`, or to stdout when `path` is empty; throws std::invalid_argument
-/// "<where>: --output = <path> ..." when it cannot be written.
-void write_table(const std::string& text, const std::string& path, const std::string& where);
 
 }  // namespace cartan::cli

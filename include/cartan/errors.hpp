@@ -24,7 +24,8 @@ class ModelError : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-/// Prints a vector or matrix on one line, rows separated by ';', with full precision.
+/// Prints a number with the fewest digits that read back as the same double (0.4, 1e-18), or a
+/// vector or matrix on one line, rows separated by ';', its entries so.
 std::string format_value(const Eigen::Ref<const Eigen::MatrixXd>& x);
 std::string format_value(double x);
 

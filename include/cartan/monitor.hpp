@@ -2,9 +2,17 @@
 // Progress reports and stop requests for long solves. Every iterative solver (Levenberg–Marquardt,
 // collocation's Newton, continuation, the default strategy) calls `report` once per iteration and
 // polls `stop_requested`: the CLI's SIGINT handler and Python's Ctrl-C (PyErr_CheckSignals) stop a
-// solve through it, and the solver returns Status::Interrupted.
+// solve through it, and the solver returns Status::Interrupted. A deadline (SolveOptions::time_limit)
+// stops it the same way; the solve's entry point then reports Status::TimeLimit. The deadline and a
+// cancel flag (the CLI's SIGINT flag, Python's cancel token) are also polled inside long sweeps
+// (`stop_pending`: cheap, no callback), so that a solve stops within about a millisecond of work
+// however long its iterations are; the stop callback runs once per iteration.
 
+#include <atomic>
+#include <chrono>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -27,9 +35,27 @@ class SolveMonitor {
 
   /// True once a stop was requested (then it stays true: solvers may poll it several times).
   bool stop_requested() const {
-    if (!stopped_ && stop_ && stop_()) stopped_ = true;
+    if (!stopped_ && (stop_pending() || (stop_ && stop_()))) stopped_ = true;
     return stopped_;
   }
+  /// The cancel flag is raised or the deadline passed: never calls back, never throws, costs a
+  /// clock read. Sweeps poll it every kStepsBetweenPolls steps and stop as a failed evaluation;
+  /// the solver's next stop_requested() then ends the solve.
+  bool stop_pending() const { return (cancel_ && cancel_->load(std::memory_order_relaxed)) || deadline_passed(); }
+  static constexpr int kStepsBetweenPolls = 1024;
+  /// The same callbacks, stopping also once `flag` is raised (from any thread or a signal handler).
+  SolveMonitor with_cancel_flag(std::shared_ptr<const std::atomic<bool>> flag) const {
+    SolveMonitor copy = *this;
+    copy.cancel_ = std::move(flag);
+    return copy;
+  }
+  /// The same callbacks, stopping also from `deadline` on.
+  SolveMonitor with_deadline(std::chrono::steady_clock::time_point deadline) const {
+    SolveMonitor copy = *this;
+    copy.deadline_ = deadline;
+    return copy;
+  }
+  bool deadline_passed() const { return deadline_ && std::chrono::steady_clock::now() >= *deadline_; }
   void report(int iteration, double residual) const {
     if (progress_) progress_({stage_, iteration, residual});
   }
@@ -45,6 +71,8 @@ class SolveMonitor {
   ProgressCallback progress_;
   StopCallback stop_;
   std::string stage_;
+  std::optional<std::chrono::steady_clock::time_point> deadline_;
+  std::shared_ptr<const std::atomic<bool>> cancel_;
   mutable bool stopped_ = false;
 };
 

@@ -27,12 +27,13 @@ enum class Status {
   ContinuationFailed,  ///< continuation could not reach the requested parameter
   StrategyFailed,      ///< every method of the default strategy failed
   Interrupted,         ///< stopped on request (Ctrl-C, a callback error, a cancelled solve)
+  TimeLimit,           ///< stopped when the time limit (SolveOptions::time_limit) ran out
 };
 
 template <>
 struct EnumNames<Status> {
   static constexpr std::string_view what = "status";
-  static constexpr std::array<std::pair<Status, std::string_view>, 14> names{{
+  static constexpr std::array<std::pair<Status, std::string_view>, 15> names{{
       {Status::Converged, "converged"},
       {Status::MaxIterations, "max-iterations"},
       {Status::Stalled, "stalled"},
@@ -47,6 +48,7 @@ struct EnumNames<Status> {
       {Status::ContinuationFailed, "continuation-failed"},
       {Status::StrategyFailed, "strategy-failed"},
       {Status::Interrupted, "interrupted"},
+      {Status::TimeLimit, "time-limit"},
   }};
 };
 

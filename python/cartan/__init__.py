@@ -55,6 +55,7 @@ from typing import Optional
 import numpy as np
 
 from . import _bvp, _cartan, _results
+from ._arguments import check_types
 from ._bvp import solve_bvp  # noqa: F401  (re-exported)
 from ._sweep import sweep  # noqa: F401  (re-exported)
 
@@ -277,7 +278,7 @@ class SolveResult:
 def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="none", order=1, tol=1e-10,
           max_iterations=200, segments: Optional[int] = None, lambda_start: Optional[float] = None, v0=None,
           xi0=None, guess=None, group=None, samples: Optional[int] = None, max_nodes: Optional[int] = None,
-          progress=None):
+          time_limit: Optional[float] = None, progress=None):
     """Solves the transported-velocity boundary-value problem of the Cartan-Schouten connection
     of parameter `lam` (eq:reduced-system; paper §6-7) on [0, T] with N steps, g(0) = g0
     (default: the identity), g(T) = gT, with the discrete scheme of order 1 (the paper's) or 2.
@@ -321,6 +322,8 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="no
     v0, xi0: guesses (default: the geodesic velocity log(g0^-1 gT)/T and 0); guess: a whole trajectory
     (any object with t, g, v, xi, e.g. a previous SolveResult), as scipy.integrate.solve_bvp takes y.
     progress: a callable (stage, iteration, residual) called once per iteration.
+    time_limit: seconds the whole call may take, every method and attempt (default None: no limit);
+    past it the running method stops at its next iteration and the result has status "time-limit".
     Ctrl-C raises KeyboardInterrupt within one iteration; invalid arguments raise ValueError before
     any work. Solves of built-in models run without the GIL (so that threads solve in parallel).
     Many problems at once, on threads, processes or a cluster: :func:`sweep`.
@@ -356,13 +359,14 @@ def _transported(entry, arguments):
     """`<Group>.<entry>` ("_solve", or "_validate": every input error of _solve, no solve) on the
     keyword arguments of :func:`solve` given as a dict."""
     lagrangian = arguments["lagrangian"]
+    check_types("cartan.solve", arguments)
     if getattr(lagrangian, "side", "left") != "left":
         raise ValueError(f"cartan.solve: lagrangian = {type(lagrangian).__name__} is right-reduced; "
                          "the transported-velocity problem needs a left-reduced Lagrangian")
     grp = _group_of(lagrangian, arguments["group"], "solve")
     request = _cartan._SolveRequest()
     for name in ("method", "continuation", "order", "tol", "max_iterations", "segments", "lambda_start", "samples",
-                 "max_nodes"):
+                 "max_nodes", "time_limit"):
         setattr(request, name, arguments[name])
     a = arguments
     return getattr(grp, entry)(lagrangian, a["lam"], a["T"], a["N"], a["g0"], a["gT"], request, a["v0"], a["xi0"],
@@ -381,7 +385,9 @@ class GeneralSolveResult:
     e_i(t_k) (frame[0] = frame0); v, mu (N+1, m): the transported velocity and the momentum in
     components of frame0 (q' = frame @ v); Xi (N+1, m, m): the auxiliary Xi^k_n = int_t^T v^k mu_n.
     A failed result carries the best iterate of the requested problem, or no rows at all.
-    v0, Xi0: the initial values; terminal_error = ``|difference(qT, q_N)|``, xi_terminal = ``|Xi_N|``;
+    v0, Xi0: the initial values; terminal_error: how far q_N is from qT, ``|difference(qT, q_N)|`` where
+    that is a logarithm and the distance of the stored points at the cut locus (never 0 there);
+    xi_terminal = ``|Xi_N|``;
     iterations (Levenberg-Marquardt or collocation's Newton), sweeps (runs of the scheme; collocation:
     Jacobian evaluations); residual_history; solve_time: seconds in the solver; mesh_size,
     max_residual: collocation only (else None; order is then 4).
@@ -429,7 +435,8 @@ class GeneralSolveResult:
 
 def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, potential_gradient=None, gravity=None,
                   lagrangian=None, frame0=None, method="auto", continuation="none", order=1, tol=1e-10,
-                  max_iterations=200, v0=None, Xi0=None, guess=None, samples=0, max_nodes=None, progress=None):
+                  max_iterations=200, v0=None, Xi0=None, guess=None, samples=0, max_nodes=None, time_limit=None,
+                  progress=None):
     """Solves the transported-velocity boundary-value problem on a manifold with any linear connection
     (docs/general-connections.md; the library's general::solve): on [0, T] with N steps, q(0) = q0,
     q(T) = qT, for l(q, v) with v the components of the transported velocity in the frame `frame0`
@@ -462,19 +469,24 @@ def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, poten
     guesses (default: the geodesic guess and 0); guess: a whole trajectory instead, any object with
     t (from 0 to T), q, frame, v, mu, Xi such as an earlier GeneralSolveResult. samples (collocation):
     output at this many uniform times (0: the final mesh); max_nodes (collocation, default 20000).
+    time_limit: seconds the whole call may take (default None: no limit); past it the running method
+    stops at its next iteration with status "time-limit". solve_time: the whole call, every attempt.
     progress: a callable (stage, iteration, residual) called once per iteration.
 
     Solves without Python callbacks run without the GIL. Ctrl-C raises KeyboardInterrupt within one
     iteration; invalid arguments raise ValueError naming the value; an exception raised in a Python
     callback is re-raised unchanged. Returns a :class:`GeneralSolveResult`.
     """
+    check_types("cartan.solve_general", dict(T=T, N=N, method=method, continuation=continuation,
+                                             order=order, tol=tol, max_iterations=max_iterations, samples=samples,
+                                             max_nodes=max_nodes, time_limit=time_limit))
     request = _cartan._GeneralRequest()
     request.T, request.N, request.q0, request.qT = T, N, q0, qT
     request.inertia, request.potential, request.potential_gradient = inertia, potential, potential_gradient
     request.gravity, request.lagrangian, request.frame0 = gravity, lagrangian, frame0
     request.method, request.continuation, request.order, request.tol = method, continuation, order, tol
     request.max_iterations, request.v0, request.Xi0, request.progress = max_iterations, v0, Xi0, progress
-    request.guess, request.samples, request.max_nodes = guess, samples, max_nodes
+    request.guess, request.samples, request.max_nodes, request.time_limit = guess, samples, max_nodes, time_limit
     return GeneralSolveResult(**_cartan._solve_general(manifold, request))
 
 

@@ -17,8 +17,18 @@ class _SolveRequest(metaclass=type):
     lambda_start: Optional[float]
     samples: Optional[int]
     max_nodes: Optional[int]
+    time_limit: Optional[float]
 
 statuses: list[str]
+
+class _CancelToken(metaclass=type):
+    """Solves started inside `with token:` on this thread stop (status interrupted) at their next iteration once token.cancel() is called, from any thread."""
+    def __init__(self) -> None: ...
+    def cancel(self) -> None: ...
+    @property
+    def cancelled(self) -> bool: ...
+    def __enter__(self) -> None: ...
+    def __exit__(self, *args: Any) -> None: ...
 
 def _check_report(title: str, checks: list, samples: int) -> dict:
     """A CheckReport's dict from the dicts of its checks (cartan.testing), printed by the C++ CheckReport::text."""
@@ -922,6 +932,7 @@ class _GeneralRequest(metaclass=type):
     progress: Any
     samples: int
     max_nodes: Any
+    time_limit: Any
     guess: Any
 
 def _solve_general(manifold: Any, request: _GeneralRequest) -> dict: ...

@@ -18,13 +18,11 @@ import numbers
 import os
 from collections.abc import Mapping
 
+from ._arguments import check_types
+
 #: Keyword arguments of cartan.solve a sweep does not take: a progress callable would have to
 #: cross to the workers, and its calls from many solves at once would interleave.
 _NOT_IN_SWEEPS = ("progress",)
-#: The argument types the compiled module needs; the values are checked by the library.
-_REAL = ("lam", "T", "tol", "lambda_start")
-_INTEGER = ("N", "order", "max_iterations", "segments", "samples", "max_nodes")
-_TEXT = ("method", "continuation")
 #: The default number of tasks, at most (chunksize = ceil(len(problems) / _TASKS)).
 _TASKS = 1000
 
@@ -65,9 +63,33 @@ def sweep(problems, executor=None, *, chunksize=None):
     if not chunks:
         return []
     if executor is None:
-        with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
-            return _flatten(_run(pool, starts, chunks))
+        return _flatten(_run_on_threads(starts, chunks))
     return _flatten(_run(executor, starts, chunks))
+
+
+def _run_on_threads(starts, chunks):
+    """The chunks on a pool of local threads. Ctrl-C reaches the main thread only: it cancels the
+    chunks not started and the solves still running (a cancel token, which their monitors poll:
+    they stop at their next iteration, in the background) and raises KeyboardInterrupt at once,
+    without waiting for them."""
+    from ._cartan import _CancelToken
+
+    token = _CancelToken()
+
+    def task(start, chunk):
+        with token:
+            return solve_chunk(start, chunk)
+
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1)
+    try:
+        futures = [pool.submit(task, s, c) for s, c in zip(starts, chunks)]
+        results = [f.result() for f in futures]
+    except BaseException:
+        token.cancel()
+        pool.shutdown(wait=False, cancel_futures=True)
+        raise
+    pool.shutdown()
+    return results
 
 
 def solve_chunk(start, problems):
@@ -123,8 +145,7 @@ def _checked(i, problem, signature):
         bound = signature.bind(**problem)
     except TypeError as e:  # "missing a required argument: 'T'"
         raise TypeError(f"{where}: {e}") from None
-    for key, value in problem.items():
-        _check_type(where, key, value)
+    check_types(where, problem)
     bound.apply_defaults()
     arguments = dict(bound.arguments)
     from . import _transported
@@ -134,16 +155,3 @@ def _checked(i, problem, signature):
     except ValueError as e:
         raise ValueError(f"{where}: {e}") from e
     return {key: value for key, value in arguments.items() if key in problem}
-
-
-def _check_type(where, key, value):
-    integer = isinstance(value, numbers.Integral) and not isinstance(value, bool)
-    real = isinstance(value, numbers.Real) and not isinstance(value, bool)
-    if key in ("segments", "lambda_start", "samples", "max_nodes") and value is None:
-        return
-    if key in _REAL and not real:
-        raise TypeError(f"{where}: {key} = {value!r} ({type(value).__name__}) is not a real number")
-    if key in _INTEGER and not integer:
-        raise TypeError(f"{where}: {key} = {value!r} ({type(value).__name__}) is not an integer")
-    if key in _TEXT and not isinstance(value, str):
-        raise TypeError(f"{where}: {key} = {value!r} ({type(value).__name__}) is not a string")

@@ -36,6 +36,7 @@ struct SolveRequest {
   std::optional<double> lambda_start;
   std::optional<int> samples;
   std::optional<int> max_nodes;
+  std::optional<double> time_limit;
 
   transported::SolveOptions options() const {
     transported::SolveOptions o;
@@ -49,6 +50,7 @@ struct SolveRequest {
     o.lambda_start = lambda_start;
     o.samples = samples.value_or(0);
     o.max_nodes = max_nodes;
+    o.time_limit = time_limit;
     return o;
   }
 };

@@ -242,7 +242,7 @@ struct GeneralRequest {
   int max_iterations = 200;
   py::object v0 = py::none(), Xi0 = py::none(), progress = py::none();
   int samples = 0;
-  py::object max_nodes = py::none(), guess = py::none();
+  py::object max_nodes = py::none(), guess = py::none(), time_limit = py::none();
 };
 
 inline constexpr const char* kWhere = "cartan.solve_general";
@@ -388,6 +388,7 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   options.max_iterations = r.max_iterations;
   options.samples = r.samples;
   if (!r.max_nodes.is_none()) options.max_nodes = number_arg<int>(r.max_nodes, where, "max_nodes");
+  if (!r.time_limit.is_none()) options.time_limit = number_arg<double>(r.time_limit, where, "time_limit");
   options.monitor = python_monitor(r.progress).stage("general shooting");  // copied here, with the GIL
   general::GeneralGuess<M> guess;
   if (!r.v0.is_none()) guess.v0 = finite_arg<ComponentsOf<M>>(r.v0, where, "v0");

@@ -2,8 +2,10 @@
 // pybind11 turns std::invalid_argument and std::domain_error into ValueError and other
 // std::exceptions into RuntimeError, keeping the message.
 #include <algorithm>
+#include <atomic>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 #include "bind_all.hpp"
 #include "bindings.hpp"
@@ -83,7 +85,22 @@ transport::TransportMethod parse_transport_method(const std::string& method, std
   throw_invalid(where, "method", "\"" + method + "\"", "is not one of: lie-euler, magnus2, magnus4");
 }
 
+namespace {
+
+/// The cancel flags of the cancel scopes open on this thread, innermost last: cartan.sweep on
+/// local threads runs each task inside one and raises the flag when it is interrupted, so that
+/// the solves still running stop at their next iteration (the worker threads see no signal).
+thread_local std::vector<std::shared_ptr<std::atomic<bool>>> cancel_scopes;
+
+/// `cartan._cartan._CancelToken`: `with token:` around solves, `token.cancel()` from any thread.
+struct CancelToken {
+  std::shared_ptr<std::atomic<bool>> flag = std::make_shared<std::atomic<bool>>(false);
+};
+
+}  // namespace
+
 SolveMonitor python_monitor(const py::object& progress) {
+  const std::shared_ptr<std::atomic<bool>> cancel = cancel_scopes.empty() ? nullptr : cancel_scopes.back();
   SolveMonitor::ProgressCallback report;
   if (!progress.is_none()) {
     // The solver copies and destroys its monitor (stages) without the GIL: it holds the callable
@@ -98,11 +115,12 @@ SolveMonitor python_monitor(const py::object& progress) {
       (*callable)(std::string(p.stage), p.iteration, p.residual);
     };
   }
-  return {report, [] {
-            py::gil_scoped_acquire gil;
-            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-            return false;
-          }};
+  const SolveMonitor monitor(report, [] {
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    return false;
+  });
+  return cancel ? monitor.with_cancel_flag(cancel) : monitor;
 }
 
 }  // namespace cartan::python
@@ -120,8 +138,18 @@ PYBIND11_MODULE(_cartan, m) {
       .def_readwrite("segments", &cartan::python::SolveRequest::segments)
       .def_readwrite("lambda_start", &cartan::python::SolveRequest::lambda_start)
       .def_readwrite("samples", &cartan::python::SolveRequest::samples)
-      .def_readwrite("max_nodes", &cartan::python::SolveRequest::max_nodes);
+      .def_readwrite("max_nodes", &cartan::python::SolveRequest::max_nodes)
+      .def_readwrite("time_limit", &cartan::python::SolveRequest::time_limit);
   m.attr("statuses") = cartan::enum_words<cartan::Status>();
+  using cartan::python::CancelToken;
+  pybind11::class_<CancelToken>(m, "_CancelToken",
+                                "Solves started inside `with token:` on this thread stop (status interrupted) at "
+                                "their next iteration once token.cancel() is called, from any thread.")
+      .def(pybind11::init<>())
+      .def("cancel", [](CancelToken& t) { t.flag->store(true); })
+      .def_property_readonly("cancelled", [](const CancelToken& t) { return t.flag->load(); })
+      .def("__enter__", [](CancelToken& t) { cartan::python::cancel_scopes.push_back(t.flag); })
+      .def("__exit__", [](CancelToken&, const pybind11::args&) { cartan::python::cancel_scopes.pop_back(); });
   m.def("_check_report", [](const std::string& title, const pybind11::list& checks, int samples) {
     return cartan::python::check_report_dict(cartan::python::check_report_of(title, checks, samples));
   }, pybind11::arg("title"), pybind11::arg("checks"), pybind11::arg("samples"),

@@ -425,11 +425,46 @@ def test_ctrl_c_interrupts_a_solve_that_runs_without_the_gil():
     try:
         with pytest.raises(KeyboardInterrupt):
             cartan.solve_general(Sphere(), T=1.0, N=200000, q0=Sphere.point([1, 0, -0.3]),
-                                 qT=Sphere.point([0, 1, -0.5]), gravity=9.81, tol=1e-300, method="shooting",
+                                 qT=Sphere.point([0, 1, -0.5]), gravity=9.81, tol=2.3e-14, method="shooting",
                                  max_iterations=100000)
     finally:
         timer.cancel()
     assert time.perf_counter() - start < 3
+
+
+@pytest.mark.parametrize("manifold, q0, qT", [
+    (Sphere(), [0, 0, 1], [0, 0, -1]),  # the antipode: the cut locus of q0
+    (Sphere(), [0.6, 0, 0.8], [-0.6, 1e-9, -0.8]),  # next to it
+    (GroupManifold("so3", "levi-civita", metric=[1, 2, 3]), np.eye(3), np.diag([1.0, -1, -1])),  # a rotation by pi
+    (GroupManifold("se2", "cartan-schouten", lam=0.5), np.eye(3), np.array([[-1.0, 0, 1], [0, -1, 0.5], [0, 0, 1]])),
+], ids=["antipode", "near-antipode", "so3-pi", "se2-pi"])
+@pytest.mark.parametrize("options", [{}, {"gravity": 9.81}, {"inertia": "anisotropic"}, {"method": "collocation"}],
+                         ids=["free", "gravity", "inertia", "collocation"])
+def test_endpoints_on_the_cut_locus_never_give_a_wrong_convergence(manifold, q0, qT, options):
+    """Issue 29: the sphere's difference(q0, qT) was 0 at antipodal points, so a solve that stayed at
+    q0 reported converged and verify_general passed it. Whatever the solver does there, a converged
+    result, and a result the verifier passes, ends at qT in the embedding (the point's storage):
+    within 100 tol (the length of the logarithm bounds the storage distance up to the embedding's
+    Lipschitz constant, at most 2 here)."""
+    options = dict(options)
+    if options.get("gravity") and not isinstance(manifold, Sphere):
+        pytest.skip("gravity is the sphere's")
+    if options.get("inertia") == "anisotropic":
+        options["inertia"] = np.linspace(1, 3, manifold.dim)
+    if options.get("method") == "collocation":
+        options["samples"] = 101  # uniform samples, which the verifier needs
+    q0, qT = np.asarray(q0, dtype=float), np.asarray(qT, dtype=float)
+    if isinstance(manifold, Sphere):
+        q0, qT = Sphere.point(q0), Sphere.point(qT)
+    tol = 1e-10
+    r = cartan.solve_general(manifold, T=1, N=100, q0=q0, qT=qT, tol=tol, **options)
+    checks = {k: v for k, v in options.items() if k in ("gravity", "inertia")}
+    passed = len(r.t) >= 3 and cartan.verify_general(r, manifold, **checks).passed
+    miss = np.linalg.norm(r.q[-1] - qT) if len(r.t) else np.inf
+    if r.success or passed:
+        assert miss <= 100 * tol, (r.status, r.message, miss)
+    else:
+        assert r.status != "converged"
 
 
 # ---- verify_general -----------------------------------------------------------------------------

@@ -93,10 +93,16 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
   report.x = x0;
   Eigen::VectorXd r;
   Eigen::MatrixXd jac;
+  // A sweep stopped by the monitor (time limit, cancellation) fails like a non-finite one.
+  const auto stop = [&] { return options.monitor != nullptr && options.monitor->stop_requested(); };
   if (!evaluate(f, report.x, r, &jac, report)) {
     report.residual = r;
     report.residual_norm = r.size() ? r.norm() : std::nan("");
-    finish(report, Status::NonFinite, "at the initial guess");
+    if (stop()) {
+      finish(report, Status::Interrupted, "stop requested");
+    } else {
+      finish(report, Status::NonFinite, "at the initial guess");
+    }
     return report;
   }
   report.residual = r;
@@ -118,7 +124,11 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
   // The Jacobian (and the residual again) at the current point, after a residual-only evaluation.
   const auto fresh_jacobian = [&] {
     if (!evaluate(f, report.x, r, &jac, report)) {
-      finish(report, Status::NonFinite, "the Jacobian at an accepted point failed");
+      if (stop()) {
+        finish(report, Status::Interrupted, "stop requested");
+      } else {
+        finish(report, Status::NonFinite, "the Jacobian at an accepted point failed");
+      }
       return false;
     }
     a = jac.transpose() * jac;

@@ -120,7 +120,7 @@ def test_csv_matches_json():
     assert len(lines) == len(table["rows"])
     for line, row in zip(lines, table["rows"]):
         assert int(line["index"]) == row["index"]
-        assert float(line["lambda"]) == row["lambda"]  # 17 significant digits round-trip exactly
+        assert float(line["lambda"]) == row["lambda"]  # the shortest round-trip digits read back exactly
         assert line["endpoint_key"] == "aT" and [float(x) for x in line["endpoint"].split()] == row["aT"]
         for key in ["status", "message", "method", "branch"]:
             assert line[key] == row[key], key

@@ -1,7 +1,10 @@
 // Levenberg–Marquardt on systems with known roots, and its failure reports.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "cartan/numerics/nonlinear_solve.hpp"
@@ -110,6 +113,32 @@ TEST(LevenbergMarquardt, ReportsNonFiniteAndIterationLimit) {
 }
 
 // Bad options, a non-finite start and an empty function are errors naming the value.
+// A residual evaluation that fails because its monitor's stop is pending (a sweep stopped by the
+// time limit or a cancel flag) ends the solve as interrupted, not non-finite: at the start, and
+// at an accepted point whose Jacobian is then asked for; and a deadline stops it the same way.
+TEST(LevenbergMarquardt, AFailureWithAStopPendingIsAnInterruption) {
+  const auto flag = std::make_shared<std::atomic<bool>>(false);
+  const SolveMonitor monitor = SolveMonitor().with_cancel_flag(flag);
+  int calls = 0, stop_at = 0;
+  const ResidualFunction stoppable = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
+    if (++calls == stop_at) flag->store(true);
+    return !monitor.stop_pending() && rosenbrock(x, r, jac);
+  };
+  for (const int at : {1, 4}) {
+    flag->store(false);
+    calls = 0;
+    stop_at = at;
+    const auto report =
+        levenberg_marquardt(stoppable, Eigen::Vector2d(-1.2, 1.0), {.tolerance = 1e-13, .monitor = &monitor});
+    EXPECT_EQ(report.status, Status::Interrupted) << report.message;
+  }
+  const SolveMonitor expired = SolveMonitor().with_deadline(std::chrono::steady_clock::now());
+  EXPECT_TRUE(expired.stop_pending());
+  const auto report = levenberg_marquardt(rosenbrock, Eigen::Vector2d(-1.2, 1.0), {.tolerance = 1e-13, .monitor = &expired});
+  EXPECT_EQ(report.status, Status::Interrupted) << report.message;
+  EXPECT_FALSE(SolveMonitor().stop_pending());
+}
+
 TEST(LevenbergMarquardt, RejectsBadInput) {
   using testing::expect_invalid;
   const Eigen::Vector2d start(-1.2, 1.0);

@@ -33,7 +33,7 @@ struct GeneralSolution {
   GeneralTrajectory<M> trajectory;
   manifolds::ComponentsOf<M> v0 = manifolds::ComponentsOf<M>::Zero();
   manifolds::ComponentMatrixOf<M> Xi0 = manifolds::ComponentMatrixOf<M>::Zero();
-  double terminal_error = 0;  ///< |difference(qT, q_N)|
+  double terminal_error = 0;  ///< separation(qT, q_N): |difference(qT, q_N)| where it is a logarithm
   double xi_terminal = 0;     ///< |Xi_N|
   int iterations = 0;
   int sweeps = 0;
@@ -66,7 +66,8 @@ double xi_scale(const GeneralProblem<M, L>& problem) {
 }
 
 /// Runs the N steps from (v0, Xi0); returns the last node, or nothing (with `failure` set) when
-/// the state became non-finite or a callback failed. ModelError passes through. With `tangent`,
+/// the state became non-finite, a callback failed or `monitor` has a stop pending (polled every
+/// SolveMonitor::kStepsBetweenPolls steps). ModelError passes through. With `tangent`,
 /// the variations run along (tangent.hpp) and `jacobian` (m + m^2 square) receives
 /// d (terminal_residual, Xi_N reshaped) / d (v0, Xi0 reshaped).
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
@@ -74,7 +75,7 @@ std::optional<GeneralNode<M>> general_sweep(const GeneralScheme<M, L>& scheme, c
                                             const manifolds::ComponentMatrixOf<M>& Xi0, std::string& failure,
                                             GeneralTrajectory<M>* trajectory = nullptr,
                                             const GeneralSchemeTangent<M, L>* tangent = nullptr,
-                                            Eigen::MatrixXd* jacobian = nullptr) {
+                                            Eigen::MatrixXd* jacobian = nullptr, const SolveMonitor* monitor = nullptr) {
   constexpr int m = M::kDim;
   try {
     GeneralNode<M> node = scheme.initial(v0, Xi0), next;
@@ -82,6 +83,11 @@ std::optional<GeneralNode<M>> general_sweep(const GeneralScheme<M, L>& scheme, c
     if (tangent) dnode = tangent->initial(node);
     if (trajectory) trajectory->clear(), trajectory->push(node);
     for (int k = 0; k < scheme.problem().N; ++k) {
+      if (monitor && k % SolveMonitor::kStepsBetweenPolls == SolveMonitor::kStepsBetweenPolls - 1 &&
+          monitor->stop_pending()) {
+        failure = "stopped at step " + std::to_string(k) + " (time limit or cancellation)";
+        return std::nullopt;
+      }
       tangent ? tangent->step(node, dnode, next, dnext) : scheme.step(node, next);
       if (!next.q.allFinite() || !next.frame.allFinite() || !next.mu.allFinite() || !next.Xi.allFinite() ||
           !next.v.allFinite() ||
@@ -140,8 +146,13 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
     const bool record = jacobian == nullptr && options.analytic_jacobian;
     if (record) recorded_x.resize(0);
     const auto last = general_sweep(scheme, v0, Xi0, failure, record ? &recorded : nullptr,
-                                    jacobian ? &tangent : nullptr, jacobian);
+                                    jacobian ? &tangent : nullptr, jacobian, options.monitor);
     if (!last) return false;
+    if (!scheme.terminal_residual_defined(last->q)) {  // the cut locus of qT: r_q would be meaningless
+      failure = "q_N = " + format_value(last->q) + " is where difference(qT, .) is not defined (the cut locus of qT " +
+                "or outside the domain)";
+      return false;
+    }
     if (record) recorded_x = x;
     r.resize(m + m * m);
     r << scheme.terminal_residual(*last), last->Xi.reshaped() / s;
@@ -180,9 +191,12 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   if (last) {
     solution.v0 = v0;
     solution.Xi0 = Xi0;
-    solution.terminal_error = scheme.terminal_residual(*last).norm();
+    solution.terminal_error = scheme.terminal_error(last->q);
     solution.xi_terminal = last->Xi.norm();
     solution.status = report.status;
+    if (solution.converged() && !(solution.terminal_error <= options.tolerance)) {  // never a wrong "converged"
+      solution.status = Status::NotConverged;
+    }
   } else {
     solution.trajectory = {};
     solution.status = Status::NonFinite;
@@ -193,6 +207,9 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
           << (scheme.uses_constant_components() ? ", constant frame components" : "") << "): " << report.message
           << ", " << solution.sweeps << " sweeps";
   if (!failure.empty()) message << "; last failed sweep: " << failure;
+  if (report.status == Status::Converged && !solution.converged()) {
+    message << "; but q_N is " << format_value(solution.terminal_error) << " from qT: not converged";
+  }
   solution.message = message.str();
   solution.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return solution;

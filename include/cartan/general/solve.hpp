@@ -16,6 +16,7 @@
 // Multiple shooting, two-level and continuation in lambda belong to the Lie-group Cartan–Schouten
 // solver; asking for them here is an error naming them.
 
+#include <chrono>
 #include <optional>
 #include <sstream>
 
@@ -111,31 +112,12 @@ GeneralSolution<M> collocation(const GeneralProblem<M, L>& problem, const transp
   return refined;
 }
 
-}  // namespace detail
-
-/// Solves the general problem. Throws std::invalid_argument for an invalid problem or options,
-/// or a method this problem family does not have; numerical failure is a status.
+/// The methods of solve (below) after its checks, under the options' deadline.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options = {},
-                         const GeneralGuess<M>& guess = {}) {
-  problem.validate();
-  options.validate();
+GeneralSolution<M> run_methods(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options,
+                               const GeneralGuess<M>& guess) {
   using transported::Continuation;
   using transported::Method;
-  if (options.method != Method::Auto && options.method != Method::Shooting && options.method != Method::Collocation) {
-    throw_invalid("general::solve", "method", std::string(to_string(options.method)),
-                  "is not available for a general connection (methods: auto, shooting, collocation)");
-  }
-  if (options.continuation == Continuation::Lambda) {
-    throw_invalid("general::solve", "continuation", "lambda",
-                  "needs a Cartan–Schouten connection on a Lie group (general connections: none, T)");
-  }
-  if (guess.v0) require_finite(*guess.v0, "general::solve", "guess.v0");
-  if (guess.Xi0) require_finite(*guess.Xi0, "general::solve", "guess.Xi0");
-  if (guess.trajectory) {
-    if (guess.v0 || guess.Xi0) throw std::invalid_argument("general::solve: give v0/Xi0 or a trajectory, not both");
-    validate_trajectory(problem, *guess.trajectory, "general::solve", "guess.trajectory");
-  }
   if (options.method == Method::Collocation) return detail::collocation(problem, options, guess);
   GeneralShootingOptions shooting{.order = options.order, .tolerance = options.tol,
                                   .max_iterations = options.max_iterations, .no_progress_window = 0,
@@ -172,6 +154,41 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported:
   continued.message = "every method of the default strategy failed (shooting " + from +
                       ", continuation in T, collocation): " + continued.message + "; collocation: " + collocated.message;
   return continued;
+}
+
+}  // namespace detail
+
+/// Solves the general problem. Throws std::invalid_argument for an invalid problem or options,
+/// or a method this problem family does not have; numerical failure is a status. solve_time_s is
+/// the whole call's, every attempt of the strategy included.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported::SolveOptions& requested = {},
+                         const GeneralGuess<M>& guess = {}) {
+  problem.validate();
+  requested.validate();
+  const transported::SolveOptions& options = requested;  // checked here, run under its deadline below
+  using transported::Continuation;
+  using transported::Method;
+  if (options.method != Method::Auto && options.method != Method::Shooting && options.method != Method::Collocation) {
+    throw_invalid("general::solve", "method", std::string(to_string(options.method)),
+                  "is not available for a general connection (methods: auto, shooting, collocation)");
+  }
+  if (options.continuation == Continuation::Lambda) {
+    throw_invalid("general::solve", "continuation", "lambda",
+                  "needs a Cartan–Schouten connection on a Lie group (general connections: none, T)");
+  }
+  if (guess.v0) require_finite(*guess.v0, "general::solve", "guess.v0");
+  if (guess.Xi0) require_finite(*guess.Xi0, "general::solve", "guess.Xi0");
+  if (guess.trajectory) {
+    if (guess.v0 || guess.Xi0) throw std::invalid_argument("general::solve: give v0/Xi0 or a trajectory, not both");
+    validate_trajectory(problem, *guess.trajectory, "general::solve", "guess.trajectory");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const transported::SolveOptions timed = transported::with_deadline(requested, start);
+  GeneralSolution<M> s = detail::run_methods(problem, timed, guess);
+  transported::apply_time_limit(timed, s.status, s.message);
+  s.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return s;
 }
 
 }  // namespace cartan::general

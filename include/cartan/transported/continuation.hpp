@@ -130,11 +130,11 @@ struct PathEnd {
 /// correction shrinks with the increment (quadratically after the first stage), so a small
 /// enough stage is always accepted; a corrector that converges far from the prediction has
 /// jumped to another branch (bench/README.md, "continuation acceptance"). Accumulates work into
-/// `current`.
+/// `current`. Progress reports name the stage: "continuation in <parameter>, stage k at <parameter> = s".
 template <class MakeProblem, class Problem = std::invoke_result_t<MakeProblem, double>,
           class Solution = typename ShootingFamily<Problem>::Solution>
 PathEnd continue_parameter(const MakeProblem& make, double from, double to, Solution& current,
-                           const ContinuationOptions& options) {
+                           const ContinuationOptions& options, std::string_view parameter) {
   using Family = ShootingFamily<Problem>;
   using Velocity = typename Family::Velocity;
   using Auxiliary = typename Family::Auxiliary;
@@ -171,6 +171,13 @@ PathEnd continue_parameter(const MakeProblem& make, double from, double to, Solu
       aux_pred += ratio * (Family::auxiliary(current) - previous->second);
     }
     ShootingOptions stage = path;
+    const std::string name = std::string(parameter);
+    const std::optional<SolveMonitor> named =
+        path.monitor == nullptr ? std::nullopt
+                                : std::optional(path.monitor->stage("continuation in " + name + ", stage " +
+                                                                    std::to_string(end.stages) + " at " + name + " = " +
+                                                                    format_value(next)));
+    if (named) stage.monitor = &*named;
     stage.max_initial_residual = options.max_stage_residual;
     if (next != to) stage.tolerance = std::max(path.tolerance, options.stage_tolerance);
     Solution trial = Family::shoot(make(next), stage, v_pred, aux_pred);
@@ -274,6 +281,10 @@ Solution continue_in_T(const Problem& problem, const ContinuationOptions& option
     // needs T / T' times its speed.
     const Velocity v0 = v0_guess ? Velocity(*v0_guess * (problem.T / start)) : Family::guess(p);
     ShootingOptions start_options = path;
+    const std::optional<SolveMonitor> named =
+        path.monitor == nullptr ? std::nullopt
+                                : std::optional(path.monitor->stage("continuation in T, start at T = " + format_value(start)));
+    if (named) start_options.monitor = &*named;
     if (halving > 0) start_options.max_initial_residual = options.max_start_residual;
     first = Family::shoot(p, start_options, v0, aux_guess && halving == 0 ? *aux_guess : Auxiliary(Auxiliary::Zero()));
     sweeps += first.sweeps;
@@ -295,7 +306,7 @@ Solution continue_in_T(const Problem& problem, const ContinuationOptions& option
   } else {
     path_text << "continued in T from T = " << format_value(start);
     result = first;
-    const PathEnd end = continue_parameter(make, start, problem.T, result, options);
+    const PathEnd end = continue_parameter(make, start, problem.T, result, options, "T");
     path_text << " (" << end.stages << " stages)";
     if (!end.complete) {
       path_text << "; stopped at T = " << format_value(end.reached) << ": " << end.why;
@@ -351,7 +362,7 @@ TransportedSolution<G> solve_continuation_in_lambda(const TransportedProblem<G, 
                                   options, result.sweeps, result.inner_iterations);
   } else {
     path_text << "continued in lambda from lambda = " << format_value(lambda_start) << " [" << result.branch << "]";
-    const detail::PathEnd end = detail::continue_parameter(make, lambda_start, problem.lambda, result, options);
+    const detail::PathEnd end = detail::continue_parameter(make, lambda_start, problem.lambda, result, options, "lambda");
     path_text << " (" << end.stages << " stages)";
     if (!end.complete) {
       path_text << "; stopped at lambda = " << format_value(end.reached) << ": " << end.why;

@@ -123,6 +123,7 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
     const auto [v0, xi0] = unpack(x);
     SweepOutput<G, L> out;
     out.trajectory = trajectory;
+    out.monitor = options.monitor;
     ++solution.sweeps;
     if (!forward_sweep(scheme, v0, xi0, nullptr, 0, out)) {
       failure = out.failure;
@@ -143,6 +144,7 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
       }
       const auto [v0, xi0] = unpack(x);
       SweepOutput<G, L> out;
+      out.monitor = options.monitor;
       ++solution.sweeps;
       if (!forward_sweep(scheme, v0, xi0, nullptr, 2 * n, out)) {
         failure = out.failure;

@@ -316,10 +316,11 @@ void validate(const TransportedProblem<G, L>& problem, const SolveOptions& optio
 /// Solves `problem` as `options` say (header comment). Throws std::invalid_argument for a bad
 /// problem, options or guess (validate), before any work; numerical failures are statuses.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const SolveOptions& options = {},
+TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const SolveOptions& requested = {},
                              const SolveGuess<G>& guess = {}) {
-  validate(problem, options, guess);
+  validate(problem, requested, guess);
   const auto start = std::chrono::steady_clock::now();
+  const SolveOptions options = with_deadline(requested, start);
   TransportedSolution<G> s;
   switch (options.method) {
     case Method::Auto:
@@ -360,6 +361,7 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
     }
   }
   if (const std::string note = detail::cut_locus_note(problem); !note.empty()) s.message += "; note: " + note;
+  apply_time_limit(options, s.status, s.message);
   detail::complete(problem, s, start);
   return s;
 }

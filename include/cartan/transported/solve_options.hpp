@@ -2,7 +2,9 @@
 // The options and guesses of the library's solve (transported/solve.hpp), in a light header
 // for the CLI and the Python module.
 
+#include <chrono>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -10,6 +12,7 @@
 
 #include "cartan/errors.hpp"
 #include "cartan/monitor.hpp"
+#include "cartan/status.hpp"
 #include "cartan/transported/method.hpp"
 #include "cartan/transported/scheme.hpp"
 
@@ -30,6 +33,9 @@ struct SolveOptions {
   std::optional<double> lambda_start;  ///< continuation in lambda only (default 0)
   int samples = 0;                     ///< collocation only: output at this many uniform times (0: the final mesh)
   std::optional<int> max_nodes;        ///< collocation only (default transported::kTransportedMaxNodes)
+  /// Seconds the whole call may take (every method and attempt); past it the running method stops
+  /// at its next iteration and the result has status time-limit. Empty: no limit.
+  std::optional<double> time_limit;
   SolveMonitor monitor;                ///< progress reports and stop requests
 
   /// Throws std::invalid_argument naming the first bad or inapplicable option.
@@ -37,6 +43,13 @@ struct SolveOptions {
     constexpr std::string_view where = "SolveOptions";
     require_finite(tol, where, "tol");
     if (!(tol > 0)) throw_invalid(where, "tol", format_value(tol), "must be positive");
+    // Every method's residual carries rounding errors of many operations: below this no method
+    // can meet tol (collocation refuses it; shooting would stall), so every method refuses it.
+    constexpr double kTolFloor = 100 * std::numeric_limits<double>::epsilon();
+    if (tol < kTolFloor) {
+      throw_invalid(where, "tol", format_value(tol),
+                    "is below 100 machine epsilons (" + format_value(kTolFloor) + "): no method can reach it");
+    }
     if (max_iterations < 1) throw_invalid(where, "max_iterations", std::to_string(max_iterations), "must be at least 1");
     if (order != SchemeOrder::First && order != SchemeOrder::Second) {
       throw_invalid(where, "order", std::to_string(static_cast<int>(order)), "must be 1 or 2");
@@ -65,11 +78,32 @@ struct SolveOptions {
       throw_invalid(where, "samples", std::to_string(samples),
                     "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");
     }
+    if (time_limit && !(std::isfinite(*time_limit) && *time_limit > 0)) {
+      throw_invalid(where, "time_limit", format_value(*time_limit), "must be a positive number of seconds");
+    }
     if (max_nodes && method != Method::Collocation) {
       throw_invalid(where, "max_nodes", std::to_string(*max_nodes), "applies to method collocation only, not " + m);
     }
   }
 };
+
+/// The options of one call from `start`: time_limit becomes the monitor's deadline.
+inline SolveOptions with_deadline(const SolveOptions& options, std::chrono::steady_clock::time_point start) {
+  SolveOptions timed = options;
+  if (options.time_limit) {
+    timed.monitor = options.monitor.with_deadline(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                              std::chrono::duration<double>(*options.time_limit)));
+  }
+  return timed;
+}
+
+/// A solve stopped by the deadline of `timed` (with_deadline) has status time-limit, not interrupted.
+inline void apply_time_limit(const SolveOptions& timed, Status& status, std::string& message) {
+  if (status == Status::Interrupted && timed.monitor.deadline_passed()) {
+    status = Status::TimeLimit;
+    message = "time limit of " + format_value(*timed.time_limit) + " s reached; " + message;
+  }
+}
 
 /// Optional starting points: v0 and xi0, or a whole trajectory (t from 0 to T, g, v and xi at
 /// every entry; mu is not read). A trajectory supplies v0 and xi0 to the shooting methods and

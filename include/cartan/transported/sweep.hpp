@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "cartan/monitor.hpp"
 #include "cartan/transported/scheme.hpp"
 
 namespace cartan::transported {
@@ -20,6 +21,9 @@ struct SweepOutput {
   std::vector<groups::CovectorOf<G>>* xi_rates = nullptr;     ///< if set: xi rate of every step (N entries)
   TransportedTrajectory<G>* trajectory = nullptr;     ///< if set: every node (its storage reused)
   std::string failure;                                ///< why the sweep stopped early
+  /// If set, polled every SolveMonitor::kStepsBetweenPolls steps (stop_pending): a stop ends the
+  /// sweep as a failed one, and the solver's own poll then ends the solve.
+  const SolveMonitor* monitor = nullptr;
 };
 
 /// Runs steps first..last-1 from `node` (node `first`, at t_first) - one segment of a sweep.
@@ -43,6 +47,11 @@ bool sweep_segment(const TransportedScheme<G, L>& scheme, SchemeNode<G> node,
     }
     std::size_t current = 0;
     for (int k = first; k < last; ++k) {
+      if (out.monitor && (k - first) % SolveMonitor::kStepsBetweenPolls == SolveMonitor::kStepsBetweenPolls - 1 &&
+          out.monitor->stop_pending()) {
+        out.failure = "stopped at step " + std::to_string(k) + " (time limit or cancellation)";
+        return false;
+      }
       const groups::CovectorOf<G>* xi_next = given_xi ? &(*given_xi)[static_cast<std::size_t>(k) + 1] : nullptr;
       const std::size_t next = 1 - current;
       SchemeNode<G>& to = nodes[next];

@@ -51,6 +51,7 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
   std::string failure;
   auto inner_residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
     SweepOutput<G, L> out;
+    out.monitor = options.monitor;
     ++solution.sweeps;
     const int columns = (jac != nullptr && options.analytic_jacobian) ? n : 0;
     if (!forward_sweep(scheme, groups::TangentOf<G>(x), groups::CovectorOf<G>::Zero(), &xi, columns, out)) {

@@ -1,0 +1,101 @@
+"""How promptly a solve stops (issue 29): `time_limit` against the time the call really took, for
+every method, and the time from Ctrl-C to the end of `cartan.sweep` on threads, `cartan sweep` and
+`cartan solve`. These are wall-clock figures by nature (the feature is about wall time): run them
+on an otherwise idle machine and read the ratios.
+
+    PYTHONPATH=build/python /usr/bin/python3 bench/interruption.py --cartan build/cartan
+"""
+import argparse
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+
+import cartan
+
+INERTIA = [2.0, 3.0, 4.0]
+GT = cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1])
+LONG = dict(lagrangian=cartan.SO3Oscillator(INERTIA), lam=0.5, T=12, gT=GT)
+# Each runs far longer than the limits below; N sets the length of one iteration.
+CASES = [
+    ("auto", dict(N=2_000_000)),
+    ("shooting", dict(N=2_000_000, tol=1e-13, continuation="T")),
+    ("multiple-shooting", dict(N=2_000_000)),
+    ("two-level", dict(N=2_000_000)),
+    ("collocation", dict(N=800, tol=1e-12)),
+    ("variational", dict(N=300, tol=1e-13)),
+]
+SPHERE = dict(T=1.0, N=2_000_000, q0=cartan.Sphere.point([1, 0, -0.3]), qT=cartan.Sphere.point([0, 1, -0.5]),
+              gravity=9.81, tol=1e-13)
+
+
+def time_limits(limits):
+    print("| method | N | limit (s) | solve_time (s) | overshoot |")
+    print("|---|---|---|---|---|")
+    for limit in limits:
+        for method, extra in CASES:
+            r = cartan.solve(**LONG, method=method, time_limit=limit, **extra)
+            assert r.status == "time-limit", (method, r.status)
+            print(f"| {method} | {extra['N']} | {limit:g} | {r.solve_time:.3f} | {r.solve_time / limit - 1:+.1%} |")
+        r = cartan.solve_general(cartan.Sphere(), time_limit=limit, **SPHERE)
+        assert r.status == "time-limit", r.status
+        print(f"| solve_general (sphere, auto) | {SPHERE['N']} | {limit:g} | {r.solve_time:.3f} | "
+              f"{r.solve_time / limit - 1:+.1%} |")
+
+
+SWEEP_CHILD = textwrap.dedent("""
+    import sys, time, cartan
+    gT = cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1])
+    problems = [dict(lagrangian=cartan.SO3Oscillator([2, 3, 4]), lam=lam, T=12, N=2_000_000, gT=gT,
+                     method="two-level") for lam in (0.25, 0.5, 0.75, 1.0)]
+    print("ready", flush=True)
+    try:
+        cartan.sweep(problems)
+    except KeyboardInterrupt:
+        print(time.monotonic(), flush=True)
+""")
+
+
+def sweep_latency(delay):
+    child = subprocess.Popen([sys.executable, "-c", SWEEP_CHILD], stdout=subprocess.PIPE, text=True,
+                             env=dict(os.environ))
+    assert child.stdout.readline().strip() == "ready"
+    time.sleep(delay)
+    sent = time.monotonic()
+    child.send_signal(signal.SIGINT)
+    raised = float(child.stdout.readline())
+    child.wait(timeout=120)
+    return raised - sent
+
+
+def cli_latency(cartan_bin, args, delay):
+    process = subprocess.Popen([cartan_bin, *args], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    time.sleep(delay)
+    sent = time.monotonic()
+    process.send_signal(signal.SIGINT)
+    process.wait(timeout=120)
+    assert process.returncode == 130, process.returncode
+    return time.monotonic() - sent
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--cartan", default="build/cartan")
+    parser.add_argument("--limits", default="1,3")
+    args = parser.parse_args()
+    time_limits([float(x) for x in args.limits.split(",")])
+    print()
+    print("| after Ctrl-C at | cartan.sweep (threads) | cartan sweep | cartan solve |")
+    print("|---|---|---|---|")
+    long_cli = ["--model", "oscillator", "--lambda", "0.5", "--T", "12", "--N", "2000000", "--method", "two-level",
+                "--a0", "-0.7,-1,-0.7", "--aT", "0.8,0.8,1"]
+    sweep_cli = ["sweep", *long_cli[:2], *long_cli[4:], "--lambdas", "0.25,0.5", "--jobs", "2", "--quiet"]
+    for delay in (1.0, 3.0):
+        print(f"| {delay:g} s | {sweep_latency(delay):.3f} s | {cli_latency(args.cartan, sweep_cli, delay):.3f} s | "
+              f"{cli_latency(args.cartan, ['solve', *long_cli], delay):.3f} s |")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,159 @@
+"""Ctrl-C at any moment: `cartan solve`, `sweep` and `merge` leave their output whole or absent.
+An interrupted command exits 130 with "<command>: interrupted (no output written)" and leaves no
+file at --output (nor a .partial beside it); one that finished before the signal exits as usual
+with its whole output. Each command is signalled at several moments and the outcome is checked
+either way, so that no assertion depends on how fast the machine is; the solves are signalled once
+their own progress report shows them solving, not after a sleep.
+
+Run by ctest (the `cli` test) with CARTAN_BIN pointing at the built `cartan` executable."""
+import csv
+import io
+import json
+import os
+import signal
+import subprocess
+import time
+
+import pytest
+
+CARTAN = os.environ.get("CARTAN_BIN", "build/cartan")
+OSCILLATOR_ENDS = ["--a0", "-0.7,-1,-0.7", "--aT", "0.8,0.8,1"]
+# The paper's two-level scheme on the oscillator with 2e6 steps: many seconds of solving.
+LONG_SOLVE = ["--model", "oscillator", "--lambda", "0.5", "--T", "12", "--N", "2000000", "--method", "two-level",
+              *OSCILLATOR_ENDS]
+# Collocation at tol 1e-12 from the geodesic guess refines for seconds before it fails (max_nodes).
+LONG_COLLOCATION = ["--model", "oscillator", "--lambda", "0.5", "--T", "12", "--N", "800", "--method", "collocation",
+                    "--tol", "1e-12", *OSCILLATOR_ENDS]
+
+
+def start(args):
+    return subprocess.Popen([CARTAN, *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+def wait_for_line(process, words):
+    """Reads stderr until a line holding `words` (the solve's progress); returns the lines read."""
+    lines = []
+    for line in process.stderr:
+        lines.append(line)
+        if words in line:
+            return lines
+    return lines
+
+
+def check_outcome(process, out, command, lines=()):
+    """The process's end is one of the two honest ones; returns whether it was interrupted. A signal
+    that comes before main() has installed its handler (while the program loads) ends the process
+    by the signal, before it did anything: the shell's exit status 130 too, and nothing written."""
+    stdout, stderr = process.communicate(timeout=120)
+    stderr = "".join(lines) + stderr
+    assert not os.path.exists(str(out) + ".partial"), stderr
+    if process.returncode == -signal.SIGINT:
+        assert not out.exists() and stdout == ""
+        return True
+    if process.returncode == 130:
+        assert f"{command}: interrupted (no output written)" in stderr
+        assert not out.exists() and stdout == ""
+        return True
+    assert process.returncode in (0, 1), stderr
+    text = out.read_text()
+    assert text.endswith("\n")
+    if out.suffix == ".json":
+        json.loads(text)  # whole
+    return False
+
+
+@pytest.mark.parametrize("args", [LONG_SOLVE, LONG_COLLOCATION], ids=["two-level", "collocation"])
+def test_solve_interrupted_while_solving_writes_nothing(tmp_path, args):
+    out = tmp_path / "r.json"
+    process = start(["solve", *args, "--progress", "--output", str(out)])
+    lines = wait_for_line(process, "iteration 1,")  # solving, past its first iteration
+    started = time.monotonic()
+    process.send_signal(signal.SIGINT)
+    assert check_outcome(process, out, "cartan solve", lines)
+    assert time.monotonic() - started < 30  # stopped at its next iteration, not at the end of the solve
+
+
+@pytest.mark.parametrize("delay", [0.0, 0.02, 0.1, 0.3])
+def test_solve_interrupted_at_any_moment_leaves_whole_output_or_none(tmp_path, delay):
+    out = tmp_path / "r.json"
+    process = start(["solve", "--model", "oscillator", "--lambda", "0.5", "--T", "3", "--N", "300", *OSCILLATOR_ENDS,
+                     "--output", str(out)])
+    time.sleep(delay)
+    process.send_signal(signal.SIGINT)
+    check_outcome(process, out, "cartan solve")
+
+
+def test_sweep_interrupted_stops_its_running_solves_and_writes_nothing(tmp_path):
+    # Two long solves at once: the signal stops both at their next iteration; the sweep then
+    # writes no table (it would be a table of interrupted rows) and leaves no empty file.
+    out = tmp_path / "table.json"
+    process = start(["sweep", *LONG_SOLVE[:2], *LONG_SOLVE[4:], "--lambdas", "0.25,0.5", "--jobs", "2",
+                     "--output", str(out)])
+    time.sleep(1.0)  # the sweep takes many seconds; the outcome is checked whatever the moment
+    started = time.monotonic()
+    process.send_signal(signal.SIGINT)
+    assert check_outcome(process, out, "cartan sweep")
+    assert time.monotonic() - started < 30
+
+
+@pytest.mark.parametrize("delay", [0.0, 0.05, 0.3])
+def test_sweep_interrupted_at_any_moment_leaves_whole_output_or_none(tmp_path, delay):
+    out = tmp_path / "table.csv"
+    process = start(["sweep", "--model", "oscillator", "--T", "3", "--N", "300", "--a0=-1,-1,-1", "--aT", "1,0.2,0.1",
+                     "--lambda-range", "0:1:6", "--format", "csv", "--quiet", "--output", str(out)])
+    time.sleep(delay)
+    process.send_signal(signal.SIGINT)
+    check_outcome(process, out, "cartan sweep")
+
+
+def test_sweep_output_is_checked_without_creating_it(tmp_path):
+    out = tmp_path / "missing-directory" / "table.json"
+    result = subprocess.run([CARTAN, "sweep", "--model", "oscillator", "--T", "3", "--N", "300", "--a0=-1,-1,-1",
+                             "--aT", "1,0.2,0.1", "--lambdas", "0", "--output", str(out)],
+                            capture_output=True, text=True, timeout=60)
+    assert result.returncode == 2 and "--output" in result.stderr and "cannot be written" in result.stderr
+    assert not out.parent.exists()
+
+
+def big_shards(tmp_path, rows_per_shard=60000):
+    """Two CSV shards of a sweep of 2 rows_per_shard points (one real row, copied under new indices)."""
+    result = subprocess.run([CARTAN, "sweep", "--model", "oscillator", "--T", "3", "--N", "300", "--a0=-1,-1,-1",
+                             "--aT", "1,0.2,0.1", "--lambdas", "0.5", "--format", "csv", "--quiet"],
+                            capture_output=True, text=True, timeout=120)
+    header, row = list(csv.reader(io.StringIO(result.stdout)))
+    index = header.index("index")
+    paths = []
+    for shard in range(2):
+        path = tmp_path / f"part{shard}.csv"
+        text = io.StringIO()
+        writer = csv.writer(text, lineterminator="\n")
+        writer.writerow(header)
+        for i in range(shard, 2 * rows_per_shard, 2):
+            row[index] = str(i)
+            writer.writerow(row)
+        path.write_text(text.getvalue())
+        paths.append(str(path))
+    return paths
+
+
+def test_merge_interrupted_at_any_moment_leaves_whole_output_or_none(tmp_path):
+    paths = big_shards(tmp_path)
+    for delay in [0.0, 0.05, 0.2, 0.5]:
+        out = tmp_path / "all.csv"
+        if out.exists():
+            out.unlink()
+        process = start(["merge", *paths, "--output", str(out)])
+        time.sleep(delay)
+        process.send_signal(signal.SIGINT)
+        check_outcome(process, out, "cartan merge")
+
+
+def test_time_limit_stops_the_solve_with_its_status(tmp_path):
+    out = tmp_path / "r.json"
+    started = time.monotonic()
+    result = subprocess.run([CARTAN, "solve", *LONG_SOLVE, "--time-limit", "0.5", "--output", str(out)],
+                            capture_output=True, text=True, timeout=120)
+    assert result.returncode == 1, result.stderr  # a failure, whose result is written
+    d = json.loads(out.read_text())
+    assert d["status"] == "time-limit" and "time limit of 0.5 s reached" in d["message"]
+    assert 0.5 <= d["solve_time_s"] < time.monotonic() - started
