@@ -79,8 +79,8 @@ def test_site(browser):
     assert report.problems == [], "\n".join(report.problems)
 
     pages = set(report.pages)
-    for name in ("index", "reference", "user-guide", "conventions", "general-connections", "verify",
-                 "equations", "paper-notes", "gallery", "api-python", "api-cpp"):
+    for name in ("index", "reference", "user-guide", "architecture", "conventions", "general-connections",
+                 "verify", "equations", "paper-notes", "gallery", "api-python", "api-cpp"):
         assert f"{name}.html" in pages
     layers = ("core", "groups", "connections", "transport", "mechanics", "numerics", "transported",
               "verify", "manifolds", "general")
