@@ -6,7 +6,7 @@ two kinetic energies written in Python). For every problem the default strategy 
 result checked by cartan.verify (a converged result that verify fails counts as a failure); where
 it fails, every single method is tried, so that the table says whether *some* cartan method
 solves it. CPU s is the process's CPU time of the default solve (time.process_time). Prints a Markdown table and
-the success rates (README "Default solver").
+the success rates (bench/README.md "Default solver: measured success").
 
     PYTHONPATH=build/python /usr/bin/python3 bench/strategy.py [--only NAME]
 """

@@ -1,7 +1,7 @@
 """Sphinx configuration of cartan's documentation site (`make docs`; scripts/build-docs.sh).
 
 The pages of this folder are thin: they include the Markdown the repository already has (README.md,
-docs/*.md) through MyST's include directive, so the site and the files read on a checkout are the
+docs/*.md, bench/README.md) through MyST's include directive, so the site and the files read on a checkout are the
 same text. The Python reference comes from the docstrings (autodoc) of the package
 python/cartan together with the compiled module _cartan of a build tree; the C++ reference from
 the /// comments of include/cartan (Doxygen XML rendered by Breathe); the gallery from the figures

@@ -80,7 +80,7 @@ def test_site(browser):
 
     pages = set(report.pages)
     for name in ("index", "reference", "user-guide", "architecture", "conventions", "general-connections",
-                 "verify", "equations", "paper-notes", "gallery", "api-python", "api-cpp"):
+                 "verify", "equations", "paper-notes", "benchmarks", "gallery", "api-python", "api-cpp"):
         assert f"{name}.html" in pages
     layers = ("core", "groups", "connections", "transport", "mechanics", "numerics", "transported",
               "verify", "manifolds", "general")
