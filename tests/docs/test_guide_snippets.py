@@ -1,16 +1,17 @@
-"""docs/user-guide.md quotes the examples: every code block announced by a comment
+"""docs/user-guide.md and the README quote the examples: every code block announced by a comment
 `<!-- snippet: FILE -->` must appear in FILE (line by line, in order, ignoring indentation), so
-that the guide's code is the code ctest compiles and runs."""
+that the code they show is the code ctest compiles and runs."""
 import re
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 GUIDE = ROOT / "docs" / "user-guide.md"
+README = ROOT / "README.md"
 SNIPPET = re.compile(r"<!-- snippet: (\S+) -->\s*\n\s*```\w*\n(.*?)\n\s*```", re.S)
 
 
-def snippets():
-    return SNIPPET.findall(GUIDE.read_text())
+def snippets(document=GUIDE):
+    return SNIPPET.findall(document.read_text())
 
 
 def lines(text):
@@ -26,12 +27,17 @@ def test_guide_has_snippets():
     assert len(snippets()) >= 8
 
 
+def test_readme_has_snippets():
+    assert len(snippets(README)) >= 1
+
+
 def test_every_snippet_matches_its_file():
-    for name, code in snippets():
-        source = ROOT / name
-        assert source.is_file(), f"{name} (quoted in the guide) does not exist"
-        assert contains_in_order(lines(source.read_text()), lines(code)), \
-            f"a snippet of docs/user-guide.md is not in {name}:\n{code}"
+    for document in (GUIDE, README):
+        for name, code in snippets(document):
+            source = ROOT / name
+            assert source.is_file(), f"{name} (quoted in {document.name}) does not exist"
+            assert contains_in_order(lines(source.read_text()), lines(code)), \
+                f"a snippet of {document.relative_to(ROOT)} is not in {name}:\n{code}"
 
 
 def test_mismatch_is_detected():
