@@ -5,7 +5,7 @@ and the H3 oscillator for several endpoints. Writes out/*.png, out/paper_experim
 prints a summary table.
 
 Usage: /usr/bin/python3 scripts/paper_experiments.py BUILD_DIR OUT_DIR
-(BUILD_DIR/python holds the built package; see README "Python module").
+(BUILD_DIR/python holds the built package; see docs/reference.md "The Python module").
 """
 import json
 import sys
