@@ -34,7 +34,7 @@ SANITIZE_FLAGS ?= -O1 -g0 -DNDEBUG
 build-asan: deps
 	CC=clang CXX=clang++ cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$(SANITIZE_FLAGS)" -DCARTAN_FUZZ=ON -DCARTAN_FUZZ_SECONDS=$(FUZZ_SECONDS) \
-	  -DCARTAN_BUILD_BENCH=OFF $(CMAKE_FLAGS)
+	  -DCARTAN_BUILD_BENCH=OFF -DCARTAN_BUILD_EXAMPLES=OFF $(CMAKE_FLAGS)
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
 
 # Label `install` (the fresh-clone `pip install`, which compiles everything again): make test-install.

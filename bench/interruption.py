@@ -25,7 +25,7 @@ CASES = [
     ("multiple-shooting", dict(N=2_000_000)),
     ("two-level", dict(N=2_000_000)),
     ("collocation", dict(N=800, tol=1e-12)),
-    ("variational", dict(N=300, tol=1e-13)),
+    ("variational", dict(N=500, tol=1e-13)),
 ]
 SPHERE = dict(T=1.0, N=2_000_000, q0=cartan.Sphere.point([1, 0, -0.3]), qT=cartan.Sphere.point([0, 1, -0.5]),
               gravity=9.81, tol=1e-13)

@@ -1,5 +1,5 @@
 #pragma once
-// A TransportedSolution as the JSON of the CLI contract (README.md): trajectories as rows, a
+// A TransportedSolution as the JSON of the CLI contract (docs/reference.md): trajectories as rows, a
 // matrix element (so3, se2, se3) as its numbers row-major, a vector (a Heisenberg element, v, mu,
 // xi) as its n numbers.
 

@@ -1,6 +1,6 @@
 #pragma once
 // `cartan solve`: builds the TransportedProblem a ProblemSpec describes, runs the chosen solver
-// and reports the result as JSON (the CLI contract in README.md).
+// and reports the result as JSON (the CLI contract in docs/reference.md).
 
 #include <nlohmann/json.hpp>
 

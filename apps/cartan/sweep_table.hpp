@@ -1,6 +1,6 @@
 #pragma once
 // The result table of `cartan sweep`: one row per grid point (JSON object), and the whole table
-// as JSON or CSV (README.md, "cartan sweep").
+// as JSON or CSV (docs/reference.md, "cartan sweep").
 
 #include <nlohmann/json.hpp>
 #include <string>

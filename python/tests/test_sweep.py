@@ -218,4 +218,4 @@ def test_ctrl_c_stops_the_running_solves_of_a_sweep_on_threads():
             cartan.sweep(long)
     finally:
         timer.cancel()
-    assert fired and time.perf_counter() - fired[0] < 5  # measured well under the 2 s (README)
+    assert fired and time.perf_counter() - fired[0] < 5  # bench/README.md, "Interruption": well under 2 s

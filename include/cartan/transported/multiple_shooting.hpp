@@ -90,6 +90,8 @@ class MultipleShootingSystem {
   }
 
   int segments() const { return static_cast<int>(boundary_.size()) - 1; }
+  /// The segment sweeps poll `monitor`'s stop_pending (sweep.hpp); may be null.
+  void set_monitor(const SolveMonitor* monitor) { monitor_ = monitor; }
   Eigen::Index size() const { return offset(segments()); }
   const std::string& failure() const { return failure_; }
 
@@ -223,6 +225,7 @@ class MultipleShootingSystem {
 
   bool run(int j, const Node& node, std::optional<NodeTangent> d, SweepOutput<G, L>& out) {
     const std::size_t s = static_cast<std::size_t>(j);
+    out.monitor = monitor_;
     if (sweep_segment(scheme_, node, std::move(d), boundary_[s], boundary_[s + 1], nullptr, out)) return true;
     failure_ = "segment " + std::to_string(j) + ": " + out.failure;
     return false;
@@ -232,6 +235,7 @@ class MultipleShootingSystem {
   std::vector<int> boundary_;   ///< k_0 .. k_M
   std::vector<Node> reference_; ///< reference start nodes of segments 1 .. M-1 (t, g, transport)
   std::string failure_;
+  const SolveMonitor* monitor_ = nullptr;
 };
 
 namespace detail {
@@ -279,6 +283,7 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
   const auto start = std::chrono::steady_clock::now();
   const TransportedScheme<G, L> scheme(problem, options.order);
   System system(scheme, segments);
+  system.set_monitor(options.monitor);
   TransportedSolution<G> solution;
   solution.method = Method::MultipleShooting;
   solution.order = static_cast<int>(options.order);
