@@ -12,7 +12,6 @@
 #include <chrono>
 #include <functional>
 #include <memory>
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -49,13 +48,28 @@ class SolveMonitor {
     copy.cancel_ = std::move(flag);
     return copy;
   }
-  /// The same callbacks, stopping also from `deadline` on.
+  /// The same callbacks, stopping also from `deadline` on (shared by every copy, stages included).
   SolveMonitor with_deadline(std::chrono::steady_clock::time_point deadline) const {
     SolveMonitor copy = *this;
-    copy.deadline_ = deadline;
+    copy.deadline_ = std::make_shared<Deadline>();
+    copy.deadline_->at = deadline;
     return copy;
   }
-  bool deadline_passed() const { return deadline_ && std::chrono::steady_clock::now() >= *deadline_; }
+  /// True from the deadline less the reserve on; once true, stays true (`expired`).
+  bool deadline_passed() const {
+    if (!deadline_) return false;
+    if (deadline_->expired.load(std::memory_order_relaxed)) return true;
+    const std::chrono::nanoseconds reserve(deadline_->reserve_ns.load(std::memory_order_relaxed));
+    if (std::chrono::steady_clock::now() + reserve < deadline_->at) return false;
+    deadline_->expired.store(true, std::memory_order_relaxed);
+    return true;
+  }
+  /// The time a solver needs after a stop to return its result (a recording sweep, the action):
+  /// the deadline then applies that much earlier, so that the call ends near its time limit
+  /// rather than that much after it. Solvers update it as they measure their sweeps.
+  void reserve_after_stop(std::chrono::nanoseconds finishing) const {
+    if (deadline_) deadline_->reserve_ns.store(finishing.count(), std::memory_order_relaxed);
+  }
   void report(int iteration, double residual) const {
     if (progress_) progress_({stage_, iteration, residual});
   }
@@ -71,7 +85,12 @@ class SolveMonitor {
   ProgressCallback progress_;
   StopCallback stop_;
   std::string stage_;
-  std::optional<std::chrono::steady_clock::time_point> deadline_;
+  struct Deadline {
+    std::chrono::steady_clock::time_point at;
+    std::atomic<long long> reserve_ns{0};
+    std::atomic<bool> expired{false};
+  };
+  std::shared_ptr<Deadline> deadline_;
   std::shared_ptr<const std::atomic<bool>> cancel_;
   mutable bool stopped_ = false;
 };

@@ -412,14 +412,16 @@ LONG = dict(lagrangian=cartan.SO3Oscillator(INERTIA), lam=0.5, T=12, gT=cartan.S
 ])
 def test_time_limit_stops_every_method(method, N, extra):
     """time_limit bounds the whole call: the result says time-limit (a failure, with the best iterate
-    so far), and solve_time, the whole call's, is at least the limit and exceeds it by about one
-    iteration (the test allows 5 s: the bound that matters here is that it did not run to the end;
-    the 10 % figure is measured in bench/README.md)."""
+    so far), and solve_time, the whole call's, is about the limit: the solver stops early by its
+    estimate of the work that remains after a stop (a recording sweep, the action), so it may end a
+    little before it, or after it by that work or one iteration (asserted: between half the limit
+    and the limit plus 5 s, i.e. it neither gave up at once nor ran to the end; the figures are in
+    bench/README.md, "Interruption")."""
     limit = 0.4
     r = cartan.solve(**LONG, N=N, method=method, time_limit=limit, **extra)
     assert r.status == "time-limit" and not r.success, (r.status, r.message)
     assert "time limit of 0.4 s reached" in r.message
-    assert limit <= r.solve_time < limit + 5
+    assert 0.5 * limit <= r.solve_time < limit + 5
 
 
 def test_time_limit_is_checked():
@@ -436,4 +438,4 @@ def test_time_limit_on_a_general_connection_counts_every_attempt():
                              time_limit=0.5)
     spent = time.perf_counter() - start
     assert r.status == "time-limit", (r.status, r.message)
-    assert 0.5 <= r.solve_time <= spent
+    assert 0.25 <= r.solve_time <= spent

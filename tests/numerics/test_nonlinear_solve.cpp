@@ -139,6 +139,18 @@ TEST(LevenbergMarquardt, AFailureWithAStopPendingIsAnInterruption) {
   EXPECT_FALSE(SolveMonitor().stop_pending());
 }
 
+// The deadline is shared by every copy of a monitor (the stages of a solve): a solver's reserve for
+// the work after a stop moves it earlier for all of them, and once passed it stays passed.
+TEST(SolveMonitor, TheDeadlineLessTheReserveIsSharedByEveryStage) {
+  const SolveMonitor base = SolveMonitor().with_deadline(std::chrono::steady_clock::now() + std::chrono::hours(1));
+  const SolveMonitor stage = base.stage("shooting");
+  EXPECT_FALSE(stage.stop_pending());
+  stage.reserve_after_stop(std::chrono::hours(2));
+  EXPECT_TRUE(base.deadline_passed());
+  stage.reserve_after_stop(std::chrono::nanoseconds(0));
+  EXPECT_TRUE(stage.stop_requested());  // expired stays expired
+}
+
 TEST(LevenbergMarquardt, RejectsBadInput) {
   using testing::expect_invalid;
   const Eigen::Vector2d start(-1.2, 1.0);

@@ -145,9 +145,14 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
     ++solution.sweeps;
     const bool record = jacobian == nullptr && options.analytic_jacobian;
     if (record) recorded_x.resize(0);
+    const auto begin = std::chrono::steady_clock::now();
     const auto last = general_sweep(scheme, v0, Xi0, failure, record ? &recorded : nullptr,
                                     jacobian ? &tangent : nullptr, jacobian, options.monitor);
     if (!last) return false;
+    // After a stop: one recording sweep (a tangent-linear one costs about 3 plain ones or more).
+    if (options.monitor) {
+      options.monitor->reserve_after_stop((std::chrono::steady_clock::now() - begin) / (jacobian ? 3 : 1));
+    }
     if (!scheme.terminal_residual_defined(last->q)) {  // the cut locus of qT: r_q would be meaningless
       failure = "q_N = " + format_value(last->q) + " is where difference(qT, .) is not defined (the cut locus of qT " +
                 "or outside the domain)";

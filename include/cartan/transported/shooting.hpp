@@ -125,10 +125,13 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
     out.trajectory = trajectory;
     out.monitor = options.monitor;
     ++solution.sweeps;
+    const auto begin = std::chrono::steady_clock::now();
     if (!forward_sweep(scheme, v0, xi0, nullptr, 0, out)) {
       failure = out.failure;
       return false;
     }
+    // After a stop: one recording sweep and the action (solve.hpp), about two such sweeps.
+    if (options.monitor) options.monitor->reserve_after_stop(2 * (std::chrono::steady_clock::now() - begin));
     r.resize(2 * n);
     r << scheme.terminal_residual(out.last), out.last.xi / s;
     return true;
@@ -146,10 +149,14 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
       SweepOutput<G, L> out;
       out.monitor = options.monitor;
       ++solution.sweeps;
+      const auto begin = std::chrono::steady_clock::now();
       if (!forward_sweep(scheme, v0, xi0, nullptr, 2 * n, out)) {
         failure = out.failure;
         return false;
       }
+      // Until a plain sweep is timed: a tangent-linear sweep costs about 3 plain ones or more
+      // (bench/README.md), and after a stop come a recording sweep and the action.
+      if (options.monitor) options.monitor->reserve_after_stop((std::chrono::steady_clock::now() - begin) * 2 / 3);
       const groups::TangentOf<G> rg = scheme.terminal_residual(out.last);
       r.resize(2 * n);
       r << rg, out.last.xi / s;

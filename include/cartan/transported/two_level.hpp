@@ -54,9 +54,14 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
     out.monitor = options.monitor;
     ++solution.sweeps;
     const int columns = (jac != nullptr && options.analytic_jacobian) ? n : 0;
+    const auto begin = std::chrono::steady_clock::now();
     if (!forward_sweep(scheme, groups::TangentOf<G>(x), groups::CovectorOf<G>::Zero(), &xi, columns, out)) {
       failure = out.failure;
       return false;
+    }
+    // After a stop: a recording sweep and the action, about two plain sweeps (shooting.hpp).
+    if (options.monitor) {
+      options.monitor->reserve_after_stop((std::chrono::steady_clock::now() - begin) * 2 / (columns > 0 ? 3 : 1));
     }
     const groups::TangentOf<G> rg = scheme.terminal_residual(out.last);
     r = rg;
