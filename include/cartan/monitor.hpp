@@ -12,6 +12,7 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -42,6 +43,18 @@ class SolveMonitor {
   /// the solver's next stop_requested() then ends the solve.
   bool stop_pending() const { return (cancel_ && cancel_->load(std::memory_order_relaxed)) || deadline_passed(); }
   static constexpr int kStepsBetweenPolls = 1024;
+  /// What a sweep polls at its step k: stop_pending() at every kStepsBetweenPolls-th step; false
+  /// between them and without a monitor. Its message, when true: stopped_message(k).
+  static bool stop_pending_at(const SolveMonitor* monitor, int k) {
+    return monitor != nullptr && k % kStepsBetweenPolls == kStepsBetweenPolls - 1 && monitor->stop_pending();
+  }
+  static std::string stopped_message(int k) {
+    return "stopped at step " + std::to_string(k) + " (time limit or cancellation)";
+  }
+  /// A copy reporting under `name`, or nothing without a monitor (for an options' monitor pointer).
+  static std::optional<SolveMonitor> staged(const SolveMonitor* monitor, std::string name) {
+    return monitor == nullptr ? std::nullopt : std::optional<SolveMonitor>(monitor->stage(std::move(name)));
+  }
   /// The same callbacks, stopping also once `flag` is raised (from any thread or a signal handler).
   SolveMonitor with_cancel_flag(std::shared_ptr<const std::atomic<bool>> flag) const {
     SolveMonitor copy = *this;

@@ -83,9 +83,8 @@ std::optional<GeneralNode<M>> general_sweep(const GeneralScheme<M, L>& scheme, c
     if (tangent) dnode = tangent->initial(node);
     if (trajectory) trajectory->clear(), trajectory->push(node);
     for (int k = 0; k < scheme.problem().N; ++k) {
-      if (monitor && k % SolveMonitor::kStepsBetweenPolls == SolveMonitor::kStepsBetweenPolls - 1 &&
-          monitor->stop_pending()) {
-        failure = "stopped at step " + std::to_string(k) + " (time limit or cancellation)";
+      if (SolveMonitor::stop_pending_at(monitor, k)) {
+        failure = SolveMonitor::stopped_message(k);
         return std::nullopt;
       }
       tangent ? tangent->step(node, dnode, next, dnext) : scheme.step(node, next);

@@ -162,11 +162,10 @@ GeneralSolution<M> run_methods(const GeneralProblem<M, L>& problem, const transp
 /// or a method this problem family does not have; numerical failure is a status. solve_time_s is
 /// the whole call's, every attempt of the strategy included.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported::SolveOptions& requested = {},
+GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options = {},
                          const GeneralGuess<M>& guess = {}) {
   problem.validate();
-  requested.validate();
-  const transported::SolveOptions& options = requested;  // checked here, run under its deadline below
+  options.validate();
   using transported::Continuation;
   using transported::Method;
   if (options.method != Method::Auto && options.method != Method::Shooting && options.method != Method::Collocation) {
@@ -184,7 +183,7 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported:
     validate_trajectory(problem, *guess.trajectory, "general::solve", "guess.trajectory");
   }
   const auto start = std::chrono::steady_clock::now();
-  const transported::SolveOptions timed = transported::with_deadline(requested, start);
+  const transported::SolveOptions timed = transported::with_deadline(options, start);
   GeneralSolution<M> s = detail::run_methods(problem, timed, guess);
   transported::apply_time_limit(timed, s.status, s.message);
   s.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -172,11 +172,9 @@ PathEnd continue_parameter(const MakeProblem& make, double from, double to, Solu
     }
     ShootingOptions stage = path;
     const std::string name = std::string(parameter);
-    const std::optional<SolveMonitor> named =
-        path.monitor == nullptr ? std::nullopt
-                                : std::optional(path.monitor->stage("continuation in " + name + ", stage " +
-                                                                    std::to_string(end.stages) + " at " + name + " = " +
-                                                                    format_value(next)));
+    const std::optional<SolveMonitor> named = SolveMonitor::staged(
+        path.monitor, "continuation in " + name + ", stage " + std::to_string(end.stages) + " at " + name + " = " +
+                          format_value(next));
     if (named) stage.monitor = &*named;
     stage.max_initial_residual = options.max_stage_residual;
     if (next != to) stage.tolerance = std::max(path.tolerance, options.stage_tolerance);
@@ -282,8 +280,7 @@ Solution continue_in_T(const Problem& problem, const ContinuationOptions& option
     const Velocity v0 = v0_guess ? Velocity(*v0_guess * (problem.T / start)) : Family::guess(p);
     ShootingOptions start_options = path;
     const std::optional<SolveMonitor> named =
-        path.monitor == nullptr ? std::nullopt
-                                : std::optional(path.monitor->stage("continuation in T, start at T = " + format_value(start)));
+        SolveMonitor::staged(path.monitor, "continuation in T, start at T = " + format_value(start));
     if (named) start_options.monitor = &*named;
     if (halving > 0) start_options.max_initial_residual = options.max_start_residual;
     first = Family::shoot(p, start_options, v0, aux_guess && halving == 0 ? *aux_guess : Auxiliary(Auxiliary::Zero()));

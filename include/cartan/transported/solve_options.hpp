@@ -33,8 +33,9 @@ struct SolveOptions {
   std::optional<double> lambda_start;  ///< continuation in lambda only (default 0)
   int samples = 0;                     ///< collocation only: output at this many uniform times (0: the final mesh)
   std::optional<int> max_nodes;        ///< collocation only (default transported::kTransportedMaxNodes)
-  /// Seconds the whole call may take (every method and attempt); past it the running method stops
-  /// at its next iteration and the result has status time-limit. Empty: no limit.
+  /// Seconds the whole call may take (every method and attempt): the running method stops (polled
+  /// once per iteration and inside sweeps) early enough for the work after a stop, and the result
+  /// has status time-limit. Empty: no limit.
   std::optional<double> time_limit;
   SolveMonitor monitor;                ///< progress reports and stop requests
 

@@ -47,9 +47,8 @@ bool sweep_segment(const TransportedScheme<G, L>& scheme, SchemeNode<G> node,
     }
     std::size_t current = 0;
     for (int k = first; k < last; ++k) {
-      if (out.monitor && (k - first) % SolveMonitor::kStepsBetweenPolls == SolveMonitor::kStepsBetweenPolls - 1 &&
-          out.monitor->stop_pending()) {
-        out.failure = "stopped at step " + std::to_string(k) + " (time limit or cancellation)";
+      if (SolveMonitor::stop_pending_at(out.monitor, k - first)) {
+        out.failure = SolveMonitor::stopped_message(k);
         return false;
       }
       const groups::CovectorOf<G>* xi_next = given_xi ? &(*given_xi)[static_cast<std::size_t>(k) + 1] : nullptr;
