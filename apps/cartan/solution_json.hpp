@@ -45,6 +45,7 @@ nlohmann::json solution_json(const ProblemSpec& spec, const transported::Transpo
   const auto& tr = s.trajectory;
   nlohmann::json out = result_header(spec, std::string(to_string(s.status)), s.message,
                                      std::string(to_string(s.method)), s.order, s.branch);
+  if (s.status == Status::Interrupted) return out;  // never written (exit 130): no trajectory to format
   out["connection"] = "cartan-schouten";
   out["side"] = "left";
   out["t"] = tr.t;
@@ -67,6 +68,7 @@ nlohmann::json solution_json(const ProblemSpec& spec, const transported::Transpo
 /// for collocation, mesh_size and max_residual.
 template <manifolds::ManifoldWithConnection M>
 void add_general_solution(nlohmann::json& out, const general::GeneralSolution<M>& s, const char* point_key) {
+  if (s.status == Status::Interrupted) return;  // never written (exit 130): no trajectory to format
   out["t"] = s.trajectory.t;
   out[point_key] = rows(s.trajectory.q);
   out["v"] = rows(s.trajectory.v);

@@ -34,7 +34,9 @@ struct SweepFlags {
 bool solve_into(std::size_t index, const GridPoint& point, bool trajectories, nlohmann::json& row) noexcept {
   if (interrupted()) return true;
   try {
-    row = result_row(index, point, solve(point.spec, interruptible(SolveMonitor())), trajectories);
+    const nlohmann::json result = solve(point.spec, interruptible(SolveMonitor()));
+    if (interrupted()) return true;  // an interrupted result has no trajectory (solution_json.hpp)
+    row = result_row(index, point, result, trajectories);
   } catch (const std::invalid_argument& e) {  // boundary data solve() rejects, e.g. a gT that is no rotation
     row = error_row(index, point, retitled(e, "cartan sweep: grid point " + std::to_string(index)).what());
   } catch (const std::exception& e) {

@@ -43,10 +43,22 @@ class SolveMonitor {
   /// the solver's next stop_requested() then ends the solve.
   bool stop_pending() const { return (cancel_ && cancel_->load(std::memory_order_relaxed)) || deadline_passed(); }
   static constexpr int kStepsBetweenPolls = 1024;
-  /// What a sweep polls at its step k: stop_pending() at every kStepsBetweenPolls-th step; false
-  /// between them and without a monitor. Its message, when true: stopped_message(k).
-  static bool stop_pending_at(const SolveMonitor* monitor, int k) {
-    return monitor != nullptr && k % kStepsBetweenPolls == kStepsBetweenPolls - 1 && monitor->stop_pending();
+  /// What a sweep of `steps` steps, begun at `begin`, polls at its step k: stop_pending() at every
+  /// kStepsBetweenPolls-th step; false between them and without a monitor. Its message, when true:
+  /// stopped_message(k). Until the solver has timed a
+  /// whole sweep (reserve_after_stop), the poll also projects the reserve from this sweep's pace:
+  /// `after_stop` times the whole sweep's projected time (the work after a stop, in sweeps of this
+  /// kind), so that a sweep longer than the time limit itself stops in time for what follows.
+  static bool stop_pending_at(const SolveMonitor* monitor, int k, int steps,
+                              std::chrono::steady_clock::time_point begin, double after_stop) {
+    if (monitor == nullptr || k % kStepsBetweenPolls != kStepsBetweenPolls - 1) return false;
+    if (monitor->deadline_ && !monitor->deadline_->timed.load(std::memory_order_relaxed)) {
+      const std::chrono::duration<double> pace = (std::chrono::steady_clock::now() - begin) / double(k + 1);
+      monitor->deadline_->reserve_ns.store(
+          std::chrono::duration_cast<std::chrono::nanoseconds>(pace * (after_stop * steps)).count(),
+          std::memory_order_relaxed);
+    }
+    return monitor->stop_pending();
   }
   static std::string stopped_message(int k) {
     return "stopped at step " + std::to_string(k) + " (time limit or cancellation)";
@@ -69,19 +81,21 @@ class SolveMonitor {
     return copy;
   }
   /// True from the deadline less the reserve on; once true, stays true (`expired`).
-  bool deadline_passed() const {
-    if (!deadline_) return false;
-    if (deadline_->expired.load(std::memory_order_relaxed)) return true;
-    const std::chrono::nanoseconds reserve(deadline_->reserve_ns.load(std::memory_order_relaxed));
-    if (std::chrono::steady_clock::now() + reserve < deadline_->at) return false;
-    deadline_->expired.store(true, std::memory_order_relaxed);
-    return true;
+  bool deadline_passed() const { return deadline_passed_after(std::chrono::nanoseconds(0)); }
+  /// stop_requested(), or the deadline would pass during `next` (the length of the iteration about to
+  /// start, e.g. the last one's): an iteration that cannot end in time is not begun, and the
+  /// deadline counts as passed from then on.
+  bool stop_requested_before(std::chrono::nanoseconds next) const {
+    if (!stopped_ && deadline_passed_after(next)) stopped_ = true;
+    return stop_requested();
   }
   /// The time a solver needs after a stop to return its result (a recording sweep, the action):
   /// the deadline then applies that much earlier, so that the call ends near its time limit
   /// rather than that much after it. Solvers update it as they measure their sweeps.
   void reserve_after_stop(std::chrono::nanoseconds finishing) const {
-    if (deadline_) deadline_->reserve_ns.store(finishing.count(), std::memory_order_relaxed);
+    if (!deadline_) return;
+    deadline_->reserve_ns.store(finishing.count(), std::memory_order_relaxed);
+    deadline_->timed.store(true, std::memory_order_relaxed);
   }
   void report(int iteration, double residual) const {
     if (progress_) progress_({stage_, iteration, residual});
@@ -101,8 +115,17 @@ class SolveMonitor {
   struct Deadline {
     std::chrono::steady_clock::time_point at;
     std::atomic<long long> reserve_ns{0};
+    std::atomic<bool> timed{false};  ///< a solver has set the reserve from a whole sweep
     std::atomic<bool> expired{false};
   };
+  bool deadline_passed_after(std::chrono::nanoseconds next) const {
+    if (!deadline_) return false;
+    if (deadline_->expired.load(std::memory_order_relaxed)) return true;
+    const std::chrono::nanoseconds reserve(deadline_->reserve_ns.load(std::memory_order_relaxed));
+    if (std::chrono::steady_clock::now() + next + reserve < deadline_->at) return false;
+    deadline_->expired.store(true, std::memory_order_relaxed);
+    return true;
+  }
   std::shared_ptr<Deadline> deadline_;
   std::shared_ptr<const std::atomic<bool>> cancel_;
   mutable bool stopped_ = false;

@@ -3,6 +3,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -377,6 +378,8 @@ struct NewtonOutcome {
 struct Counters {
   int newton = 0;
   int jacobians = 0;
+  /// The last Newton iteration's time per node: the next one's on a refined mesh is foreseen from it.
+  std::chrono::duration<double> iteration_per_node{0};
 };
 
 bool newton_converged(const ResidualSize& size, const CollocationOptions& options) {
@@ -416,7 +419,18 @@ NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOption
   auto worth_reusing = [&](double simplified, double norm) {
     return options.reuse_jacobian && simplified <= kReuseContraction * norm;
   };
+  // Between the phases of an iteration (Jacobian, factorisation, each trial): a stop abandons the
+  // iteration and returns the last accepted iterate, `it`.
+  auto stop_pending = [&] { return options.monitor != nullptr && options.monitor->stop_pending(); };
+  const NewtonOutcome stopped{Status::Interrupted, "stop requested"};
+  auto iteration_begin = std::chrono::steady_clock::now();
   for (int iteration = 0;; ++iteration) {
+    const auto now = std::chrono::steady_clock::now();
+    const auto nodes = static_cast<double>(it.nodes());
+    if (iteration > 0) counters.iteration_per_node = (now - iteration_begin) / nodes;
+    iteration_begin = now;
+    // The next iteration is begun only if it can end in time (its length foreseen from the last).
+    const auto next_iteration = std::chrono::duration_cast<std::chrono::nanoseconds>(counters.iteration_per_node * nodes);
     const ResidualSize size = residual_size(it, n, options.tol);
     if (newton_converged(size, options)) return {};
     if (iteration == options.max_newton_iterations) {
@@ -426,7 +440,7 @@ NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOption
     }
     if (options.monitor != nullptr) {
       options.monitor->report(counters.newton, std::max(size.collocation, size.boundary));
-      if (options.monitor->stop_requested()) return {Status::Interrupted, "stop requested"};
+      if (options.monitor->stop_requested_before(next_iteration)) return stopped;
     }
     ++counters.newton;
     const VectorXd z = it.unknowns();
@@ -446,6 +460,7 @@ NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOption
     }
     jacobian<N>(model, it, rates, jac);
     ++counters.jacobians;
+    if (stop_pending()) return stopped;
     if (!solver.factorize(jac)) {
       return {Status::SingularJacobian, "the collocation Jacobian is singular on " + std::to_string(it.nodes()) +
                                                " nodes (" + solver.error() + ")"};
@@ -459,6 +474,7 @@ NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOption
     double alpha = 1;
     bool accepted = false;
     for (int backtrack = 0; backtrack < kMaxBacktracks && !accepted; ++backtrack, alpha /= 2) {
+      if (stop_pending()) return stopped;
       if (!evaluate<N>(model, it, VectorXd(z - alpha * step), trial)) continue;
       chord = solver.solve(trial.residual);
       const double simplified = chord.norm();

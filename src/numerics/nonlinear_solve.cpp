@@ -1,5 +1,6 @@
 #include "cartan/numerics/nonlinear_solve.hpp"
 
+#include <chrono>
 #include <limits>
 #include <sstream>
 
@@ -138,7 +139,11 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
   };
   // best[i]: the best |r| after i iterations (the no-progress test compares across a window).
   std::vector<double> best{report.residual_norm};
+  auto iteration_begin = std::chrono::steady_clock::now();
   while (true) {
+    const auto now = std::chrono::steady_clock::now();
+    const auto last_iteration = now - iteration_begin;  // the next one is begun only if it can end in time
+    iteration_begin = now;
     if (report.residual_norm <= options.tolerance) {
       finish(report, Status::Converged, "");
       return report;
@@ -149,7 +154,7 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
     }
     if (options.monitor != nullptr) {
       options.monitor->report(report.iterations, report.residual_norm);
-      if (options.monitor->stop_requested()) {
+      if (options.monitor->stop_requested_before(last_iteration)) {
         finish(report, Status::Interrupted, "stop requested");
         return report;
       }

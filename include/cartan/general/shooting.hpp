@@ -15,6 +15,7 @@
 #include "cartan/general/scheme.hpp"
 #include "cartan/general/tangent.hpp"
 #include "cartan/numerics/nonlinear_solve.hpp"
+#include "cartan/numerics/recorded_points.hpp"
 #include "cartan/status.hpp"
 #include "cartan/transported/method.hpp"
 #include "cartan/transported/shooting.hpp"
@@ -77,13 +78,17 @@ std::optional<GeneralNode<M>> general_sweep(const GeneralScheme<M, L>& scheme, c
                                             const GeneralSchemeTangent<M, L>* tangent = nullptr,
                                             Eigen::MatrixXd* jacobian = nullptr, const SolveMonitor* monitor = nullptr) {
   constexpr int m = M::kDim;
+  const auto begin = std::chrono::steady_clock::now();
   try {
     GeneralNode<M> node = scheme.initial(v0, Xi0), next;
     GeneralNodeTangent<M> dnode, dnext;
     if (tangent) dnode = tangent->initial(node);
     if (trajectory) trajectory->clear(), trajectory->push(node);
     for (int k = 0; k < scheme.problem().N; ++k) {
-      if (SolveMonitor::stop_pending_at(monitor, k)) {
+      // Until a sweep is timed, what follows a stop is projected: a recording sweep (a tangent-linear
+      // sweep costs about 3 plain ones or more), or nothing where the sweeps record themselves.
+      const double after_stop = trajectory ? 0.0 : tangent ? 1.0 / 3 : 1.0;
+      if (SolveMonitor::stop_pending_at(monitor, k, scheme.problem().N, begin, after_stop)) {
         failure = SolveMonitor::stopped_message(k);
         return std::nullopt;
       }
@@ -135,31 +140,32 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   // (1 / T, s) and its Xi rows by 1 / s.
   Eigen::VectorXd scaling(m + m * m);
   scaling << Eigen::VectorXd::Constant(m, 1 / T), Eigen::VectorXd::Constant(m * m, s);
-  // As in transported/shooting.hpp: the residual-only sweeps of the analytic path record their
-  // trajectory, so that the final point (asked for without a Jacobian) needs no further sweep.
-  GeneralTrajectory<M> recorded;
-  Eigen::VectorXd recorded_x;
+  // As in transported/shooting.hpp: the analytic path records every sweep, so that the result's
+  // point needs no sweep of its own, even after a stop cut a sweep short.
+  numerics::RecordedPoints<GeneralTrajectory<M>> points;
   auto residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian) {
     const auto [v0, Xi0] = unpack(x);
     ++solution.sweeps;
-    const bool record = jacobian == nullptr && options.analytic_jacobian;
-    if (record) recorded_x.resize(0);
+    GeneralTrajectory<M>* trajectory = options.analytic_jacobian ? points.start(x) : nullptr;
     const auto begin = std::chrono::steady_clock::now();
-    const auto last = general_sweep(scheme, v0, Xi0, failure, record ? &recorded : nullptr,
-                                    jacobian ? &tangent : nullptr, jacobian, options.monitor);
+    const auto last = general_sweep(scheme, v0, Xi0, failure, trajectory, jacobian ? &tangent : nullptr, jacobian,
+                                    options.monitor);
     if (!last) return false;
-    // After a stop: one recording sweep (a tangent-linear one costs about 3 plain ones or more).
+    // After a stop: the result, or a recording sweep when none was recorded (a tangent-linear
+    // sweep costs about 3 plain ones or more).
     if (options.monitor) {
-      options.monitor->reserve_after_stop((std::chrono::steady_clock::now() - begin) / (jacobian ? 3 : 1));
+      const double share = (trajectory ? 0.25 : 1.0) / (jacobian ? 3 : 1);
+      options.monitor->reserve_after_stop(
+          std::chrono::duration_cast<std::chrono::nanoseconds>((std::chrono::steady_clock::now() - begin) * share));
     }
     if (!scheme.terminal_residual_defined(last->q)) {  // the cut locus of qT: r_q would be meaningless
       failure = "q_N = " + format_value(last->q) + " is where difference(qT, .) is not defined (the cut locus of qT " +
                 "or outside the domain)";
       return false;
     }
-    if (record) recorded_x = x;
     r.resize(m + m * m);
     r << scheme.terminal_residual(*last), last->Xi.reshaped() / s;
+    if (trajectory) points.finish(r.norm());
     if (jacobian) {
       *jacobian = *jacobian * scaling.asDiagonal();
       jacobian->bottomRows(m * m) /= s;
@@ -184,10 +190,13 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   solution.residual_history = report.residual_history;
   const auto [v0, Xi0] = unpack(report.x);
   std::optional<GeneralNode<M>> last;
-  if (recorded_x.size() == report.x.size() && recorded_x == report.x) {
-    solution.trajectory = std::move(recorded);
+  GeneralTrajectory<M>* recorded = points.find(report.x);
+  // Stopped before a sweep of the result's point completed: no trajectory, not a sweep after the stop.
+  const bool unrecorded_stop = !recorded && report.status == Status::Interrupted && options.analytic_jacobian;
+  if (recorded) {
+    solution.trajectory = std::move(*recorded);
     last = solution.trajectory.back();
-  } else {
+  } else if (!unrecorded_stop) {
     ++solution.sweeps;
     std::string record_failure;
     last = general_sweep(scheme, v0, Xi0, record_failure, &solution.trajectory);
@@ -203,7 +212,7 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
     }
   } else {
     solution.trajectory = {};
-    solution.status = Status::NonFinite;
+    solution.status = unrecorded_stop ? report.status : Status::NonFinite;
   }
   std::ostringstream message;
   message << "general shooting (" << (options.analytic_jacobian ? "tangent-linear" : "finite-difference")
@@ -211,6 +220,7 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
           << (scheme.uses_constant_components() ? ", constant frame components" : "") << "): " << report.message
           << ", " << solution.sweeps << " sweeps";
   if (!failure.empty()) message << "; last failed sweep: " << failure;
+  if (unrecorded_stop) message << "; stopped before a sweep completed: no trajectory";
   if (report.status == Status::Converged && !solution.converged()) {
     message << "; but q_N is " << format_value(solution.terminal_error) << " from qT: not converged";
   }

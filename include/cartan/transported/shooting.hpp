@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "cartan/numerics/nonlinear_solve.hpp"
+#include "cartan/numerics/recorded_points.hpp"
 #include "cartan/transported/solution.hpp"
 #include "cartan/transported/sweep.hpp"
 
@@ -114,11 +115,18 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   auto unpack = [&](const Eigen::VectorXd& x) {
     return std::pair<groups::TangentOf<G>, groups::CovectorOf<G>>(x.head<n>() / T, x.tail<n>() * s);
   };
-  // The trajectory of the last residual-only sweep of the analytic path and its unknowns: the
-  // Levenberg–Marquardt solver asks for the residual alone where it expects convergence, so
-  // that the final point's trajectory is recorded there and no sweep is repeated for it.
-  TransportedTrajectory<G> recorded;
-  Eigen::VectorXd recorded_x;
+  // The analytic path records every sweep (numerics/recorded_points.hpp): the result's point, the
+  // last accepted one, then needs no sweep of its own, even after a stop cut a sweep short.
+  numerics::RecordedPoints<TransportedTrajectory<G>> points;
+  // After a stop come the action and the result (about half a plain sweep; a tangent-linear sweep
+  // costs about 3 plain ones: bench/README.md), or, before any sweep was recorded, a recording
+  // sweep too.
+  auto reserve = [&](std::chrono::steady_clock::time_point begin, double share) {
+    if (options.monitor) {
+      options.monitor->reserve_after_stop(
+          std::chrono::duration_cast<std::chrono::nanoseconds>((std::chrono::steady_clock::now() - begin) * share));
+    }
+  };
   auto residual_only = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, TransportedTrajectory<G>* trajectory = nullptr) {
     const auto [v0, xi0] = unpack(x);
     SweepOutput<G, L> out;
@@ -130,8 +138,7 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
       failure = out.failure;
       return false;
     }
-    // After a stop: one recording sweep and the action (solve.hpp), about two such sweeps.
-    if (options.monitor) options.monitor->reserve_after_stop(2 * (std::chrono::steady_clock::now() - begin));
+    reserve(begin, trajectory ? 0.5 : 2.0);
     r.resize(2 * n);
     r << scheme.terminal_residual(out.last), out.last.xi / s;
     return true;
@@ -139,27 +146,27 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   numerics::ResidualFunction f;
   if (options.analytic_jacobian) {
     f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
+      TransportedTrajectory<G>* trajectory = points.start(x);
       if (jac == nullptr) {
-        recorded_x.resize(0);
-        if (!residual_only(x, r, &recorded)) return false;
-        recorded_x = x;
+        if (!residual_only(x, r, trajectory)) return false;
+        points.finish(r.norm());
         return true;
       }
       const auto [v0, xi0] = unpack(x);
       SweepOutput<G, L> out;
       out.monitor = options.monitor;
+      out.trajectory = trajectory;
       ++solution.sweeps;
       const auto begin = std::chrono::steady_clock::now();
       if (!forward_sweep(scheme, v0, xi0, nullptr, 2 * n, out)) {
         failure = out.failure;
         return false;
       }
-      // Until a plain sweep is timed: a tangent-linear sweep costs about 3 plain ones or more
-      // (bench/README.md), and after a stop come a recording sweep and the action.
-      if (options.monitor) options.monitor->reserve_after_stop((std::chrono::steady_clock::now() - begin) * 2 / 3);
+      reserve(begin, 0.5 / 3);
       const groups::TangentOf<G> rg = scheme.terminal_residual(out.last);
       r.resize(2 * n);
       r << rg, out.last.xi / s;
+      points.finish(r.norm());
       // Chain rule for the scaled unknowns: columns for v0 / T and xi0 s; rows of xi_N / s.
       jac->resize(2 * n, 2 * n);
       jac->topRows(n) = scheme.terminal_residual_tangent(rg, *out.tangent);
@@ -181,14 +188,18 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   solution.inner_iterations = report.iterations;
   solution.residual_history = report.residual_history;
   const auto [v0, xi0] = unpack(report.x);
-  const bool reuse = recorded_x.size() == report.x.size() && recorded_x == report.x;
-  const bool ok = detail::record_solution(scheme, v0, xi0, nullptr, solution, reuse ? &recorded : nullptr);
-  solution.status = ok ? report.status : Status::NonFinite;
+  TransportedTrajectory<G>* recorded = points.find(report.x);
+  // Stopped before a sweep of the result's point completed: no trajectory (as after a non-finite
+  // sweep), not a sweep after the stop.
+  const bool unrecorded_stop = !recorded && report.status == Status::Interrupted && options.analytic_jacobian;
+  const bool ok = !unrecorded_stop && detail::record_solution(scheme, v0, xi0, nullptr, solution, recorded);
+  solution.status = ok || unrecorded_stop ? report.status : Status::NonFinite;
   std::ostringstream message;
   message << "shooting (" << (options.analytic_jacobian ? "analytic" : "finite-difference")
           << " Jacobian, xi scale " << format_value(s) << "): " << report.message << ", " << solution.sweeps
           << " sweeps";
   if (!failure.empty()) message << "; last failed sweep: " << failure;
+  if (unrecorded_stop) message << "; stopped before a sweep completed: no trajectory";
   solution.message = message.str();
   solution.solve_time_s = detail::seconds_since(start);
   return solution;

@@ -355,8 +355,12 @@ TransportedSolution<G> solve_variational(const TransportedProblem<G, L>& problem
   } else if (newton.unknowns() == 0) {
     status = Status::Converged;  // N = 1: no interior node, the path is the step from g0 to gT
   }
+  auto iteration_begin = std::chrono::steady_clock::now();
   for (; status == Status::MaxIterations && iteration < options.max_iterations; ++iteration) {
-    if (options.monitor && options.monitor->stop_requested()) {
+    const auto now = std::chrono::steady_clock::now();
+    const auto last_iteration = now - iteration_begin;  // the next one is begun only if it can end in time
+    iteration_begin = now;
+    if (options.monitor && options.monitor->stop_requested_before(last_iteration)) {
       status = Status::Interrupted;
       break;
     }
