@@ -1,6 +1,6 @@
 #include "connection_command.hpp"
 
-#include "cartan/general/solve.hpp"
+#include "cartan/general/compiled.hpp"
 #include "model_table.hpp"
 #include "solution_json.hpp"
 #include "solve_command.hpp"

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cartan/general/problem.hpp"
+#include "cartan/general/erased_lagrangian.hpp"
 #include "cartan/monitor.hpp"
 #include "model_table.hpp"
 #include "problem_spec.hpp"
@@ -31,14 +31,16 @@ manifolds::GroupManifold<G> connection_manifold(const ProblemSpec& spec) {
 }
 
 /// The general problem of a validated group spec with a connection other than cartan-schouten,
-/// for the model table's Entry (visit_model).
+/// for the model table's Entry (visit_model): the model behind the erased Lagrangian, whose solve
+/// and verify the library compiles once (general/compiled.hpp).
 template <class Entry>
-auto connection_problem(const ProblemSpec& spec, std::string_view where) {
+general::ErasedProblem<manifolds::GroupManifold<typename Entry::Table::Group>> connection_problem(
+    const ProblemSpec& spec, std::string_view where) {
   using G = typename Entry::Table::Group;
+  using M = manifolds::GroupManifold<G>;
   using L = general::OnGroupManifold<G, typename Entry::Lagrangian>;
-  return general::GeneralProblem<manifolds::GroupManifold<G>, L>{
-      connection_manifold<G>(spec), L{make_lagrangian<Entry>(spec.inertia, where)}, spec.T, spec.N,
-      element_of<G>(spec.g0), element_of<G>(final_element(spec)), std::nullopt};
+  return {connection_manifold<G>(spec), general::ErasedLagrangian<M>(L{make_lagrangian<Entry>(spec.inertia, where)}),
+          spec.T, spec.N, element_of<G>(spec.g0), element_of<G>(final_element(spec)), std::nullopt};
 }
 
 /// Solves a validated group problem whose connection is not cartan-schouten.

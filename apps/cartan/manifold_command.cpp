@@ -1,6 +1,6 @@
 #include "manifold_command.hpp"
 
-#include "cartan/general/solve.hpp"
+#include "cartan/general/compiled.hpp"
 #include "cartan/manifolds/quadric.hpp"
 #include "solution_json.hpp"
 #include "solve_command.hpp"
@@ -14,7 +14,7 @@ SphereProblem sphere_problem(const ProblemSpec& spec) {
   frame.col(1) = q0.cross(Eigen::Vector3d(frame.col(0)));
   const SphereParticle particle = SphereParticle::with_linear_potential(Eigen::Vector2d(spec.mass[0], spec.mass[1]).asDiagonal(),
                                                                         Eigen::Vector3d(0, 0, spec.gravity));
-  return {manifolds::Sphere{}, particle, spec.T, spec.N, q0, qT, frame};
+  return {manifolds::Sphere{}, general::ErasedLagrangian<manifolds::Sphere>(particle), spec.T, spec.N, q0, qT, frame};
 }
 
 nlohmann::json solve_manifold(const ProblemSpec& spec, const SolveMonitor& monitor) {

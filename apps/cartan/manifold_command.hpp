@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cartan/general/problem.hpp"
+#include "cartan/general/erased_lagrangian.hpp"
 #include "cartan/manifolds/quadric.hpp"
 #include "cartan/monitor.hpp"
 #include "problem_spec.hpp"
@@ -17,7 +17,8 @@
 namespace cartan::cli {
 
 using SphereParticle = general::KineticPotential<manifolds::Sphere>;
-using SphereProblem = general::GeneralProblem<manifolds::Sphere, SphereParticle>;
+/// The particle behind the erased Lagrangian: the solve compiled in the library (general/compiled.hpp).
+using SphereProblem = general::ErasedProblem<manifolds::Sphere>;
 
 /// The problem of a validated --manifold sphere spec (its frame: e1 towards qT, e2 = q0 x e1).
 SphereProblem sphere_problem(const ProblemSpec& spec);

@@ -1,6 +1,6 @@
 #include "verify_command.hpp"
 
-#include "cartan/general/verify.hpp"
+#include "cartan/general/compiled.hpp"
 #include "connection_command.hpp"
 #include "manifold_command.hpp"
 #include "model_table.hpp"

@@ -7,12 +7,11 @@
 // Each has the same geometry methods (christoffel, torsion, curvature, step, difference,
 // transport_along_step, tangent_basis, ...), bound once by def_manifold_methods.
 //
-// `_solve_general(manifold, ...)`: general::solve with the vocabulary of cartan.solve. To keep the
-// compile time down there is one Lagrangian type per manifold, AnyLagrangian<M>: a type-erased
-// KineticPotential<M> (l = 1/2 v^T A v - V(q), V built in (gravity) or a Python callable) or a
-// Lagrangian object written in Python. So general::solve is instantiated once per manifold type
-// (10 in all): those on the four group manifolds in bind_general_groups.cpp, the others here
-// (general_binding.hpp has the solve code both units share). Solves without Python callbacks
+// `_solve_general(manifold, ...)`: general::solve with the vocabulary of cartan.solve. Every
+// Lagrangian (a KineticPotential<M>, l = 1/2 v^T A v - V(q) with V built in (gravity) or a Python
+// callable, or a Lagrangian object written in Python) goes behind general::ErasedLagrangian<M>,
+// whose solve and verify the library compiles once per manifold (cartan/general/compiled.hpp);
+// general_binding.hpp converts the arguments and the result. Solves without Python callbacks
 // release the GIL; with them, the GIL is held and the first callback error is re-raised after the
 // solver returns (python_models.hpp).
 

@@ -1,8 +1,8 @@
 #pragma once
 // The general solve of the Python module (bind_general.cpp) on each manifold type: solve_on and
-// verify_on with their Lagrangians and arguments. Split from bind_general.cpp so that the solves on
-// the four group manifolds are instantiated in their own unit (bind_general_groups.cpp), which the
-// build compiles beside the rest: each unit about half of what was the slowest of the build.
+// verify_on with their Lagrangians and arguments. Every Lagrangian goes behind the erased type, whose
+// solve and verify the library compiles once per manifold (cartan/general/compiled.hpp): this
+// unit only converts the arguments and the result.
 
 #include <array>
 #include <memory>
@@ -15,16 +15,7 @@
 
 #include "bind_group.hpp"
 #include "bindings.hpp"
-#include "cartan/general/solve.hpp"
-#include "cartan/general/verify.hpp"
-#include "cartan/groups/heisenberg.hpp"
-#include "cartan/groups/se2.hpp"
-#include "cartan/groups/se3.hpp"
-#include "cartan/groups/so3.hpp"
-#include "cartan/manifolds/euclidean.hpp"
-#include "cartan/manifolds/chart.hpp"
-#include "cartan/manifolds/group_manifold.hpp"
-#include "cartan/manifolds/quadric.hpp"
+#include "cartan/general/compiled.hpp"
 #include "python_models.hpp"
 #include "report_dict.hpp"
 
@@ -152,62 +143,6 @@ Square<N> matrix_or_diagonal(const py::handle& obj, const std::string& where, co
 
 // ---- Lagrangians ------------------------------------------------------------------------------
 
-/// A Lagrangian of the general problem behind a shared pointer: one type per manifold for every
-/// Lagrangian, so that general::solve is instantiated once per manifold.
-template <manifolds::ManifoldWithConnection M>
-class AnyLagrangian {
- public:
-  using Point = PointOf<M>;
-  using Vector = VectorOf<M>;
-  using Components = ComponentsOf<M>;
-
-  template <general::ManifoldLagrangian<M> L>
-  static AnyLagrangian of(L lagrangian) {
-    return AnyLagrangian(std::make_shared<const Model<L>>(std::move(lagrangian)));
-  }
-
-  double value(double t, const Point& q, const Components& v) const { return impl_->value(t, q, v); }
-  Components momentum(double t, const Point& q, const Components& v) const { return impl_->momentum(t, q, v); }
-  Components velocity(double t, const Point& q, const Components& mu) const { return impl_->velocity(t, q, mu); }
-  Vector point_gradient(double t, const Point& q, const Components& v) const { return impl_->point_gradient(t, q, v); }
-  /// The wrapped Lagrangian's second derivatives (its own where it has them: general/lagrangian_hessian.hpp).
-  general::LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q, const Components& v) const {
-    return impl_->hessian(manifold, t, q, v);
-  }
-
- private:
-  struct Interface {
-    virtual ~Interface() = default;
-    virtual double value(double t, const Point& q, const Components& v) const = 0;
-    virtual Components momentum(double t, const Point& q, const Components& v) const = 0;
-    virtual Components velocity(double t, const Point& q, const Components& mu) const = 0;
-    virtual Vector point_gradient(double t, const Point& q, const Components& v) const = 0;
-    virtual general::LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q,
-                                                  const Components& v) const = 0;
-  };
-  template <class L>
-  struct Model final : Interface {
-    explicit Model(L l) : lagrangian(std::move(l)) {}
-    double value(double t, const Point& q, const Components& v) const override { return lagrangian.value(t, q, v); }
-    Components momentum(double t, const Point& q, const Components& v) const override {
-      return lagrangian.momentum(t, q, v);
-    }
-    Components velocity(double t, const Point& q, const Components& mu) const override {
-      return lagrangian.velocity(t, q, mu);
-    }
-    Vector point_gradient(double t, const Point& q, const Components& v) const override {
-      return lagrangian.point_gradient(t, q, v);
-    }
-    general::LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q,
-                                          const Components& v) const override {
-      return general::lagrangian_hessian(manifold, lagrangian, t, q, v);
-    }
-    L lagrangian;
-  };
-  explicit AnyLagrangian(std::shared_ptr<const Interface> impl) : impl_(std::move(impl)) {}
-  std::shared_ptr<const Interface> impl_;
-};
-
 /// A Lagrangian written in Python: value(t, q, v), momentum(t, q, v), velocity(t, q, mu) and
 /// point_gradient(t, q, v) (an ambient (d,) covector: zeta . x = d/de l(t, step(q, e x), v)).
 template <manifolds::ManifoldWithConnection M>
@@ -249,7 +184,7 @@ inline constexpr const char* kWhere = "cartan.solve_general";
 
 /// The Lagrangian of the request on M; `python` is set when it calls back into Python.
 template <class M>
-AnyLagrangian<M> request_lagrangian(const M&, const GeneralRequest& r, std::shared_ptr<CallbackState> state,
+general::ErasedLagrangian<M> request_lagrangian(const M&, const GeneralRequest& r, std::shared_ptr<CallbackState> state,
                                     std::optional<PythonManifoldLagrangian<M>>& python_object, bool& python) {
   constexpr int m = M::kDim;
   using Point = PointOf<M>;
@@ -264,7 +199,7 @@ AnyLagrangian<M> request_lagrangian(const M&, const GeneralRequest& r, std::shar
     }
     python = true;
     python_object.emplace(r.lagrangian);
-    return AnyLagrangian<M>::of(*python_object);
+    return general::ErasedLagrangian<M>(*python_object);
   }
   const Square<m> inertia = r.inertia.is_none() ? Square<m>::Identity().eval()
                                                 : matrix_or_diagonal<m>(r.inertia, kWhere, "inertia");
@@ -278,7 +213,7 @@ AnyLagrangian<M> request_lagrangian(const M&, const GeneralRequest& r, std::shar
       if (!r.potential.is_none()) {
         throw_invalid(kWhere, "potential", repr_of(r.potential), "and gravity exclude each other");
       }
-      return AnyLagrangian<M>::of(
+      return general::ErasedLagrangian<M>(
           general::KineticPotential<M>::with_linear_potential(inertia, Vector(0, 0, G)));
     }
   }
@@ -288,7 +223,7 @@ AnyLagrangian<M> request_lagrangian(const M&, const GeneralRequest& r, std::shar
                   has_v ? "must be given with potential (both or neither)"
                         : "must be given with potential_gradient (both or neither)");
   }
-  if (r.potential.is_none()) return AnyLagrangian<M>::of(general::KineticPotential<M>(inertia));
+  if (r.potential.is_none()) return general::ErasedLagrangian<M>(general::KineticPotential<M>(inertia));
   for (const auto& [name, fn] : {std::pair<const char*, const py::object*>{"potential", &r.potential},
                                  {"potential_gradient", &r.potential_gradient}}) {
     if (!PyCallable_Check(fn->ptr())) throw_invalid(kWhere, name, repr_of(*fn), "is not callable");
@@ -312,7 +247,7 @@ AnyLagrangian<M> request_lagrangian(const M&, const GeneralRequest& r, std::shar
       return value;
     });
   };
-  return AnyLagrangian<M>::of(general::KineticPotential<M>(inertia, std::move(potential), std::move(gradient)));
+  return general::ErasedLagrangian<M>(general::KineticPotential<M>(inertia, std::move(potential), std::move(gradient)));
 }
 
 /// Runs a solve or check f() on a manifold whose geometry may call Python (`chart` non-null, with
@@ -370,7 +305,7 @@ general::GeneralTrajectory<M> trajectory_of(const M& manifold, const py::object&
 
 template <class M>
 py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* chart) {
-  using Problem = general::GeneralProblem<M, AnyLagrangian<M>>;
+  using Problem = general::ErasedProblem<M>;
   const std::string where = kWhere;
   auto state = std::make_shared<CallbackState>();
   std::optional<PythonManifoldLagrangian<M>> python_object;
@@ -451,7 +386,7 @@ py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object&
   auto state = std::make_shared<CallbackState>();
   std::optional<PythonManifoldLagrangian<M>> python_object;
   bool python = false;
-  const general::GeneralProblem<M, AnyLagrangian<M>> problem{
+  const general::ErasedProblem<M> problem{
       manifold, request_lagrangian(manifold, r, state, python_object, python), number_arg<double>(field("T"), where, "T"),
       static_cast<int>(std::max<std::size_t>(x.t.size(), 2) - 1), point_arg(manifold, field("q0"), where, "q0"),
       point_arg(manifold, field("qT"), where, "qT"), x.frame.front()};
@@ -464,19 +399,5 @@ py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object&
   }
   return report_dict(run());
 }
-
-// Instantiated in bind_general_groups.cpp.
-extern template py::dict solve_on(const OnGroup<groups::SO3>&, const GeneralRequest&, ChartCallbacks*);
-extern template py::dict verify_on(const OnGroup<groups::SO3>&, const GeneralRequest&, const py::object&,
-                                   ChartCallbacks*);
-extern template py::dict solve_on(const OnGroup<groups::Heisenberg>&, const GeneralRequest&, ChartCallbacks*);
-extern template py::dict verify_on(const OnGroup<groups::Heisenberg>&, const GeneralRequest&, const py::object&,
-                                   ChartCallbacks*);
-extern template py::dict solve_on(const OnGroup<groups::SE2>&, const GeneralRequest&, ChartCallbacks*);
-extern template py::dict verify_on(const OnGroup<groups::SE2>&, const GeneralRequest&, const py::object&,
-                                   ChartCallbacks*);
-extern template py::dict solve_on(const OnGroup<groups::SE3>&, const GeneralRequest&, ChartCallbacks*);
-extern template py::dict verify_on(const OnGroup<groups::SE3>&, const GeneralRequest&, const py::object&,
-                                   ChartCallbacks*);
 
 }  // namespace cartan::python::general_binding

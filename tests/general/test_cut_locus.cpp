@@ -3,13 +3,14 @@
 // there is none) and next to it. A result that says converged, and a result the verifier passes,
 // ends at qT by the storage distance (the embedding's, the matrices', the coordinates'), not only
 // by the logarithm, which may be 0 or meaningless there; a trajectory that misses qT never passes.
+// The solves and checks are the library's compiled ones (general/compiled.hpp: the erased
+// Lagrangian on every shipped manifold).
 
 #include <array>
 #include <numbers>
 #include <random>
 
-#include "cartan/general/shooting.hpp"
-#include "cartan/general/verify.hpp"
+#include "cartan/general/compiled.hpp"
 #include "../manifolds/manifold_instances.hpp"
 #include "general_cases.hpp"
 
@@ -47,10 +48,10 @@ class CutLocusTest : public ::testing::Test {
     return manifold.step(p, manifolds::VectorOf<M>(1e-7 * x / x.norm()));
   }
 
-  static GeneralProblem<M, KineticPotential<M>> problem(const M& manifold, const Point& q0, const Point& qT) {
+  static ErasedProblem<M> problem(const M& manifold, const Point& q0, const Point& qT) {
     const Eigen::Matrix<double, m, m> a = Eigen::Matrix<double, m, m>::Identity() +
                                           Eigen::Matrix<double, m, 1>::LinSpaced(0.0, 1.5).asDiagonal().toDenseMatrix();
-    return {manifold, KineticPotential<M>(a), 1.0, 40, q0, qT, std::nullopt};
+    return {manifold, ErasedLagrangian<M>(KineticPotential<M>(a)), 1.0, 40, q0, qT, std::nullopt};
   }
 
   /// The storage distance a passing or converged result may have from qT: the solver's and the
@@ -129,10 +130,14 @@ TYPED_TEST(CutLocusTest, ConvergedAndPassingResultsEndAtTheTarget) {
     const auto p = TestFixture::problem(manifold, q0, qT);
     for (const auto order : {SchemeOrder::First, SchemeOrder::Second}) {
       for (const bool from_rest : {false, true}) {
-        const GeneralShootingOptions options{.order = order, .tolerance = tol, .max_iterations = 60};
-        const auto s = from_rest ? solve_general_shooting(p, options, manifolds::ComponentsOf<Space>::Zero(),
-                                                          manifolds::ComponentMatrixOf<Space>::Zero())
-                                 : solve_general_shooting(p, options);
+        transported::SolveOptions options;
+        options.method = transported::Method::Shooting;
+        options.order = order;
+        options.tol = tol;
+        options.max_iterations = 60;
+        GeneralGuess<Space> guess;
+        if (from_rest) guess.v0 = manifolds::ComponentsOf<Space>::Zero();
+        const auto s = solve(p, options, guess);
         const bool passed = !s.trajectory.q.empty() && s.trajectory.t.size() >= 3 &&
                             verify_general(p, s.trajectory, s.order, tol, s.status).passed();
         if (s.converged() && target == 2 && !from_rest) ++converged;

@@ -7,8 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "cartan/general/solve.hpp"
-#include "cartan/general/verify.hpp"
+#include "cartan/general/compiled.hpp"  // solve, verify, and the erased Lagrangian's compiled instantiations
 #include "cartan/manifolds/euclidean.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"
@@ -174,6 +173,16 @@ TEST(GeneralSolve, DefaultShootingAndContinuationInTAgree) {
   const auto direct = solve(problem);
   ASSERT_TRUE(direct.converged()) << direct.message;
   EXPECT_EQ(direct.branch, "shooting (from the geodesic guess)");
+  // The library's compiled solve for the erased Lagrangian (general/compiled.hpp) is this one
+  // through an indirect call: the same operations in the same order, so the same iterates (to
+  // rounding, 1e-14 relative, in case two compilations order a sum differently).
+  const auto erased = solve(ErasedProblem<S2>{S2{}, ErasedLagrangian<S2>(lagrangian), problem.T, problem.N, problem.q0,
+                                              problem.qT, std::nullopt});
+  ASSERT_TRUE(erased.converged()) << erased.message;
+  EXPECT_EQ(erased.iterations, direct.iterations);
+  EXPECT_EQ(erased.sweeps, direct.sweeps);
+  EXPECT_NEAR_MATRIX(erased.v0, direct.v0, 1e-14 * direct.v0.norm());
+  EXPECT_NEAR_MATRIX(erased.trajectory.q.back(), direct.trajectory.q.back(), 1e-14);
   transported::SolveOptions options;
   options.method = transported::Method::Shooting;
   options.continuation = transported::Continuation::None;

@@ -1,0 +1,5 @@
+// The general solve and verify on a chart of dimension 3 for the erased Lagrangian, compiled once
+// (compiled.hpp).
+#include "cartan/general/compiled.hpp"
+
+CARTAN_GENERAL_COMPILED(template, ::cartan::manifolds::Chart<3>)

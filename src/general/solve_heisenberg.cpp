@@ -1,0 +1,5 @@
+// The general solve and verify on H3 with a left-invariant connection for the erased Lagrangian, compiled once
+// (compiled.hpp).
+#include "cartan/general/compiled.hpp"
+
+CARTAN_GENERAL_COMPILED(template, ::cartan::manifolds::GroupManifold<::cartan::groups::Heisenberg>)

@@ -1,0 +1,5 @@
+// The general solve and verify on the hyperbolic plane for the erased Lagrangian, compiled once
+// (compiled.hpp).
+#include "cartan/general/compiled.hpp"
+
+CARTAN_GENERAL_COMPILED(template, ::cartan::manifolds::HyperbolicPlane)

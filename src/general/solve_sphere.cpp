@@ -1,0 +1,5 @@
+// The general solve and verify on the sphere for the erased Lagrangian, compiled once
+// (compiled.hpp).
+#include "cartan/general/compiled.hpp"
+
+CARTAN_GENERAL_COMPILED(template, ::cartan::manifolds::Sphere)
