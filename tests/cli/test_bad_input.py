@@ -4,26 +4,17 @@ line on stderr naming the problem. Complements BAD_INPUTS in test_cli.py (flags)
 files, non-finite numbers in both forms, memory limits and misplaced options.
 
 Run by ctest (the `cli` test) with CARTAN_BIN pointing at the built `cartan` executable."""
-import json
-import os
-import subprocess
+from functools import partial
 
 import pytest
 
-CARTAN = os.environ.get("CARTAN_BIN", "build/cartan")
+from cli_support import assert_rejected, run
+
 DIRECTIONS = ["--a0", "1,0,0", "--aT", "0,1,0"]
 SMALL = ["--T", "1", "--N", "10"]
 
 
-def run_solve(*args):
-    return subprocess.run([CARTAN, "solve", *args], capture_output=True, text=True, timeout=60)
-
-
-def assert_rejected(result, needle):
-    assert result.returncode == 2, (result.returncode, result.stderr)  # < 0 would be a signal
-    assert needle in result.stderr, result.stderr
-    assert result.stdout == ""
-    assert result.stderr.count("\n") == 1, result.stderr  # one clear line
+run_solve = partial(run, "solve", timeout=60)  # bad input is refused at once
 
 
 # (flags, fragment of the message). The so3 directions are added unless the case gives its own.
@@ -119,5 +110,5 @@ def test_bad_problem_files(tmp_path, content, needle):
 @pytest.mark.parametrize("word", ["bogus", "solv", ""])
 def test_an_unknown_command_is_named_with_the_commands(word):
     """Issue 29: `cartan bogus` said only "A subcommand is required"."""
-    result = subprocess.run([CARTAN, word, "--T", "1"], capture_output=True, text=True, timeout=60)
+    result = run(word, "--T", "1", timeout=60)
     assert_rejected(result, f'cartan: "{word}" is not a command (commands: solve, sweep, merge, verify')

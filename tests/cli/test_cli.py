@@ -3,27 +3,11 @@ cross-check of the C++ two-level scheme against the Python/SciPy implementation 
 
 Run by ctest with CARTAN_BIN pointing at the built `cartan` executable."""
 import json
-import os
-import subprocess
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-CARTAN = os.environ.get("CARTAN_BIN", "build/cartan")
-ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "bench" / "python"))
-
-
-def run(*args, timeout=120):
-    return subprocess.run([CARTAN, *args], capture_output=True, text=True, timeout=timeout)
-
-
-def solve(*args):
-    result = run("solve", *args)
-    assert result.returncode == 0, result.stderr + result.stdout[:500]
-    return json.loads(result.stdout)
+from cli_support import ROOT, run, solve_json
 
 
 def project_version():
@@ -45,7 +29,7 @@ OSCILLATOR = ["--model", "oscillator", "--T", "12", "--N", "800", "--a0", "-0.7,
 
 
 def test_output_contract_fields_and_shapes():
-    d = solve(*FREE_BODY, "--lambda", "0.5", "--tol", "1e-8")
+    d = solve_json(*FREE_BODY, "--lambda", "0.5", "--tol", "1e-8")
     for key in ["status", "message", "group", "model", "lambda", "T", "N", "method", "order", "t", "g", "v",
                 "mu", "xi", "terminal_error", "iterations", "solve_time_s"]:
         assert key in d, key
@@ -64,9 +48,9 @@ def test_output_contract_fields_and_shapes():
 
 @pytest.mark.parametrize("lam", ["0", "0.5", "1"])
 def test_six_paper_cases_converge(lam):
-    fb = solve(*FREE_BODY, "--lambda", lam, "--tol", "1e-8")
+    fb = solve_json(*FREE_BODY, "--lambda", lam, "--tol", "1e-8")
     assert fb["status"] == "converged" and fb["terminal_error"] < 1e-8
-    osc = solve(*OSCILLATOR, "--lambda", lam, "--tol", "1e-6")
+    osc = solve_json(*OSCILLATOR, "--lambda", lam, "--tol", "1e-6")
     assert osc["status"] == "converged" and osc["terminal_error"] < 1e-6
     # the default strategy: direct shooting gives up (no progress), continuation in T succeeds
     assert osc["branch"].startswith("continuation in T (continued in T from T = 3")
@@ -74,14 +58,14 @@ def test_six_paper_cases_converge(lam):
 
 
 def test_negative_numbers_both_forms_and_problem_file(tmp_path):
-    a = solve("--model", "oscillator", "--T", "2", "--N", "50", "--a0", "-1,-1,-1", "--aT", "1,0.2,0.1")
-    b = solve("--model", "oscillator", "--T", "2", "--N", "50", "--a0=-1,-1,-1", "--aT=1,0.2,0.1")
+    a = solve_json("--model", "oscillator", "--T", "2", "--N", "50", "--a0", "-1,-1,-1", "--aT", "1,0.2,0.1")
+    b = solve_json("--model", "oscillator", "--T", "2", "--N", "50", "--a0=-1,-1,-1", "--aT=1,0.2,0.1")
     assert a["v"] == b["v"]
     problem = tmp_path / "p.json"
     problem.write_text(json.dumps({"model": "oscillator", "T": 2, "N": 50, "a0": [-1, -1, -1], "aT": [1, 0.2, 0.1]}))
-    c = solve("--problem", str(problem))
+    c = solve_json("--problem", str(problem))
     assert c["v"] == a["v"]
-    d = solve("--problem", str(problem), "--lambda", "0")  # flags override the file
+    d = solve_json("--problem", str(problem), "--lambda", "0")  # flags override the file
     assert d["lambda"] == 0 and d["v"] != a["v"]
 
 
@@ -109,8 +93,8 @@ def test_multiple_shooting_reaches_the_shooting_solution():
     trajectories agree to the solver tolerance amplified by the sweep's sensitivity (the free
     body at T = 50: |dv/dr| ~ 10, so 1e-9 for |r| <= 1e-10 each)."""
     args = [*FREE_BODY, "--lambda", "0.5", "--tol", "1e-10"]
-    single = solve(*args, "--method", "shooting")
-    multi = solve(*args, "--method", "multiple-shooting", "--segments", "5")
+    single = solve_json(*args, "--method", "shooting")
+    multi = solve_json(*args, "--method", "multiple-shooting", "--segments", "5")
     assert multi["method"] == "multiple-shooting" and multi["status"] == "converged"
     assert multi["terminal_error"] < 1e-10
     assert np.max(np.abs(np.array(multi["v"]) - np.array(single["v"]))) < 1e-9
@@ -127,8 +111,8 @@ def test_continuation_choices_on_the_long_horizon_oscillator():
         assert failed.returncode == 1
         assert json.loads(failed.stdout)["status"] != "converged"
     args = [*OSCILLATOR, "--lambda", "0.5", "--tol", "1e-8", "--method", "shooting"]
-    by_T = solve(*args, "--continuation", "T")
-    by_lambda = solve(*args, "--continuation", "lambda")
+    by_T = solve_json(*args, "--continuation", "T")
+    by_lambda = solve_json(*args, "--continuation", "lambda")
     assert by_lambda["branch"].startswith("continued in lambda from lambda = 0 [continued in T from T = 3")
     assert np.max(np.abs(np.array(by_T["v"][0]) - np.array(by_lambda["v"][0]))) < 1e-6
 
@@ -194,7 +178,7 @@ def test_cpp_two_level_matches_python_implementation():
     import paper_scheme as ps
     a0, aT = (-0.7, -1.0, -0.7), (0.8, 0.8, 1.0)
     for lam in [0.0, 0.5, 1.0]:
-        d = solve("--model", "oscillator", "--lambda", str(lam), "--T", "3", "--N", "200", "--a0=-0.7,-1,-0.7",
+        d = solve_json("--model", "oscillator", "--lambda", str(lam), "--T", "3", "--N", "200", "--a0=-0.7,-1,-0.7",
                   "--aT", "0.8,0.8,1", "--method", "two-level", "--tol", "1e-11")
         py = ps.solve(ps.Problem(model="oscillator", lam=lam, T=3.0, N=200, a0=a0, aT=aT), tol=1e-11)
         assert py["status"] == "converged", py["message"]

@@ -4,29 +4,21 @@ times, and on SO(3) agreement with the shooting solvers' order-2 scheme.
 
 Run by ctest (the `cli` test) with CARTAN_BIN pointing at the built `cartan` executable."""
 import json
-import os
-import subprocess
-import sys
-from pathlib import Path
+from functools import partial
 
+import h3_scipy
 import numpy as np
 import pytest
 
-CARTAN = os.environ.get("CARTAN_BIN", "build/cartan")
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench" / "python"))
-import h3_scipy  # noqa: E402
+from cli_support import run, solve_json
 
 H3 = ["--group", "heisenberg", "--model", "oscillator", "--method", "collocation", "--T", "1"]
-
-
-def run(*args, timeout=120):
-    return subprocess.run([CARTAN, "solve", *args], capture_output=True, text=True, timeout=timeout)
+run_solve = partial(run, "solve")
 
 
 def collocation(lam, gT, tol="1e-8", samples="11", extra=()):
-    result = run(*H3, "--lambda", str(lam), "--gT", ",".join(map(str, gT)), "--tol", tol, "--samples", samples, *extra)
-    assert result.returncode == 0, result.stderr + result.stdout[:500]
-    return json.loads(result.stdout)
+    return solve_json(*H3, "--lambda", str(lam), "--gT", ",".join(map(str, gT)), "--tol", tol, "--samples", samples,
+                      *extra)
 
 
 def scipy_solution(lam, gT, tol):
@@ -73,7 +65,7 @@ def test_agrees_with_scipy_solve_bvp(gT):
 
 
 def test_solver_failure_exit_code_1_with_json():
-    result = run(*H3, "--lambda", "0.5", "--gT", "5,5,5", "--N", "10", "--max-iterations", "1", "--samples", "3")
+    result = run_solve(*H3, "--lambda", "0.5", "--gT", "5,5,5", "--N", "10", "--max-iterations", "1", "--samples", "3")
     assert result.returncode == 1, result.stderr
     d = json.loads(result.stdout)
     assert d["status"] == "not-converged"
@@ -88,7 +80,7 @@ def test_solver_failure_exit_code_1_with_json():
     (["--group", "heisenberg", "--model", "oscillator", "--gT", "1,0.5"], "gT = 1,0.5"),
 ])
 def test_bad_input_exit_code_2(args, needle):
-    result = run("--method", "collocation", "--T", "1", *args)
+    result = run_solve("--method", "collocation", "--T", "1", *args)
     assert result.returncode == 2, (result.returncode, result.stderr)
     assert needle in result.stderr, result.stderr
 
@@ -99,9 +91,7 @@ AT = np.array([0.9, 1, 1]) / np.sqrt(2.81)
 
 
 def so3_solve(*args):
-    result = run(*SO3_FREE_BODY, *args)
-    assert result.returncode == 0, result.stderr + result.stdout[:500]
-    return json.loads(result.stdout)
+    return solve_json(*SO3_FREE_BODY, *args)
 
 
 def so3_collocation(lam, samples="0"):
@@ -148,13 +138,14 @@ def test_so3_long_horizon_falls_back_to_the_shooting_branch():
     the failure is reported (exit 1)."""
     oscillator = ["--group", "so3", "--model", "oscillator", "--T", "12", "--N", "800", "--a0=-0.7,-1,-0.7",
                   "--aT", "0.8,0.8,1", "--lambda", "0"]
-    result = run(*oscillator, "--method", "collocation", "--continuation", "T", "--tol", "1e-6", "--samples", "801")
+    result = run_solve(*oscillator, "--method", "collocation", "--continuation", "T", "--tol", "1e-6",
+                       "--samples", "801")
     assert result.returncode == 0, result.stderr
     c = json.loads(result.stdout)
     assert c["branch"].startswith("from the order-2 shooting solution (continued in T from T = 3"), c["branch"]
-    result = run(*oscillator, "--method", "shooting", "--continuation", "T", "--order", "2", "--tol", "1e-10")
+    result = run_solve(*oscillator, "--method", "shooting", "--continuation", "T", "--order", "2", "--tol", "1e-10")
     assert result.returncode == 0, result.stderr
     shooting = json.loads(result.stdout)
     assert np.max(np.abs(np.array(c["v"]) - np.array(shooting["v"]))) < 1e-3
-    direct = run(*oscillator, "--method", "collocation", "--tol", "1e-6", timeout=300)
+    direct = run_solve(*oscillator, "--method", "collocation", "--tol", "1e-6", timeout=300)
     assert direct.returncode == 1 and json.loads(direct.stdout)["status"] != "converged"

@@ -16,7 +16,7 @@ import time
 
 import pytest
 
-CARTAN = os.environ.get("CARTAN_BIN", "build/cartan")
+from cli_support import CARTAN, run
 OSCILLATOR_ENDS = ["--a0", "-0.7,-1,-0.7", "--aT", "0.8,0.8,1"]
 # The paper's two-level scheme on the oscillator with 2e6 steps: many seconds of solving.
 LONG_SOLVE = ["--model", "oscillator", "--lambda", "0.5", "--T", "12", "--N", "2000000", "--method", "two-level",
@@ -108,18 +108,16 @@ def test_sweep_interrupted_at_any_moment_leaves_whole_output_or_none(tmp_path, d
 
 def test_sweep_output_is_checked_without_creating_it(tmp_path):
     out = tmp_path / "missing-directory" / "table.json"
-    result = subprocess.run([CARTAN, "sweep", "--model", "oscillator", "--T", "3", "--N", "300", "--a0=-1,-1,-1",
-                             "--aT", "1,0.2,0.1", "--lambdas", "0", "--output", str(out)],
-                            capture_output=True, text=True, timeout=60)
+    result = run("sweep", "--model", "oscillator", "--T", "3", "--N", "300", "--a0=-1,-1,-1", "--aT", "1,0.2,0.1",
+                 "--lambdas", "0", "--output", str(out), timeout=60)
     assert result.returncode == 2 and "--output" in result.stderr and "cannot be written" in result.stderr
     assert not out.parent.exists()
 
 
 def big_shards(tmp_path, rows_per_shard=60000):
     """Two CSV shards of a sweep of 2 rows_per_shard points (one real row, copied under new indices)."""
-    result = subprocess.run([CARTAN, "sweep", "--model", "oscillator", "--T", "3", "--N", "300", "--a0=-1,-1,-1",
-                             "--aT", "1,0.2,0.1", "--lambdas", "0.5", "--format", "csv", "--quiet"],
-                            capture_output=True, text=True, timeout=120)
+    result = run("sweep", "--model", "oscillator", "--T", "3", "--N", "300", "--a0=-1,-1,-1", "--aT", "1,0.2,0.1",
+                 "--lambdas", "0.5", "--format", "csv", "--quiet")
     header, row = list(csv.reader(io.StringIO(result.stdout)))
     index = header.index("index")
     paths = []
@@ -151,8 +149,7 @@ def test_merge_interrupted_at_any_moment_leaves_whole_output_or_none(tmp_path):
 def test_time_limit_stops_the_solve_with_its_status(tmp_path):
     out = tmp_path / "r.json"
     started = time.monotonic()
-    result = subprocess.run([CARTAN, "solve", *LONG_SOLVE, "--time-limit", "0.5", "--output", str(out)],
-                            capture_output=True, text=True, timeout=120)
+    result = run("solve", *LONG_SOLVE, "--time-limit", "0.5", "--output", str(out))
     assert result.returncode == 1, result.stderr  # a failure, whose result is written
     d = json.loads(out.read_text())
     assert d["status"] == "time-limit" and "time limit of 0.5 s reached" in d["message"]

@@ -7,26 +7,26 @@ bad-input contract (exit 2, one line naming the value).
 
 Run by ctest (the `cli` test) with CARTAN_BIN pointing at the built `cartan` executable."""
 import json
-import os
-import subprocess
+from functools import partial
 
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-CARTAN = os.environ.get("CARTAN_BIN", "build/cartan")
+import cli_support
+
 Q0, QT = "1,0,-0.3", "0,1,-0.5"
+TIMEOUT = 180  # a hang guard; this file's commands get more time than cli_support.run's default
+run = partial(cli_support.run, timeout=TIMEOUT)
 
 
-def run(*args, timeout=180):
-    return subprocess.run([CARTAN, *args], capture_output=True, text=True, timeout=timeout)
+def solve_file(tmp_path, *args, name="r.json"):
+    """`cartan solve ARGS --output tmp_path/name`, which must succeed: the result read back."""
+    return cli_support.solve_to(tmp_path / name, *args, timeout=TIMEOUT)
 
 
 def sphere(tmp_path, *args, name="s.json"):
-    path = tmp_path / name
-    result = run("solve", "--manifold", "sphere", "--q0", Q0, "--qT", QT, *args, "--output", str(path))
-    assert result.returncode == 0, result.stderr
-    return json.loads(path.read_text())
+    return solve_file(tmp_path, "--manifold", "sphere", "--q0", Q0, "--qT", QT, *args, name=name)
 
 
 def unit(x):
@@ -119,11 +119,11 @@ def test_collocation_and_the_order_two_scheme_agree_under_a_general_connection(t
     converges to the continuous solution that collocation computes: the gap in v0 falls 4x when N
     doubles."""
     args = (*FREE_BODY[:-1], "3", "--connection", "levi-civita", "--metric", "1,2,3")
-    c = solve_json(tmp_path, *args, "--N", "40", "--method", "collocation", "--tol", "1e-10", name="c.json")
+    c = solve_file(tmp_path, *args, "--N", "40", "--method", "collocation", "--tol", "1e-10", name="c.json")
     assert c["status"] == "converged" and c["method"] == "collocation", c["message"]
     gap = []
     for n in (100, 200):
-        s = solve_json(tmp_path, *args, "--N", str(n), "--order", "2", "--tol", "1e-12", name="s.json")
+        s = solve_file(tmp_path, *args, "--N", str(n), "--order", "2", "--tol", "1e-12", name="s.json")
         gap.append(np.linalg.norm(np.array(s["v"][0]) - np.array(c["v"][0])))
     assert 3.4 < gap[0] / gap[1] < 4.6, gap
 
@@ -194,13 +194,6 @@ def test_sweep_says_it_does_not_take_manifold_problems():
 FREE_BODY = ["--model", "free-rigid-body", "--a0", "-1,-1,-1", "--aT", "0.9,1,1", "--T", "5"]
 
 
-def solve_json(tmp_path, *args, name="r.json"):
-    path = tmp_path / name
-    result = run("solve", *args, "--output", str(path))
-    assert result.returncode == 0, result.stderr
-    return json.loads(path.read_text())
-
-
 def so3_ad(i):
     """ad(E_i) on so(3): [E_i, E_j] = eps_ijk E_k."""
     m = np.zeros((3, 3))
@@ -216,9 +209,9 @@ def test_cartan_schouten_given_as_coefficients_reproduces_the_lambda_solver(tmp_
     lam = 0.3
     alpha = [[list(lam * so3_ad(i)[:, j]) for j in range(3)] for i in range(3)]
     (tmp_path / "alpha.json").write_text(json.dumps(alpha))
-    general = solve_json(tmp_path, *FREE_BODY, "--N", "200", "--connection", "coefficients",
+    general = solve_file(tmp_path, *FREE_BODY, "--N", "200", "--connection", "coefficients",
                          "--alpha", str(tmp_path / "alpha.json"), "--tol", "1e-12", name="g.json")
-    reference = solve_json(tmp_path, *FREE_BODY, "--N", "200", "--lambda", str(lam), "--method", "shooting",
+    reference = solve_file(tmp_path, *FREE_BODY, "--N", "200", "--lambda", str(lam), "--method", "shooting",
                            "--tol", "1e-12", name="l.json")
     assert general["connection"] == "coefficients" and np.array(general["alpha"]).shape == (3, 3, 3)
     assert np.array(general["Xi"]).shape == (201, 9) and "xi" not in general
@@ -231,8 +224,8 @@ def test_levi_civita_of_the_inertia_is_the_classical_free_rigid_body(tmp_path):
     classical one, the curve is the lambda = 0 curve; at order 2 the gap falls 4x with h."""
     gap = []
     for n in (100, 200):
-        lc = solve_json(tmp_path, *FREE_BODY, "--N", str(n), "--connection", "levi-civita", "--order", "2", name="a.json")
-        classical = solve_json(tmp_path, *FREE_BODY, "--N", str(n), "--lambda", "0", "--method", "shooting",
+        lc = solve_file(tmp_path, *FREE_BODY, "--N", str(n), "--connection", "levi-civita", "--order", "2", name="a.json")
+        classical = solve_file(tmp_path, *FREE_BODY, "--N", str(n), "--lambda", "0", "--method", "shooting",
                                "--order", "2", name="b.json")
         assert lc["metric"] == [2.0, 3.0, 4.0]  # the inertia, by default
         gap.append(np.abs(np.array(lc["g"]) - np.array(classical["g"])).max())
@@ -240,8 +233,8 @@ def test_levi_civita_of_the_inertia_is_the_classical_free_rigid_body(tmp_path):
 
 
 def test_another_metric_gives_new_dynamics(tmp_path):
-    a = solve_json(tmp_path, *FREE_BODY, "--N", "200", "--connection", "levi-civita", name="a.json")
-    b = solve_json(tmp_path, *FREE_BODY, "--N", "200", "--connection", "levi-civita", "--metric", "1,2,3", name="b.json")
+    a = solve_file(tmp_path, *FREE_BODY, "--N", "200", "--connection", "levi-civita", name="a.json")
+    b = solve_file(tmp_path, *FREE_BODY, "--N", "200", "--connection", "levi-civita", "--metric", "1,2,3", name="b.json")
     assert np.abs(np.array(a["g"]) - np.array(b["g"])).max() > 1e-2
 
 
@@ -270,7 +263,7 @@ def test_bad_alpha_file_shape(tmp_path):
 
 
 def test_verify_passes_connection_results_and_fails_them_for_another_connection(tmp_path):
-    solve_json(tmp_path, *FREE_BODY, "--N", "300", "--connection", "levi-civita", "--metric", "1,2,3", "--order", "2")
+    solve_file(tmp_path, *FREE_BODY, "--N", "300", "--connection", "levi-civita", "--metric", "1,2,3", "--order", "2")
     r = run("verify", str(tmp_path / "r.json"))
     assert r.returncode == 0 and "VERDICT: PASS" in r.stdout and "connection levi-civita" in r.stdout, r.stdout + r.stderr
     data = json.loads((tmp_path / "r.json").read_text())

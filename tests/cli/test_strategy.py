@@ -4,24 +4,20 @@ test_interrupt.py).
 
 Run by ctest with CARTAN_BIN pointing at the built `cartan` executable."""
 import json
-import os
-import subprocess
+from functools import partial
 
 import pytest
 
-CARTAN = os.environ.get("CARTAN_BIN", "build/cartan")
+from cli_support import run, solve_json
+
 FREE_BODY_ENDS = ["--a0=-1,-1,-1", "--aT", "0.9,1,1"]
 OSCILLATOR_ENDS = ["--a0", "-0.7,-1,-0.7", "--aT", "0.8,0.8,1"]
-
-
-def run(*args, timeout=300):
-    return subprocess.run([CARTAN, "solve", *args], capture_output=True, text=True, timeout=timeout)
+TIMEOUT = 300  # a hang guard; the strategy's continuations get more time than cli_support.run's default
+run_solve = partial(run, "solve", timeout=TIMEOUT)
 
 
 def solved(*args):
-    result = run(*args)
-    assert result.returncode == 0, result.stderr + result.stdout[:800]
-    d = json.loads(result.stdout)
+    d = solve_json(*args, timeout=TIMEOUT)
     assert d["status"] == "converged"
     return d
 
@@ -53,8 +49,8 @@ def test_heisenberg_beyond_the_fold_fails_honestly():
     # 2, and from the straight-line guess neither collocation nor any shooting method finds a
     # solution at T = 3 (a known gap). The result must say so: exit 1, every attempt named, and
     # the data of the requested horizon.
-    result = run("--group", "heisenberg", "--model", "oscillator", "--lambda", "0.7", "--T", "3", "--N", "300",
-                 "--gT", "1,0.5,0.8", "--tol", "1e-8")
+    result = run_solve("--group", "heisenberg", "--model", "oscillator", "--lambda", "0.7", "--T", "3",
+                       "--N", "300", "--gT", "1,0.5,0.8", "--tol", "1e-8")
     assert result.returncode == 1
     d = json.loads(result.stdout)
     assert d["status"] == "strategy-failed" and d["branch"].startswith("failed: shooting: ")
@@ -65,8 +61,8 @@ def test_heisenberg_beyond_the_fold_fails_honestly():
 
 def test_a_failed_continuation_carries_the_requested_problem_only():
     # Two iterations per solve cannot reach T = 12: the result must still be of T = 12, N = 800.
-    result = run("--model", "oscillator", "--lambda", "0.5", "--T", "12", "--N", "800", "--tol", "1e-6",
-                 "--method", "shooting", "--continuation", "T", "--max-iterations", "2", *OSCILLATOR_ENDS)
+    result = run_solve("--model", "oscillator", "--lambda", "0.5", "--T", "12", "--N", "800", "--tol", "1e-6",
+                       "--method", "shooting", "--continuation", "T", "--max-iterations", "2", *OSCILLATOR_ENDS)
     assert result.returncode == 1
     d = json.loads(result.stdout)
     assert d["status"] == "continuation-failed" and d["branch"].startswith("failed")
@@ -105,14 +101,14 @@ def test_a_xi0_guess_alone_starts_from_the_geodesic_velocity(method):
     (["--method", "shooting", "--continuation", "lambda", "--v0", "1,2,3"], ["continuation lambda", "no guess"]),
 ])
 def test_bad_guesses_and_options_exit_2(args, words):
-    result = run("--model", "free-rigid-body", "--T", "1", "--N", "10", *FREE_BODY_ENDS, *args)
+    result = run_solve("--model", "free-rigid-body", "--T", "1", "--N", "10", *FREE_BODY_ENDS, *args)
     assert result.returncode == 2 and result.stdout == ""
     for w in words:
         assert w in result.stderr, result.stderr
 
 
 def test_progress_reports_on_stderr():
-    result = run("--model", "oscillator", "--lambda", "0.5", "--T", "3", "--N", "100", "--progress",
-                 *OSCILLATOR_ENDS)
+    result = run_solve("--model", "oscillator", "--lambda", "0.5", "--T", "3", "--N", "100", "--progress",
+                       *OSCILLATOR_ENDS)
     assert result.returncode == 0
     assert "cartan solve: shooting, iteration 0, residual" in result.stderr

@@ -9,10 +9,11 @@ import json
 import os
 import pty
 import subprocess
+from functools import partial
 
 import pytest
 
-CARTAN = os.environ.get("CARTAN_BIN", "build/cartan")
+import cli_support
 
 # Short cases (T <= 3, N <= 300) that converge directly from the geodesic guess.
 SO3_BASE = ["--model", "oscillator", "--T", "3", "--N", "300", "--a0=-1,-1,-1", "--tol", "1e-10"]
@@ -22,8 +23,8 @@ GRID = ["--lambdas", "0,0.5", "--lambda-range", "0.75:1:2", "--aT-list", "1,0.2,
 SAME_AS_SOLVE = ["status", "message", "method", "branch", "terminal_error", "iterations"]
 
 
-def run(*args, timeout=300):
-    return subprocess.run([CARTAN, *args], capture_output=True, text=True, timeout=timeout)
+TIMEOUT = 300  # a hang guard; a sweep runs many solves, so more than cli_support.run's default
+run = partial(cli_support.run, timeout=TIMEOUT)
 
 
 def sweep(*args, expect=0):
@@ -156,8 +157,8 @@ def test_progress_goes_to_stderr_only(tmp_path):
 def test_progress_on_a_terminal_is_redrawn_in_place():
     controller, terminal = pty.openpty()
     try:
-        result = subprocess.run([CARTAN, "sweep", *SO3_BASE, *GRID], stdout=subprocess.PIPE, stderr=terminal,
-                                timeout=300)
+        result = subprocess.run([cli_support.CARTAN, "sweep", *SO3_BASE, *GRID], stdout=subprocess.PIPE,
+                                stderr=terminal, timeout=TIMEOUT)
     finally:
         os.close(terminal)
     shown = b""

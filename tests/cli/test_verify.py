@@ -3,26 +3,19 @@ check that should catch them (exit 1); bad files exit 2 with one line naming the
 
 Run by ctest (the `cli` test) with CARTAN_BIN pointing at the built `cartan` executable."""
 import json
-import os
-import subprocess
 
 import numpy as np
 import pytest
 
-CARTAN = os.environ.get("CARTAN_BIN", "build/cartan")
+from cli_support import run, solve_to
 
 SO3_CASE = ["--T", "3", "--N", "200", "--a0=-1,-1,-1", "--aT", "0.9,1,1", "--tol", "1e-10"]
 H3_CASE = ["--group", "heisenberg", "--model", "oscillator", "--T", "1", "--gT", "1,0.5,0.8"]
 
 
-def run(*args, timeout=120):
-    return subprocess.run([CARTAN, *args], capture_output=True, text=True, timeout=timeout)
-
-
 def solve(tmp_path, *args, name="result.json"):
     path = tmp_path / name
-    result = run("solve", *args, "--output", str(path))
-    assert result.returncode == 0, result.stderr
+    solve_to(path, *args)
     return path
 
 
