@@ -1,6 +1,6 @@
 """Collocation from Python: cartan.solve_bvp against scipy.integrate.solve_bvp and closed forms,
-its failure statuses and errors, and cartan.solve(method="collocation") against the CLI and the
-shooting solvers.
+its failure statuses and errors, what its extras (linear_solver, max_newton_iterations, fd_step)
+do, and cartan.solve(method="collocation") against the CLI and the shooting solvers.
 
 Tolerances (theory; measured values are printed with pytest -s):
 * solve_bvp vs a closed form: both cartan and SciPy control the relative RMS residual of the
@@ -265,6 +265,156 @@ def test_complex_problem_needs_no_complex_derivative_with_differences():
                          np.ones((1, 5), dtype=complex), tol=1e-6)
     grid = np.linspace(0, 1, 11)
     assert r.success and np.abs(r.sol(grid)[0] - (np.exp(grid) + 1j * np.exp(-grid))).max() < 1e-5
+
+
+# --- The keyword-only extras: linear_solver, max_newton_iterations, fd_step ---------------------
+
+# y''' = y + sin x, periodic on [0, 2 pi]: y = (cos x - sin x) / 2 is the only periodic solution
+# (the roots of r^3 = 1 give no 2 pi-periodic homogeneous one). Boundary conditions coupling both
+# ends, and n = 3, a state size the solver does not fix at compile time.
+def periodic_fun(x, y):
+    return np.vstack((y[1], y[2], y[0] + np.sin(x)))
+
+
+def periodic_bc(ya, yb):
+    return ya - yb
+
+
+def periodic_exact(x):
+    c, s = np.cos(x), np.sin(x)
+    return np.vstack((c - s, -s - c, s - c)) / 2
+
+
+def solve_with_each_linear_solver(*args, **kwargs):
+    return [cartan.solve_bvp(*args, linear_solver=name, **kwargs) for name in ("block-lu", "sparse-lu")]
+
+
+def assert_same_solve(a, b):
+    # Both factorisations solve the same Newton systems, so the iterations, the meshes they refine
+    # and the solution agree up to rounding (measured: 4.4e-16 at most).
+    assert a.success and b.success, (a.message, b.message)
+    assert (a.niter, a.newton_iterations, a.jacobian_evaluations) == (b.niter, b.newton_iterations,
+                                                                       b.jacobian_evaluations)
+    assert np.array_equal(a.x, b.x)
+    np.testing.assert_allclose(a.y, b.y, rtol=0, atol=1e-12)
+    if a.p is not None:
+        np.testing.assert_allclose(a.p, b.p, rtol=1e-12)
+
+
+def test_linear_solvers_give_the_same_solution_with_coupled_ends():
+    x, tol = np.linspace(0, 2 * np.pi, 7), 1e-6
+    block, sparse = solve_with_each_linear_solver(periodic_fun, periodic_bc, x, np.zeros((3, 7)), tol=tol)
+    assert_same_solve(block, sparse)
+    s = scipy.integrate.solve_bvp(periodic_fun, periodic_bc, x, np.zeros((3, 7)), tol=tol)
+    grid = np.linspace(0, 2 * np.pi, 201)
+    # Bounds of the module docstring: 10 tol from the closed form, so 20 tol from SciPy.
+    assert np.abs(block.sol(grid) - periodic_exact(grid)).max() < 10 * tol
+    assert np.abs(block.sol(grid) - s.sol(grid)).max() < 20 * tol
+
+
+def test_linear_solvers_give_the_same_solution_nonlinear_and_with_a_parameter():
+    tol = 1e-6
+    block, sparse = solve_with_each_linear_solver(ascher_fun, ascher_bc, *ascher_guess(5), tol=tol)
+    assert_same_solve(block, sparse)
+    grid = np.linspace(0, 1, 101)
+    assert np.abs(block.sol(grid) - ascher_exact(grid)).max() < 10 * tol
+    x = np.linspace(0, np.pi, 5)
+    y = np.vstack((np.cos(4 * x), -4 * np.sin(4 * x)))
+    block, sparse = solve_with_each_linear_solver(mathieu_fun, mathieu_bc, x, y, p=[15], tol=tol)
+    assert_same_solve(block, sparse)  # the parameter's row and column are eliminated too
+    assert block.p[0] == pytest.approx(scipy.special.mathieu_a(4, Q), rel=1e-7)  # the docstring's bound
+
+
+# On 101 nodes, frozen by max_nodes, the Ascher problem is solved without refinement (residuals
+# below 1e-6), after several Newton iterations from the straight-line guess (the problem is
+# nonlinear): a setting where the Newton iterations are all on one mesh.
+FROZEN = dict(tol=1e-6, max_nodes=101)
+
+
+def test_max_newton_iterations_caps_newton_on_one_mesh():
+    full = cartan.solve_bvp(ascher_fun, ascher_bc, *ascher_guess(101), **FROZEN)
+    needed = full.newton_iterations
+    assert full.success and full.niter == 1 and needed >= 3, (full.message, needed)
+    enough = cartan.solve_bvp(ascher_fun, ascher_bc, *ascher_guess(101), max_newton_iterations=needed, **FROZEN)
+    assert enough.success and enough.newton_iterations == needed and np.array_equal(enough.y, full.y)
+    for cap in range(1, needed):  # Newton had not converged before `needed`, so each cap is reached
+        r = cartan.solve_bvp(ascher_fun, ascher_bc, *ascher_guess(101), max_newton_iterations=cap, **FROZEN)
+        assert r.newton_iterations == cap, (cap, r.details)
+    # One step from the straight line leaves residuals far above tol (measured 0.13): the mesh would
+    # need refining, which max_nodes refuses (status 1); the C++ solver's report names the cap.
+    one = cartan.solve_bvp(ascher_fun, ascher_bc, *ascher_guess(101), max_newton_iterations=1, **FROZEN)
+    assert not one.success and one.status == 1 and one.max_rms_residual > 100 * FROZEN["tol"]
+    assert "Newton did not converge in 1 iterations on 101 nodes" in one.details, one.details
+
+
+def test_max_newton_iterations_counts_per_mesh():
+    # With refinement, each mesh gets its own max_newton_iterations steps (SciPy's outer loop warm-
+    # starts the next mesh), so the total may exceed the cap but not cap times the meshes.
+    r = cartan.solve_bvp(ascher_fun, ascher_bc, *ascher_guess(5), tol=1e-6, max_newton_iterations=2)
+    assert r.success and r.niter > 1 and r.newton_iterations <= 2 * r.niter, (r.niter, r.newton_iterations)
+    assert r.newton_iterations > 2
+
+
+def difference_steps(calls):
+    """(j, how far row j of y moved, max(1, |y[j]|)) for each recorded call of fun that repeats an
+    earlier call's x with only row j of y changed: a forward difference, which moves one component
+    at every point at once (solve_bvp's docstring)."""
+    found = []
+    for i, (x, y) in enumerate(calls):
+        for x0, y0 in calls[:i]:
+            if x0.shape != x.shape or not np.array_equal(x0, x):
+                continue
+            rows = np.flatnonzero(np.any(y != y0, axis=1))
+            if rows.size == 1:
+                j = rows[0]
+                found.append((j, y[j] - y0[j], np.maximum(1, np.abs(y0[j]))))
+    return found
+
+
+@pytest.mark.parametrize("fd_step", [2.0**-26, 2.0**-10])
+def test_fd_step_is_the_relative_step_of_the_differences(fd_step):
+    calls = []
+
+    def recorded(x, y):
+        calls.append((np.array(x), np.array(y)))
+        return ascher_fun(x, y)
+
+    r = cartan.solve_bvp(recorded, ascher_bc, *ascher_guess(5), tol=1e-6, fd_step=fd_step)
+    assert r.success, r.message
+    steps = difference_steps(calls)
+    assert {j for j, _, _ in steps} == {0, 1} and len(steps) >= 2 * r.jacobian_evaluations
+    for j, move, scale in steps:
+        # y + step rounds by half an ulp of |y| + step <= eps/2 (1 + fd_step) max(1, |y|): relative to
+        # the step, at most eps / fd_step.
+        np.testing.assert_allclose(move, fd_step * scale, rtol=np.finfo(float).eps / fd_step, atol=0)
+
+
+def test_fd_step_changes_newtons_path_not_the_solution():
+    # d/dy0 of 3/2 y0^2 by a forward difference of step max(1, |y0|) (fd_step = 1) is 3 y0 + 3/2 |y0|
+    # for |y0| >= 1: half again too large, so Newton contracts more slowly than with the default
+    # (difference error ~1e-8) and needs more iterations to the same solution of the collocation
+    # equations. Both stop at collocation residuals <= tol / 20 h (1 + |f|) per interval, which the
+    # problem's O(1) Green's function turns into nodal differences below tol (measured 1.5e-8).
+    default = cartan.solve_bvp(ascher_fun, ascher_bc, *ascher_guess(101), **FROZEN)
+    coarse = cartan.solve_bvp(ascher_fun, ascher_bc, *ascher_guess(101), fd_step=1.0, **FROZEN)
+    assert default.success and coarse.success and np.array_equal(default.x, coarse.x)
+    print(f"\nNewton iterations: {default.newton_iterations} with the default fd_step, "
+          f"{coarse.newton_iterations} with 1")
+    assert coarse.newton_iterations > default.newton_iterations
+    assert np.abs(coarse.y - default.y).max() < FROZEN["tol"]
+
+
+def test_fd_step_is_unused_with_both_jacobians():
+    def fun_jac(x, y):
+        return np.array([[np.zeros_like(x), np.ones_like(x)], [3 * y[0], np.zeros_like(x)]])
+
+    def bc_jac(ya, yb):
+        return np.array([[1.0, 0], [0, 0]]), np.array([[0.0, 0], [1, 0]])
+
+    a, b = (cartan.solve_bvp(ascher_fun, ascher_bc, *ascher_guess(5), tol=1e-6, fun_jac=fun_jac, bc_jac=bc_jac,
+                             fd_step=step) for step in (2.0**-26, 1.0))
+    assert a.success and np.array_equal(a.x, b.x) and np.array_equal(a.y, b.y)
+    assert (a.newton_iterations, a.rhs_evaluations) == (b.newton_iterations, b.rhs_evaluations)
 
 
 # --- The transported problem by collocation (cartan.solve(method="collocation")) ---------------
