@@ -60,6 +60,15 @@ void require_finite(double x, std::string_view where, std::string_view name) {
   if (!std::isfinite(x)) throw_invalid(where, name, format_value(x), "is not finite");
 }
 
+void require_reachable_tolerance(double tol, std::string_view where, std::string_view name) {
+  if (!(tol > 0)) throw_invalid(where, name, format_value(tol), "must be positive");
+  constexpr double kFloor = 100 * std::numeric_limits<double>::epsilon();
+  if (tol < kFloor) {
+    throw_invalid(where, name, format_value(tol),
+                  "is below 100 machine epsilons (" + format_value(kFloor) + "): no method can reach it");
+  }
+}
+
 void require_shape(const Eigen::Ref<const Eigen::MatrixXd>& x, Eigen::Index rows, Eigen::Index cols,
                    std::string_view where, std::string_view name) {
   if (x.rows() != rows || x.cols() != cols) {

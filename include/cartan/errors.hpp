@@ -43,6 +43,11 @@ void require_finite(const Eigen::Ref<const Eigen::MatrixXd>& x, std::string_view
                     std::string_view name);
 void require_finite(double x, std::string_view where, std::string_view name);
 
+/// Throws std::invalid_argument unless tol (finite, the caller checks) is positive and at least 100
+/// machine epsilons: every method's residual carries the rounding of many operations, so below
+/// that no method can meet tol (SolveOptions, CollocationOptions).
+void require_reachable_tolerance(double tol, std::string_view where, std::string_view name = "tol");
+
 /// Throws std::invalid_argument unless x has the given shape.
 void require_shape(const Eigen::Ref<const Eigen::MatrixXd>& x, Eigen::Index rows, Eigen::Index cols,
                    std::string_view where, std::string_view name);

@@ -275,9 +275,10 @@ class SolveResult:
                 f"branch={self.branch!r}, solve_time={self.solve_time:.4f})")
 
 
-def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="none", order=1, tol=1e-10,
-          max_iterations=200, segments: Optional[int] = None, lambda_start: Optional[float] = None, v0=None,
-          xi0=None, guess=None, group=None, samples: Optional[int] = None, max_nodes: Optional[int] = None,
+def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="none", order=1,
+          tol=_cartan.defaults["tol"], max_iterations=_cartan.defaults["max_iterations"],
+          segments: Optional[int] = None, lambda_start: Optional[float] = None, v0=None, xi0=None, guess=None,
+          group=None, samples: Optional[int] = None, max_nodes: Optional[int] = None,
           time_limit: Optional[float] = None, progress=None):
     """Solves the transported-velocity boundary-value problem of the Cartan-Schouten connection
     of parameter `lam` (eq:reduced-system; paper §6-7) on [0, T] with N steps, g(0) = g0
@@ -434,9 +435,9 @@ class GeneralSolveResult:
 
 
 def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, potential_gradient=None, gravity=None,
-                  lagrangian=None, frame0=None, method="auto", continuation="none", order=1, tol=1e-10,
-                  max_iterations=200, v0=None, Xi0=None, guess=None, samples=0, max_nodes=None, time_limit=None,
-                  progress=None):
+                  lagrangian=None, frame0=None, method="auto", continuation="none", order=1,
+                  tol=_cartan.defaults["tol"], max_iterations=_cartan.defaults["max_iterations"], v0=None,
+                  Xi0=None, guess=None, samples=0, max_nodes=None, time_limit=None, progress=None):
     """Solves the transported-velocity boundary-value problem on a manifold with any linear connection
     (docs/general-connections.md; the library's general::solve): on [0, T] with N steps, q(0) = q0,
     q(T) = qT, for l(q, v) with v the components of the transported velocity in the frame `frame0`

@@ -30,8 +30,8 @@ struct SolveRequest {
   std::string method = "auto";
   std::string continuation = "none";
   int order = 1;
-  double tol = 1e-10;
-  int max_iterations = 200;
+  double tol = transported::kDefaultTol;
+  int max_iterations = transported::kDefaultMaxIterations;
   std::optional<int> segments;
   std::optional<double> lambda_start;
   std::optional<int> samples;

@@ -173,8 +173,8 @@ struct GeneralRequest {
              potential_gradient = py::none(), gravity = py::none(), lagrangian = py::none(), frame0 = py::none();
   std::string method = "auto", continuation = "none";
   int order = 1;
-  double tol = 1e-10;
-  int max_iterations = 200;
+  double tol = transported::kDefaultTol;
+  int max_iterations = transported::kDefaultMaxIterations;
   py::object v0 = py::none(), Xi0 = py::none(), progress = py::none();
   int samples = 0;
   py::object max_nodes = py::none(), guess = py::none(), time_limit = py::none();

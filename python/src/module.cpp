@@ -141,6 +141,9 @@ PYBIND11_MODULE(_cartan, m) {
       .def_readwrite("max_nodes", &cartan::python::SolveRequest::max_nodes)
       .def_readwrite("time_limit", &cartan::python::SolveRequest::time_limit);
   m.attr("statuses") = cartan::enum_words<cartan::Status>();
+  // The library's defaults (transported/method.hpp), which cartan.solve and solve_general take.
+  m.attr("defaults") = pybind11::dict(pybind11::arg("tol") = cartan::transported::kDefaultTol,
+                                      pybind11::arg("max_iterations") = cartan::transported::kDefaultMaxIterations);
   using cartan::python::CancelToken;
   pybind11::class_<CancelToken>(m, "_CancelToken",
                                 "Solves started inside `with token:` on this thread stop (status interrupted) at "

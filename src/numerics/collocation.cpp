@@ -695,10 +695,7 @@ BvpResult dispatch(const BvpSystem& system, const VectorXd& t, const MatrixXd& y
 void CollocationOptions::validate() const {
   constexpr std::string_view where = "CollocationOptions";
   require_finite(tol, where, "tol");
-  if (!(tol > 0)) throw_invalid(where, "tol", format_value(tol), "must be positive");
-  if (tol < 100 * kEpsilon) {
-    throw_invalid(where, "tol", format_value(tol), "is below 100 machine epsilons (" + format_value(100 * kEpsilon) + ")");
-  }
+  require_reachable_tolerance(tol, where);
   require_finite(bc_tol, where, "bc_tol");
   if (bc_tol < 0) throw_invalid(where, "bc_tol", format_value(bc_tol), "must be non-negative (0: use tol)");
   if (max_nodes < 2) throw_invalid(where, "max_nodes", std::to_string(max_nodes), "must be at least 2");

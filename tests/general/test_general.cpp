@@ -3,6 +3,8 @@
 // the constant-components fast path, Newton's equations in flat R^m (closed form), the classical
 // spherical pendulum (an independent Runge–Kutta integration), the classical free rigid body
 // under the Levi-Civita connection of its inertia, and energy conservation for any connection.
+// The problems go behind the erased Lagrangian (erased(problem)) to the library's compiled solvers
+// (general/compiled.hpp), which one test compares with the typed instantiation.
 
 #include <cmath>
 #include <numbers>
@@ -43,7 +45,7 @@ TEST(GeneralSolver, CartanSchoutenAsAGeneralConnectionReproducesTheLambdaSolver)
     const auto reference_problem = paper_free_body(lambda, 200, 5);
     const auto reference = reference_solve(reference_problem, order);
     ASSERT_TRUE(reference.converged()) << reference.message;
-    const auto general = solve_general_shooting(free_body_on(SO3Manifold::cartan_schouten(lambda), reference_problem),
+    const auto general = solve_general_shooting(erased(free_body_on(SO3Manifold::cartan_schouten(lambda), reference_problem)),
                                                 {.order = order, .tolerance = 1e-12});
     ASSERT_TRUE(general.converged()) << general.message;
     EXPECT_NE(general.message.find("constant frame components"), std::string::npos);
@@ -59,7 +61,7 @@ TEST(GeneralSolver, CartanSchoutenAsAGeneralConnectionReproducesTheLambdaSolver)
 // solution where the components are constant.
 TEST(GeneralSolver, RecomputedFrameComponentsAgreeWithTheFastPath) {
   const auto p = paper_free_body(0.3, 100, 5);
-  const auto fast = solve_general_shooting(free_body_on(SO3Manifold::cartan_schouten(0.3), p), {.tolerance = 1e-12});
+  const auto fast = solve_general_shooting(erased(free_body_on(SO3Manifold::cartan_schouten(0.3), p)), {.tolerance = 1e-12});
   const auto slow = solve_general_shooting(
       free_body_on(WithoutFastPath<SO3Manifold>{SO3Manifold::cartan_schouten(0.3)}, p), {.tolerance = 1e-12});
   ASSERT_TRUE(fast.converged() && slow.converged()) << fast.message << " / " << slow.message;
@@ -82,7 +84,7 @@ TEST(GeneralSolver, FlatEuclideanSpaceGivesNewtonsEquationsAtTheSchemesOrder) {
     double errors[2];
     for (int refinement = 0; refinement < 2; ++refinement) {
       const int N = 200 << refinement;
-      const auto s = solve_general_shooting(GeneralProblem<R2, KineticPotential<R2>>{R2(), lagrangian, T, N, q0, qT, std::nullopt},
+      const auto s = solve_general_shooting(erased(GeneralProblem<R2, KineticPotential<R2>>{R2(), lagrangian, T, N, q0, qT, std::nullopt}),
                                             {.order = order, .tolerance = 1e-13});
       ASSERT_TRUE(s.converged()) << s.message;
       errors[refinement] = (s.v0 - exact_v0).norm();
@@ -110,9 +112,9 @@ TEST(GeneralSolver, EnergyIsConservedForAnyConnectionAtTheSchemesOrder) {
   for (const auto order : {SchemeOrder::First, SchemeOrder::Second}) {
     double drift[2];
     for (int refinement = 0; refinement < 2; ++refinement) {
-      const GeneralProblem<R3, KineticPotential<R3>> problem{manifold, lagrangian, 1.5, 200 << refinement,
-                                                             Eigen::Vector3d(0.2, 0.1, -0.3), Eigen::Vector3d(1.0, -0.5, 0.4),
-                                                             std::nullopt};
+      const auto problem = erased(GeneralProblem<R3, KineticPotential<R3>>{
+          manifold, lagrangian, 1.5, 200 << refinement, Eigen::Vector3d(0.2, 0.1, -0.3), Eigen::Vector3d(1.0, -0.5, 0.4),
+          std::nullopt});
       const auto s = solve_general_shooting(problem, {.order = order, .tolerance = 1e-13});
       ASSERT_TRUE(s.converged()) << s.message;
       drift[refinement] = energy_drift(s, lagrangian);
@@ -135,7 +137,7 @@ TEST(GeneralSolver, SphericalPendulumIsTheClassicalOne) {
   const auto lagrangian = KineticPotential<S2>::with_linear_potential(Eigen::Matrix2d::Identity(), Eigen::Vector3d(0, 0, G));
   double miss[2];
   for (int refinement = 0; refinement < 2; ++refinement) {
-    const GeneralProblem<S2, KineticPotential<S2>> problem{S2{}, lagrangian, T, 200 << refinement, q0, qT, std::nullopt};
+    const auto problem = erased(GeneralProblem<S2, KineticPotential<S2>>{S2{}, lagrangian, T, 200 << refinement, q0, qT, std::nullopt});
     const auto s = solve_general_shooting(problem, {.order = SchemeOrder::Second, .tolerance = 1e-12});
     ASSERT_TRUE(s.converged()) << s.message;
     miss[refinement] = (spherical_pendulum_endpoint(q0, problem.initial_frame() * s.v0, G, T) - qT).norm();
@@ -153,7 +155,7 @@ TEST(GeneralSolver, LeviCivitaOfTheInertiaGivesTheClassicalFreeRigidBody) {
   for (int refinement = 0; refinement < 2; ++refinement) {
     const auto p = paper_free_body(0.0, 100 << refinement, 5);
     const auto classical = reference_solve(p, SchemeOrder::Second);
-    const auto lc = solve_general_shooting(free_body_on(SO3Manifold::levi_civita(paper_inertia()), p),
+    const auto lc = solve_general_shooting(erased(free_body_on(SO3Manifold::levi_civita(paper_inertia()), p)),
                                            {.order = SchemeOrder::Second, .tolerance = 1e-12});
     ASSERT_TRUE(classical.converged() && lc.converged()) << classical.message << " / " << lc.message;
     gap[refinement] = (lc.v0 - classical.v0).norm();
@@ -168,21 +170,22 @@ TEST(GeneralSolver, LeviCivitaOfTheInertiaGivesTheClassicalFreeRigidBody) {
 TEST(GeneralSolve, DefaultShootingAndContinuationInTAgree) {
   using S2 = manifolds::Sphere;
   const auto lagrangian = KineticPotential<S2>::with_linear_potential(Eigen::Vector2d(1, 3).asDiagonal(), Eigen::Vector3d(0, 0, 2));
-  const GeneralProblem<S2, KineticPotential<S2>> problem{S2{}, lagrangian, 1.5, 300, manifolds::sphere_point({1, 0, 0.2}),
-                                                         manifolds::sphere_point({0, 1, -0.3}), std::nullopt};
+  const GeneralProblem<S2, KineticPotential<S2>> typed{S2{}, lagrangian, 1.5, 300, manifolds::sphere_point({1, 0, 0.2}),
+                                                       manifolds::sphere_point({0, 1, -0.3}), std::nullopt};
+  const auto problem = erased(typed);  // the library's compiled solvers (general/compiled.hpp)
   const auto direct = solve(problem);
   ASSERT_TRUE(direct.converged()) << direct.message;
   EXPECT_EQ(direct.branch, "shooting (from the geodesic guess)");
-  // The library's compiled solve for the erased Lagrangian (general/compiled.hpp) is this one
-  // through an indirect call: the same operations in the same order, so the same iterates (to
-  // rounding, 1e-14 relative, in case two compilations order a sum differently).
-  const auto erased = solve(ErasedProblem<S2>{S2{}, ErasedLagrangian<S2>(lagrangian), problem.T, problem.N, problem.q0,
-                                              problem.qT, std::nullopt});
-  ASSERT_TRUE(erased.converged()) << erased.message;
-  EXPECT_EQ(erased.iterations, direct.iterations);
-  EXPECT_EQ(erased.sweeps, direct.sweeps);
-  EXPECT_NEAR_MATRIX(erased.v0, direct.v0, 1e-14 * direct.v0.norm());
-  EXPECT_NEAR_MATRIX(erased.trajectory.q.back(), direct.trajectory.q.back(), 1e-14);
+  // The typed shooting (instantiated here for KineticPotential) is the compiled one without the
+  // indirect calls: the same operations in the same order, so the same iterates (to rounding,
+  // 1e-14 relative, in case two compilations order a sum differently).
+  const auto with_type = solve_general_shooting(typed, {.tolerance = 1e-10});
+  const auto through_erasure = solve_general_shooting(problem, {.tolerance = 1e-10});
+  ASSERT_TRUE(with_type.converged()) << with_type.message;
+  EXPECT_EQ(with_type.iterations, through_erasure.iterations);
+  EXPECT_EQ(with_type.sweeps, through_erasure.sweeps);
+  EXPECT_NEAR_MATRIX(with_type.v0, through_erasure.v0, 1e-14 * with_type.v0.norm());
+  EXPECT_NEAR_MATRIX(with_type.trajectory.q.back(), through_erasure.trajectory.q.back(), 1e-14);
   transported::SolveOptions options;
   options.method = transported::Method::Shooting;
   options.continuation = transported::Continuation::None;
@@ -233,15 +236,15 @@ double action_stationarity(const GeneralProblem<M, L>& p, const GeneralSolution<
 TEST(GeneralSolver, NewDynamicsMakeAnIndependentDiscreteActionStationaryAtTheSchemesOrder) {
   using S2 = manifolds::Sphere;
   const auto sphere_problem = [](int N) {
-    return GeneralProblem<S2, KineticPotential<S2>>{
+    return erased(GeneralProblem<S2, KineticPotential<S2>>{
         S2{}, KineticPotential<S2>::with_linear_potential(Eigen::Vector2d(1, 3).asDiagonal(), Eigen::Vector3d(0, 0, 2)),
-        1.2, N, manifolds::sphere_point({1, 0, 0.2}), manifolds::sphere_point({0, 1, -0.3}), std::nullopt};
+        1.2, N, manifolds::sphere_point({1, 0, 0.2}), manifolds::sphere_point({0, 1, -0.3}), std::nullopt});
   };
   const auto so3_problem = [](int N) {
     const auto p = paper_free_body(0.0, N, 3);
-    return GeneralProblem<SO3Manifold, KineticPotential<SO3Manifold>>{
+    return erased(GeneralProblem<SO3Manifold, KineticPotential<SO3Manifold>>{
         SO3Manifold::levi_civita(Eigen::Vector3d(1, 2, 3).asDiagonal()), KineticPotential<SO3Manifold>(paper_inertia()),
-        p.T, p.N, p.g0, p.gT, std::nullopt};
+        p.T, p.N, p.g0, p.gT, std::nullopt});
   };
   for (const auto order : {SchemeOrder::First, SchemeOrder::Second}) {
     const double expected = order == SchemeOrder::First ? 2.0 : 4.0;
@@ -267,22 +270,22 @@ TEST(GeneralVerify, PassesSolutionsAndFailsThemAgainstAnotherProblem) {
   using S2 = manifolds::Sphere;
   using R3 = manifolds::Euclidean<3>;
   const auto sphere = [](double gravity, int N) {
-    return GeneralProblem<S2, KineticPotential<S2>>{
+    return erased(GeneralProblem<S2, KineticPotential<S2>>{
         S2{}, KineticPotential<S2>::with_linear_potential(Eigen::Vector2d(1, 3).asDiagonal(), Eigen::Vector3d(0, 0, gravity)),
-        1.2, N, manifolds::sphere_point({1, 0, 0.2}), manifolds::sphere_point({0, 1, -0.3}), std::nullopt};
+        1.2, N, manifolds::sphere_point({1, 0, 0.2}), manifolds::sphere_point({0, 1, -0.3}), std::nullopt});
   };
   const auto so3 = [](const SO3Manifold& manifold) {
     const auto p = paper_free_body(0.0, 200, 3);
-    return GeneralProblem<SO3Manifold, KineticPotential<SO3Manifold>>{manifold, KineticPotential<SO3Manifold>(paper_inertia()),
-                                                                      p.T, p.N, p.g0, p.gT, std::nullopt};
+    return erased(GeneralProblem<SO3Manifold, KineticPotential<SO3Manifold>>{
+        manifold, KineticPotential<SO3Manifold>(paper_inertia()), p.T, p.N, p.g0, p.gT, std::nullopt});
   };
   std::mt19937 rng(kSeed);
   R3::Coefficients c;
   for (auto& g : c) g = random_vector<Eigen::Matrix<double, 9, 1>>(rng, 0.4).reshaped(3, 3);
-  const GeneralProblem<R3, KineticPotential<R3>> flat{
+  const auto flat = erased(GeneralProblem<R3, KineticPotential<R3>>{
       R3(c), KineticPotential<R3>(Eigen::Vector3d(1, 2, 3).asDiagonal(), [](const Eigen::Vector3d& q) { return 0.5 * q.squaredNorm(); },
                                   [](const Eigen::Vector3d& q) { return Eigen::Vector3d(q); }),
-      1.5, 300, Eigen::Vector3d(0.2, 0.1, -0.3), Eigen::Vector3d(1.0, -0.5, 0.4), std::nullopt};
+      1.5, 300, Eigen::Vector3d(0.2, 0.1, -0.3), Eigen::Vector3d(1.0, -0.5, 0.4), std::nullopt});
   const auto report_of = [](const auto& problem, const auto& solution, double tol) {
     const verify::Report r = verify_general(problem, solution.trajectory, solution.order, tol, solution.status);
     std::printf("%s", r.text().c_str());
@@ -312,11 +315,11 @@ TEST(GeneralSolver, BadInputIsRejectedWithTheValue) {
   using S2 = manifolds::Sphere;
   const auto l = KineticPotential<S2>(Eigen::Matrix2d::Identity());
   const Eigen::Vector3d q = Eigen::Vector3d::UnitZ();
-  expect_invalid([&] { solve_general_shooting(GeneralProblem<S2, KineticPotential<S2>>{S2{}, l, -1, 10, q, q, std::nullopt}); }, "T = -1");
-  expect_invalid([&] { solve_general_shooting(GeneralProblem<S2, KineticPotential<S2>>{S2{}, l, 1, 10, Eigen::Vector3d(1, 1, 1), q, std::nullopt}); }, "q0");
+  expect_invalid([&] { solve_general_shooting(erased(GeneralProblem<S2, KineticPotential<S2>>{S2{}, l, -1, 10, q, q, std::nullopt})); }, "T = -1");
+  expect_invalid([&] { solve_general_shooting(erased(GeneralProblem<S2, KineticPotential<S2>>{S2{}, l, 1, 10, Eigen::Vector3d(1, 1, 1), q, std::nullopt})); }, "q0");
   Eigen::Matrix<double, 3, 2> off;
   off << 1, 0, 0, 1, 0.5, 0;  // not tangent at the north pole
-  expect_invalid([&] { solve_general_shooting(GeneralProblem<S2, KineticPotential<S2>>{S2{}, l, 1, 10, q, q, off}); }, "frame0");
+  expect_invalid([&] { solve_general_shooting(erased(GeneralProblem<S2, KineticPotential<S2>>{S2{}, l, 1, 10, q, q, off})); }, "frame0");
   expect_invalid([] { KineticPotential<S2>(Eigen::Vector2d(1, -1).asDiagonal()); }, {"inertia", "positive definite"});
 }
 

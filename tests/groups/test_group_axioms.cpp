@@ -18,6 +18,7 @@ TYPED_TEST(GroupTest, AdjointByConjugation) { expect_adjoint<TypeParam>(); }
 TYPED_TEST(GroupTest, AdIsDerivativeOfAdAndCoadIsDual) { expect_ad_and_coad<TypeParam>(); }
 TYPED_TEST(GroupTest, TranslationDifferentials) { expect_translations<TypeParam>(); }
 TYPED_TEST(GroupTest, LeftJacobianIsTheSeries) { expect_left_jacobian_is_the_series<TypeParam>(); }
+TYPED_TEST(GroupTest, ExpJacobiansAreTheDerivatives) { expect_exp_jacobians_are_the_derivatives<TypeParam>(); }
 
 TYPED_TEST(GroupTest, InstalledHelperPasses) { expect_lie_group<TypeParam>(); }
 

@@ -127,10 +127,12 @@ TEST(MultipleShooting, SweepStartJoinsAndRecentringKeepsTheState) {
 // removed; M = 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 100), and LM damping 1e-8..1, LM ends on a fold of the lifted system
 // (sigma_min / sigma_max of the Jacobian 1e-11..1e-9, the residual entirely along the null
 // direction): a local minimum of |r| (0.01..0.7), far from the branch continuation follows.
-// The test records the outcome for M = 8 (the default at N = 800) and 16 (M = 32 behaves the
-// same at 4x the cost) and asserts what holds either way: a converged run meets the terminal
-// conditions (and says whether it is the continuation branch); a failed one says so with a
-// status, the residual history and the Jacobian's conditioning, and returns the trajectory.
+// The test asserts that outcome for M = 8 (the default at N = 800) and 16 (M = 32 behaves the same
+// at 4x the cost): an honest failure (max-iterations measured in all six cases; stalled or a
+// singular Jacobian would be as honest) with the residual history and the Jacobian's conditioning,
+// the trajectory of its best iterate, and that iterate off the continuation branch (measured
+// |v0 - v0(continuation)| 0.57 to 1.15). Should a change make multiple shooting solve it, the
+// test fails: docs/paper-notes.md#erratum-4 then needs the new figures.
 TEST(MultipleShooting, LongHorizonOscillatorFromTheGeodesicGuess) {
   for (double lambda : {0.0, 0.5, 1.0}) {
     const auto problem = paper_oscillator(lambda);
@@ -141,21 +143,17 @@ TEST(MultipleShooting, LongHorizonOscillatorFromTheGeodesicGuess) {
       std::cout << "[ oscillator T=12 ] lambda " << lambda << " M " << segments << ": " << to_string(s.status) << ", "
                 << s.inner_iterations << " iterations, " << s.sweeps << " sweeps, " << s.solve_time_s
                 << " s, |v0 - v0(continuation)| = " << (s.v0 - continued.v0).norm() << "\n";
+      ASSERT_FALSE(s.converged()) << "multiple shooting now solves the T = 12 oscillator from the geodesic guess "
+                                  << "(lambda " << lambda << ", M " << segments << "): update erratum 4 and this test";
+      EXPECT_TRUE(s.status == Status::Stalled || s.status == Status::MaxIterations || s.status == Status::SingularJacobian)
+          << s.status;
       EXPECT_EQ(s.trajectory.g.size(), static_cast<std::size_t>(problem.N) + 1) << s.message;
-      EXPECT_EQ(s.residual_history.empty(), false);
-      if (s.converged()) {
-        EXPECT_LT(s.terminal_error, 1e-6) << s.message;
-        EXPECT_LT(s.xi_terminal, 1e-6) << s.message;
-        std::cout << "    converged to " << ((s.v0 - continued.v0).norm() < 1e-6 ? "the" : "another")
-                  << " branch than continuation in T\n";
-      } else {
-        EXPECT_TRUE(s.status == Status::Stalled || s.status == Status::MaxIterations || s.status == Status::SingularJacobian)
-            << s.status;
-        EXPECT_NE(s.message.find("|r| = "), std::string::npos) << s.message;
-        EXPECT_NE(s.message.find("|r| history ["), std::string::npos) << s.message;
-        EXPECT_NE(s.message.find("sigma_min / sigma_max"), std::string::npos) << s.message;
-        EXPECT_GT(s.terminal_error, 1e-6);
-      }
+      EXPECT_FALSE(s.residual_history.empty());
+      EXPECT_NE(s.message.find("|r| = "), std::string::npos) << s.message;
+      EXPECT_NE(s.message.find("|r| history ["), std::string::npos) << s.message;
+      EXPECT_NE(s.message.find("sigma_min / sigma_max"), std::string::npos) << s.message;
+      EXPECT_GT(s.terminal_error, 1e-6);
+      EXPECT_GT((s.v0 - continued.v0).norm(), 0.1);  // a local minimum of |r| off the branch
     }
   }
 }

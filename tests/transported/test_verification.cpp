@@ -258,6 +258,13 @@ TEST(TransportedVerification, ContinuationInTDoesNotJumpBranches) {
       turned += groups::SO3::log(a.trajectory.g[k].transpose() * a.trajectory.g[k + 1]).norm() / (2 * std::numbers::pi);
     }
     EXPECT_LT(turned, 1.0) << lambda;
+    // The branch's action (docs/paper-notes.md, erratum 4): S_h = -18.146, -18.114, -18.148 at
+    // lambda = 0, 1/2, 1 (N = 800; 3e-5 from N = 1600); the 1.5-revolution branch has about -6.4,
+    // so 0.1 tells the branches apart with room for lambda's 0.03.
+    const auto p = paper_oscillator(lambda);
+    EXPECT_NEAR(transported::transported_action<groups::SO3>(p.lagrangian, lambda, a.trajectory.t, a.trajectory.g), -18.1,
+                0.1)
+        << lambda;
   }
 }
 

@@ -72,4 +72,11 @@ class ErasedLagrangian {
 template <manifolds::ManifoldWithConnection M>
 using ErasedProblem = GeneralProblem<M, ErasedLagrangian<M>>;
 
+/// `problem` with its Lagrangian behind the erased type (for the compiled solvers).
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+ErasedProblem<M> erased(const GeneralProblem<M, L>& problem) {
+  return {problem.manifold, ErasedLagrangian<M>(problem.lagrangian), problem.T, problem.N, problem.q0, problem.qT,
+          problem.frame0};
+}
+
 }  // namespace cartan::general

@@ -18,6 +18,8 @@
 //   expect_ad_and_coad             ad_u v = vee([hat u, hat v]), ad = d Ad, Jacobi, ad* = ad^T
 //   expect_translations            left/right translations and trivialisations, of vectors and covectors
 //   expect_left_jacobian_is_the_series  groups::left_jacobian against sum ad^k / (k+1)!
+//   expect_exp_jacobians_are_the_derivatives  left and right Jacobians of exp by central
+//                                  differences, and their inverses
 //   expect_lie_group               all of the above
 // Needs GoogleTest (link GTest::gtest); the library never includes cartan/testing/.
 
@@ -167,6 +169,35 @@ void expect_left_jacobian_is_the_series() {
   }
 }
 
+// The exponential's Jacobians as derivatives, by central differences (step 1e-5: truncation about
+// 1e-10, rounding about 1e-11, scaled by the entries' size 1 + |x|^2): exp(x + e w) =
+// exp(e J_l(x) w) exp(x) + O(e^2) and exp(x) exp(e J_r(x) w) + O(e^2); and left_jacobian_inverse,
+// right_jacobian_inverse (a group's closed form or the generic inverse) invert them (J is well
+// conditioned for |x| <= 2: rounding only). Up to |x| = 2, where log inverts exp near exp(x) on
+// every shipped group (rotation angles below pi).
+template <groups::LieGroup G>
+void expect_exp_jacobians_are_the_derivatives() {
+  std::mt19937 rng(kSeed + 4);
+  const double e = 1e-5;
+  const groups::AlgebraMatrixOf<G> identity = groups::AlgebraMatrixOf<G>::Identity();
+  for (double size : {0.0, 1e-3, 0.3, 1.0, 2.0}) {
+    const groups::TangentOf<G> x = random_tangent<G>(rng, 1.0).normalized() * size;
+    const groups::TangentOf<G> w = random_tangent<G>(rng, 1.0);
+    const groups::ElementOf<G> g = G::exp(x), g_inverse = G::inverse(g);
+    const groups::ElementOf<G> plus = G::exp(groups::TangentOf<G>(x + e * w));
+    const groups::ElementOf<G> minus = G::exp(groups::TangentOf<G>(x - e * w));
+    const groups::TangentOf<G> left = (G::log(G::compose(plus, g_inverse)) - G::log(G::compose(minus, g_inverse))) / (2 * e);
+    const groups::TangentOf<G> right = (groups::log_between<G>(g, plus) - groups::log_between<G>(g, minus)) / (2 * e);
+    const double scale = 1 + size * size;
+    EXPECT_NEAR_MATRIX(left, groups::left_jacobian<G>(x) * w, 1e-8 * scale) << "|x| = " << size;
+    EXPECT_NEAR_MATRIX(right, groups::right_jacobian<G>(x) * w, 1e-8 * scale) << "|x| = " << size;
+    EXPECT_NEAR_MATRIX(groups::left_jacobian_inverse<G>(x) * groups::left_jacobian<G>(x), identity, 1e-12 * scale)
+        << "|x| = " << size;
+    EXPECT_NEAR_MATRIX(groups::right_jacobian_inverse<G>(x) * groups::right_jacobian<G>(x), identity, 1e-12 * scale)
+        << "|x| = " << size;
+  }
+}
+
 /// Every check above.
 template <groups::LieGroup G>
 void expect_lie_group() {
@@ -176,6 +207,7 @@ void expect_lie_group() {
   expect_ad_and_coad<G>();
   expect_translations<G>();
   expect_left_jacobian_is_the_series<G>();
+  expect_exp_jacobians_are_the_derivatives<G>();
 }
 
 }  // namespace cartan::testing

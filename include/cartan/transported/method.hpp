@@ -23,6 +23,11 @@ enum class Method {
 /// not at all, by continuation in the horizon T, or in lambda (from lambda_start).
 enum class Continuation { None, T, Lambda };
 
+/// The default tolerance and iteration limit of every solve: SolveOptions, the CLI's --tol and
+/// --max-iterations, Python's tol= and max_iterations= (cartan._cartan.DEFAULTS) take them from here.
+inline constexpr double kDefaultTol = 1e-10;
+inline constexpr int kDefaultMaxIterations = 200;
+
 /// The collocation scheme's order (Lobatto IIIA, numerics/collocation.hpp), reported as `order`.
 inline constexpr int kCollocationOrder = 4;
 /// The variational integrator's order (variational.hpp; measured in tests/transported/test_variational.cpp).

@@ -111,6 +111,7 @@ class MultipleShootingSystem {
       failure_ = e.what();
       return std::nullopt;
     }
+    out.after_stop = 0;  // a stop here leaves no iterate: nothing follows it
     for (int j = 1; j < segments(); ++j) {
       if (!run(j - 1, out.last, std::nullopt, out)) return std::nullopt;
       reference_.push_back(out.last);
@@ -294,7 +295,8 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
   if (segments > 1) ++solution.sweeps;
   std::optional<Eigen::VectorXd> x = system.initialise(v0_guess, xi0_guess);
   if (!x) {
-    solution.status = Status::NonFinite;
+    const bool stopped = options.monitor != nullptr && options.monitor->stop_requested();
+    solution.status = stopped ? Status::Interrupted : Status::NonFinite;
     solution.message = message.str() + "the initial segment states failed: " + system.failure();
     solution.solve_time_s = detail::seconds_since(start);
     return solution;

@@ -27,8 +27,8 @@ struct SolveOptions {
   /// Shooting and multiple shooting: on |(log(gT^{-1} g_N), xi_N / xi_scale)| (radians and a
   /// relative xi, shooting.hpp); two-level: the outer change of xi relative to xi_scale (its inner
   /// loop works to 1e-13); collocation: the relative RMS residual on every interval.
-  double tol = 1e-10;
-  int max_iterations = 200;
+  double tol = kDefaultTol;
+  int max_iterations = kDefaultMaxIterations;
   std::optional<int> segments;         ///< multiple shooting only (default: about 100 steps each, at most 16)
   std::optional<double> lambda_start;  ///< continuation in lambda only (default 0)
   int samples = 0;                     ///< collocation only: output at this many uniform times (0: the final mesh)
@@ -43,14 +43,7 @@ struct SolveOptions {
   void validate() const {
     constexpr std::string_view where = "SolveOptions";
     require_finite(tol, where, "tol");
-    if (!(tol > 0)) throw_invalid(where, "tol", format_value(tol), "must be positive");
-    // Every method's residual carries rounding errors of many operations: below this no method
-    // can meet tol (collocation refuses it; shooting would stall), so every method refuses it.
-    constexpr double kTolFloor = 100 * std::numeric_limits<double>::epsilon();
-    if (tol < kTolFloor) {
-      throw_invalid(where, "tol", format_value(tol),
-                    "is below 100 machine epsilons (" + format_value(kTolFloor) + "): no method can reach it");
-    }
+    require_reachable_tolerance(tol, where);  // every method refuses what none can reach
     if (max_iterations < 1) throw_invalid(where, "max_iterations", std::to_string(max_iterations), "must be at least 1");
     if (order != SchemeOrder::First && order != SchemeOrder::Second) {
       throw_invalid(where, "order", std::to_string(static_cast<int>(order)), "must be 1 or 2");

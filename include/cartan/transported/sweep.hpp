@@ -25,6 +25,9 @@ struct SweepOutput {
   /// If set, polled every SolveMonitor::kStepsBetweenPolls steps (stop_pending): a stop ends the
   /// sweep as a failed one, and the solver's own poll then ends the solve.
   const SolveMonitor* monitor = nullptr;
+  /// The work that follows a stop, in sweeps of this kind, projected from this sweep's pace until
+  /// the solver has timed a sweep; negative: by kind (sweep_segment).
+  double after_stop = -1;
 };
 
 /// Runs steps first..last-1 from `node` (node `first`, at t_first) - one segment of a sweep.
@@ -53,7 +56,7 @@ bool sweep_segment(const TransportedScheme<G, L>& scheme, SchemeNode<G> node,
       // about 2 plain sweeps or 1 tangent-linear one (bench/README.md, "Interruption"); nothing
       // where the solver records its sweeps (shooting.hpp: a stop before one completed leaves no
       // trajectory rather than sweeping again).
-      const double after_stop = out.trajectory ? 0.0 : tangent ? 1.0 : 2.0;
+      const double after_stop = out.after_stop >= 0 ? out.after_stop : out.trajectory ? 0.0 : tangent ? 1.0 : 2.0;
       if (SolveMonitor::stop_pending_at(out.monitor, k - first, scheme.problem().N, begin, after_stop)) {
         out.failure = SolveMonitor::stopped_message(k);
         return false;
