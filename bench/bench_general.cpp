@@ -5,10 +5,12 @@
 // recomputed from Gamma at every node), and the general tangent-linear sweep (12 directions); and
 // whole shooting solves, the Lie-group solver's against the general one's with its tangent-linear
 // Jacobian (argument 1) or forward differences (0), on the Cartan–Schouten connection and on the
-// Levi-Civita connection of the inertia (not parallel: frame components recomputed at every node).
+// Levi-Civita connection of the inertia (not parallel: frame components recomputed at every node);
+// and the typed general::solve against the library's compiled one for the erased Lagrangian.
 // bench/README.md, "General connections", has the ratios.
 #include <benchmark/benchmark.h>
 
+#include "cartan/general/compiled.hpp"
 #include "cartan/general/shooting.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/transported/shooting.hpp"
@@ -97,6 +99,28 @@ void BM_Solve_GeneralShootingLeviCivita(benchmark::State& state) {
   solve_general(state, SO3Manifold::levi_civita(testing::paper_inertia()));
 }
 
+/// general::solve (shooting) on p: the typed instantiation of this unit, or the library's compiled
+/// one when L is the erased Lagrangian (general/compiled.hpp).
+template <class L>
+void solve_with(benchmark::State& state, const general::GeneralProblem<SO3Manifold, L>& p) {
+  transported::SolveOptions options;
+  options.method = transported::Method::Shooting;
+  for (auto _ : state) {
+    const auto s = general::solve(p, options);
+    if (!s.converged()) state.SkipWithError(s.message.c_str());
+    state.counters["sweeps"] = s.sweeps;
+  }
+}
+/// The cost of the erased Lagrangian (one indirect call per evaluation of l, mu, v, zeta or the
+/// second derivatives) under the Levi-Civita connection of the inertia: argument 0 the typed
+/// solve, 1 the compiled one behind general::ErasedLagrangian (what the CLI and Python call).
+void BM_Solve_LeviCivitaTypedOrErased(benchmark::State& state) {
+  const auto typed = general_problem(SO3Manifold::levi_civita(testing::paper_inertia()));
+  if (state.range(0) == 0) return solve_with(state, typed);
+  solve_with(state, general::ErasedProblem<SO3Manifold>{typed.manifold, general::ErasedLagrangian<SO3Manifold>(typed.lagrangian),
+                                                        typed.T, typed.N, typed.q0, typed.qT, std::nullopt});
+}
+
 }  // namespace
 
 BENCHMARK(BM_Sweep_LieGroupScheme)->Unit(benchmark::kMicrosecond);
@@ -106,4 +130,5 @@ BENCHMARK(BM_TangentSweep_GeneralFastPath)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Solve_LieGroupShooting)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Solve_GeneralShootingFastPath)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Solve_GeneralShootingLeviCivita)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Solve_LeviCivitaTypedOrErased)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();
