@@ -45,10 +45,10 @@ class SolveMonitor {
   static constexpr int kStepsBetweenPolls = 1024;
   /// What a sweep of `steps` steps, begun at `begin`, polls at its step k: stop_pending() at every
   /// kStepsBetweenPolls-th step; false between them and without a monitor. Its message, when true:
-  /// stopped_message(k). Until the solver has timed a
-  /// whole sweep (reserve_after_stop), the poll also projects the reserve from this sweep's pace:
-  /// `after_stop` times the whole sweep's projected time (the work after a stop, in sweeps of this
-  /// kind), so that a sweep longer than the time limit itself stops in time for what follows.
+  /// stopped_message(k). Until the solver has timed a whole sweep (reserve_after_stop), the poll
+  /// also projects the reserve from this sweep's pace: `after_stop` times the whole sweep's
+  /// projected time (the work after a stop, in sweeps of this kind), so that a sweep longer than
+  /// the time limit itself stops in time for what follows.
   static bool stop_pending_at(const SolveMonitor* monitor, int k, int steps,
                               std::chrono::steady_clock::time_point begin, double after_stop) {
     if (monitor == nullptr || k % kStepsBetweenPolls != kStepsBetweenPolls - 1) return false;
