@@ -30,6 +30,10 @@ enum class Status {
   TimeLimit,           ///< stopped when the time limit (SolveOptions::time_limit) ran out
 };
 
+/// Stopped on request (a cancellation or the time limit), not ended by the method: such a result
+/// carries its best iterate's samples and nothing computed from them afterwards (no action).
+constexpr bool stopped_on_request(Status status) { return status == Status::Interrupted || status == Status::TimeLimit; }
+
 template <>
 struct EnumNames<Status> {
   static constexpr std::string_view what = "status";

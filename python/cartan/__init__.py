@@ -188,7 +188,10 @@ class SolveResult:
     what `cartan verify` checks; cumulative_action (N+1,): the discrete transported action S_h over
     the first k steps (0 at k = 0; its last entry is `action`). energy and cumulative_action are None
     for a loaded file of a Python-defined model. (They are computed once after the solve: for a
-    Lagrangian defined in Python, N+1 more calls of value and momentum.)
+    Lagrangian defined in Python, N+1 more calls of value and momentum.) A result stopped on request
+    (status "interrupted" or "time-limit") carries its best iterate's samples only: action is NaN and
+    P, u, energy, cumulative_action are None, since over a long trajectory they cost what the stop
+    was there to save (:func:`load` of its :meth:`to_json` file computes them).
     Dense output :meth:`sol`, the CLI's JSON :meth:`to_json` and :func:`load`, a figure :meth:`plot`.
     """
     status: str
@@ -324,7 +327,8 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="no
     (any object with t, g, v, xi, e.g. a previous SolveResult), as scipy.integrate.solve_bvp takes y.
     progress: a callable (stage, iteration, residual) called once per iteration.
     time_limit: seconds the whole call may take, every method and attempt (default None: no limit);
-    past it the running method stops at its next iteration and the result has status "time-limit".
+    past it the running method stops at its next iteration and the result has status "time-limit"
+    (its samples only: no action, P, u, energy or cumulative_action; see :class:`SolveResult`).
     Ctrl-C raises KeyboardInterrupt within one iteration; invalid arguments raise ValueError before
     any work. Solves of built-in models run without the GIL (so that threads solve in parallel).
     Many problems at once, on threads, processes or a cluster: :func:`sweep`.
@@ -332,7 +336,7 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="no
     result = _transported("_solve", locals())
     grp = _group_of(lagrangian, group, "solve")
     result["model"], result["inertia"] = _results.describe_model(lagrangian, grp)
-    return SolveResult(**result, **grp._along(lagrangian, result, lam))
+    return SolveResult(**result)
 
 
 def load(path):

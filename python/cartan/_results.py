@@ -267,6 +267,7 @@ def dense(r, t):
     collocation = r.method == "collocation"
     if collocation:
         splines = _splines(r)
+        u = r.u if r.u is not None else group._along(None, r, r.lam)["u"]  # a stopped result has no u
     g, v, mu, xi = [], [], [], []
     for j, (i, sj, hj) in enumerate(zip(k, s, h)):
         if sj in (0, 1):  # a node: its sample, exactly
@@ -276,7 +277,7 @@ def dense(r, t):
             continue
         step = np.asarray(group.log(group.compose(group.inverse(r.g[i]), r.g[i + 1])))
         if collocation:
-            x = _hermite(sj, hj, 0 * step, step, r.u[i], _chart_derivative(group, step, r.u[i + 1]))
+            x = _hermite(sj, hj, 0 * step, step, u[i], _chart_derivative(group, step, u[i + 1]))
             rates = [-np.asarray(group.ad(r.v[m])).T @ r.mu[m] for m in (i, i + 1)]  # xi' = -ad*_v mu (disc-aux)
             xi.append(_hermite(sj, hj, r.xi[i], r.xi[i + 1], *rates))
             v.append(splines[0](times[j]))

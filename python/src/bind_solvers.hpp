@@ -9,7 +9,8 @@
 // A `progress` callable receives (stage, iteration, residual) once per iteration.
 // `<Group>._verify(...)`: the library's checks and verdict (include/cartan/verify/report.hpp) on a
 // result of any model, as a dict of VerifyReport's fields. `<Group>._along(...)`: the transport
-// P_k, body velocity u_k, energy and cumulative action along a result (transported/along.hpp).
+// P_k, body velocity u_k, energy and cumulative action along a result (transported/along.hpp), for
+// a loaded file; `_solve` returns them with the solution.
 
 #include <optional>
 #include <string>
@@ -67,30 +68,51 @@ transported::TransportedTrajectory<G> trajectory_of(const py::object& source, co
                   std::string("has no field ") + name + (with_mu ? " (give t, g, v, mu and xi, e.g. a SolveResult)"
                                                                  : " (give t, g, v and xi, e.g. a SolveResult)"));
   };
-  const auto t = field("t").template cast<std::vector<double>>();
-  const py::sequence g = field("g"), v = field("v"), xi = field("xi");
-  const py::sequence mu = with_mu ? py::sequence(field("mu")) : py::sequence(py::list());
-  if (py::len(g) != t.size() || py::len(v) != t.size() || py::len(xi) != t.size() ||
-      (with_mu && py::len(mu) != t.size())) {
-    throw_invalid("cartan." + where, argument, "(" + std::to_string(t.size()) + " times)",
-                  with_mu ? "needs g, v, mu and xi at every time" : "needs g, v and xi at every time");
-  }
-  const std::string name(argument);
+  const std::string name(argument), in = a.group + "." + where;
   transported::TransportedTrajectory<G> tr;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    tr.t.push_back(t[i]);
-    tr.g.push_back(a.element(g[i], where, name + ".g"));
-    tr.v.push_back(a.tangent(v[i], where, name + ".v"));
-    tr.mu.push_back(with_mu ? groups::CovectorOf<G>(a.tangent(mu[i], where, name + ".mu")) : groups::CovectorOf<G>::Zero());
-    tr.xi.push_back(a.tangent(xi[i], where, name + ".xi"));
+  const Array t = as_array(field("t"), in, name + ".t");
+  if (t.ndim() != 1) throw_invalid(in, name + ".t", "array of shape " + shape_text(t), "must be one-dimensional");
+  tr.t.assign(t.data(), t.data() + t.shape(0));
+  tr.g = to_eigen_list<groups::ElementOf<G>>(field("g"), in, name + ".g");
+  tr.v = to_eigen_list<groups::TangentOf<G>>(field("v"), in, name + ".v");
+  tr.xi = to_eigen_list<groups::CovectorOf<G>>(field("xi"), in, name + ".xi");
+  if (with_mu) {
+    tr.mu = to_eigen_list<groups::CovectorOf<G>>(field("mu"), in, name + ".mu");
+  } else {
+    tr.mu.assign(tr.t.size(), groups::CovectorOf<G>::Zero());
+  }
+  if (tr.g.size() != tr.t.size() || tr.v.size() != tr.t.size() || tr.xi.size() != tr.t.size() ||
+      tr.mu.size() != tr.t.size()) {
+    throw_invalid("cartan." + where, argument, "(" + std::to_string(tr.t.size()) + " times)",
+                  with_mu ? "needs g, v, mu and xi at every time" : "needs g, v and xi at every time");
   }
   return tr;
 }
 
 
+/// A solve's result and what SolveResult carries along it (along.hpp), computed where the model is
+/// at hand, without a round trip through NumPy. A result stopped on request has none of it (its
+/// samples only: the derived quantities would cost what the stop was there to save).
+template <groups::LieGroup G>
+struct SolvedAlong {
+  transported::TransportedSolution<G> solution;
+  std::optional<transported::AlongSolution<G>> along;
+};
+
+/// P, u, energy and cumulative_action of SolveResult (None where `along` is empty, or for the
+/// energy and action where `with_model` is false).
+template <groups::LieGroup G>
+void add_along_fields(py::dict& d, std::optional<transported::AlongSolution<G>>&& along, bool with_model) {
+  const py::object none = py::none();
+  d["P"] = along ? py::object(to_numpy(std::move(along->P))) : none;
+  d["u"] = along ? py::object(to_numpy(std::move(along->u))) : none;
+  d["energy"] = along && with_model ? py::object(to_numpy(std::move(along->energy))) : none;
+  d["cumulative_action"] = along && with_model ? py::object(to_numpy(std::move(along->action))) : none;
+}
+
 /// The solution as a dict of the fields of SolveResult (python/cartan/__init__.py).
 template <groups::LieGroup G>
-py::dict solution_dict(const transported::TransportedSolution<G>& s, const std::string& group, double lambda, double T, int N,
+py::dict solution_dict(transported::TransportedSolution<G>&& s, const std::string& group, double lambda, double T, int N,
                        const groups::ElementOf<G>& g0, const groups::ElementOf<G>& gT, double tol) {
   py::dict d;
   d["status"] = std::string(to_string(s.status));
@@ -106,12 +128,12 @@ py::dict solution_dict(const transported::TransportedSolution<G>& s, const std::
   d["g0"] = to_numpy(g0);
   d["gT"] = to_numpy(gT);
   d["tol"] = tol;
-  const auto& tr = s.trajectory;
-  d["t"] = to_numpy(tr.t);
-  d["g"] = to_numpy(tr.g);
-  d["v"] = to_numpy(tr.v);
-  d["mu"] = to_numpy(tr.mu);
-  d["xi"] = to_numpy(tr.xi);
+  auto& tr = s.trajectory;  // moved into the arrays
+  d["t"] = to_numpy(std::move(tr.t));
+  d["g"] = to_numpy(std::move(tr.g));
+  d["v"] = to_numpy(std::move(tr.v));
+  d["mu"] = to_numpy(std::move(tr.mu));
+  d["xi"] = to_numpy(std::move(tr.xi));
   d["v0"] = to_numpy(s.v0);
   d["xi0"] = to_numpy(s.xi0);
   d["terminal_error"] = s.terminal_error;
@@ -170,9 +192,15 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
        py::arg("request"), py::arg("v0"), py::arg("xi0"), py::arg("guess"), py::arg("progress"));
   };
   def_entry("_solve", [](const auto& problem, const SolveCall<G>& call) {
-    return transported::solve(problem, call.options, call.guess);
-  }, [a](const transported::TransportedSolution<G>& s, const SolveCall<G>& call, double lambda, double T, int N) {
-    return solution_dict(s, a.group, lambda, T, N, call.g0, call.gT, call.options.tol);
+    SolvedAlong<G> out{transported::solve(problem, call.options, call.guess), std::nullopt};
+    if (!stopped_on_request(out.solution.status)) {
+      out.along = transported::along_solution<G>(problem.lagrangian, problem.lambda, out.solution.trajectory);
+    }
+    return out;
+  }, [a](SolvedAlong<G>&& s, const SolveCall<G>& call, double lambda, double T, int N) {
+    py::dict d = solution_dict(std::move(s.solution), a.group, lambda, T, N, call.g0, call.gT, call.options.tol);
+    add_along_fields<G>(d, std::move(s.along), true);
+    return d;
   });
   def_entry("_validate", [](const auto& problem, const SolveCall<G>& call) {
     transported::validate(problem, call.options, call.guess);
@@ -195,16 +223,13 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
      py::arg("order"), py::arg("tol"), py::arg("status"));
   group.def_static("_along", [a](const py::object& model, const py::object& result, double lambda) {
     const transported::TransportedTrajectory<G> x = trajectory_of<G>(result, a, "along", "result", true);
-    const transported::AlongSolution<G> along =
-        model.is_none() ? transported::along_transport<G>(lambda, x)
-                        : visit_model<PythonLagrangian<G>, Models...>(model, [&](const auto& l) {
-                            return transported::along_solution<G>(l, lambda, x);
-                          });
     py::dict d;
-    d["P"] = to_numpy(along.P);
-    d["u"] = to_numpy(along.u);
-    d["energy"] = model.is_none() ? py::object(py::none()) : py::object(to_numpy(along.energy));
-    d["cumulative_action"] = model.is_none() ? py::object(py::none()) : py::object(to_numpy(along.action));
+    add_along_fields<G>(d, std::optional<transported::AlongSolution<G>>(
+                               model.is_none() ? transported::along_transport<G>(lambda, x)
+                                               : visit_model<PythonLagrangian<G>, Models...>(model, [&](const auto& l) {
+                                                   return transported::along_solution<G>(l, lambda, x);
+                                                 })),
+                        !model.is_none());
     return d;
   }, py::arg("lagrangian"), py::arg("result"), py::arg("lam"));
 }

@@ -339,7 +339,7 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
     py::gil_scoped_release release;
     solved.emplace(run());
   }
-  const general::GeneralSolution<M>& s = *solved;
+  general::GeneralSolution<M>& s = *solved;  // its trajectory moves into the arrays
   py::dict d;
   d["status"] = std::string(to_string(s.status));
   d["message"] = s.message;
@@ -353,13 +353,13 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   d["q0"] = to_numpy(problem.q0);
   d["qT"] = to_numpy(problem.qT);
   d["tol"] = options.tol;
-  const auto& tr = s.trajectory;
-  d["t"] = to_numpy(tr.t);
-  d["q"] = to_numpy(tr.q);
-  d["frame"] = to_numpy(tr.frame);
-  d["v"] = to_numpy(tr.v);
-  d["mu"] = to_numpy(tr.mu);
-  d["Xi"] = to_numpy(tr.Xi);
+  auto& tr = s.trajectory;
+  d["t"] = to_numpy(std::move(tr.t));
+  d["q"] = to_numpy(std::move(tr.q));
+  d["frame"] = to_numpy(std::move(tr.frame));
+  d["v"] = to_numpy(std::move(tr.v));
+  d["mu"] = to_numpy(std::move(tr.mu));
+  d["Xi"] = to_numpy(std::move(tr.Xi));
   d["v0"] = to_numpy(s.v0);
   d["Xi0"] = to_numpy(s.Xi0);
   d["terminal_error"] = s.terminal_error;

@@ -103,6 +103,10 @@ def test_bad_input_raises_value_error():
         cartan.verify(dataclasses.replace(r, status="done"), model)
     with pytest.raises(ValueError, match="needs g, v, mu and xi at every time"):
         cartan.verify(dataclasses.replace(r, v=r.v[:-1]), model)
+    # The samples are read as whole arrays: a wrong row shape names the field and both shapes.
+    with pytest.raises(ValueError, match=r"^SO3\.verify: result\.g = array of shape \(21, 9\) must have shape "
+                                         r"\(21, 3, 3\)$"):
+        cartan.verify(dataclasses.replace(r, g=r.g.reshape(21, 9)), model)
     with pytest.raises(ValueError, match="must run from 0 to T"):
         cartan.verify(dataclasses.replace(r, T=3.0), model)
     with pytest.raises(ValueError, match="group"):

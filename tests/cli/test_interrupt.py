@@ -154,3 +154,4 @@ def test_time_limit_stops_the_solve_with_its_status(tmp_path):
     d = json.loads(out.read_text())
     assert d["status"] == "time-limit" and "time limit of 0.5 s reached" in d["message"]
     assert 0.25 <= d["solve_time_s"] < time.monotonic() - started  # about the limit (bench/README.md)
+    assert d["action"] is None  # a stopped result's action is not computed (NaN, written as null)

@@ -56,7 +56,7 @@ groups::ElementOf<G> random_ambient(std::mt19937& rng) {
 
 template <class G>
 class TransportTest : public ::testing::Test {};
-TYPED_TEST_SUITE(TransportTest, AllGroups);
+TYPED_TEST_SUITE(TransportTest, GroupsWithOneGeneric);
 
 // The test curve's velocities are right: compare with central differences of g(t) in ambient
 // coordinates (step 1e-5, truncation ~1e-10 on O(1) derivatives; 1e-8 is safe).

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cartan/transported/continuation.hpp"
+#include "cartan/transported/solve.hpp"
 #include "cartan/transported/two_level.hpp"
 #include "cartan/transported/action.hpp"
 #include "test_support.hpp"
@@ -277,6 +278,27 @@ TEST(TransportedVerification, ActionRejectsBadInput) {
   expect_invalid([&] { transported::transported_action<groups::SO3>(body, std::nan(""), 1.0, two); }, "lambda");
   const std::vector<Eigen::Vector3d> w_short{Eigen::Vector3d::Zero()};
   expect_invalid([&] { transported::transported_action_derivative<groups::SO3>(body, 0.5, 1.0, two, w_short); }, "w.size() = 1");
+}
+
+// A result stopped on request keeps the best iterate's samples but no action (solve.hpp: over a
+// long trajectory the action costs about two sweeps, the work a stop is there to save); the same
+// solve left to run has one. Stopped here by the monitor's stop callback after two iterations of
+// shooting on the paper's T = 12 oscillator (it needs more: measured 5 from the geodesic guess), so
+// nothing depends on the clock.
+TEST(TransportedVerification, AStoppedResultHasItsIterateButNoAction) {
+  const auto problem = paper_oscillator(0.5, 400);
+  transported::SolveOptions options;
+  options.method = transported::Method::Shooting;
+  int iterations = 0;
+  options.monitor = SolveMonitor([&](const Progress&) { ++iterations; }, [&] { return iterations >= 2; });
+  const auto stopped = transported::solve(problem, options);
+  EXPECT_EQ(stopped.status, Status::Interrupted) << stopped.message;
+  EXPECT_EQ(stopped.trajectory.t.size(), 401u);
+  EXPECT_TRUE(std::isnan(stopped.action));
+  options.monitor = SolveMonitor();
+  const auto finished = transported::solve(problem, options);
+  EXPECT_FALSE(stopped_on_request(finished.status)) << finished.message;
+  EXPECT_TRUE(std::isfinite(finished.action)) << finished.message;
 }
 
 }  // namespace

@@ -208,10 +208,11 @@ PathEnd continue_parameter(const MakeProblem& make, double from, double to, Solu
 }
 
 /// The failure result of a continuation of `problem`: the better (smaller scaled residual) of
-/// `direct` (an attempt on the requested problem, may be empty) and a solve of the requested
-/// problem from the last stage reached; status ContinuationFailed (or Interrupted), all work counted.
+/// `direct` (an attempt on the requested problem, may be null; its trajectory is moved from, not
+/// copied) and a solve of the requested problem from the last stage reached; status
+/// ContinuationFailed (or Interrupted), all work counted.
 template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
-Solution best_iterate(const Problem& problem, const Solution* direct, const Solution* last_stage,
+Solution best_iterate(const Problem& problem, Solution* direct, const Solution* last_stage,
                       const ContinuationOptions& options, int sweeps, int iterations) {
   using Family = ShootingFamily<Problem>;
   Solution best;
@@ -224,7 +225,7 @@ Solution best_iterate(const Problem& problem, const Solution* direct, const Solu
       best = std::move(candidate);
     }
   };
-  if (direct != nullptr) consider(*direct);
+  if (direct != nullptr) consider(std::move(*direct));
   const bool stopped = options.shooting.monitor != nullptr && options.shooting.monitor->stop_requested();
   if (last_stage != nullptr && !stopped) {
     Solution from_stage =
@@ -267,11 +268,14 @@ Solution continue_in_T(const Problem& problem, const ContinuationOptions& option
   };
   const ShootingOptions path = path_shooting(options);
   double start = problem.T;
+  // `first`: the last attempt from a guess; `direct`: the attempt at the full horizon. Solutions
+  // are moved, never copied, where they may hold a long trajectory (N = 2e6: 0.3 GB).
   Solution first, direct;
+  bool direct_is_first = false;  // the loop ended on the direct attempt, which is then `first`
   int sweeps = 0, iterations = 0;
   for (int halving = 0; halving <= options.max_halvings; ++halving, start /= 2) {
     if (halving == 0 && failed_direct != nullptr) {
-      direct = first = *failed_direct;
+      direct = *failed_direct;
       continue;
     }
     const Problem p = make(start);
@@ -286,8 +290,10 @@ Solution continue_in_T(const Problem& problem, const ContinuationOptions& option
     first = Family::shoot(p, start_options, v0, aux_guess && halving == 0 ? *aux_guess : Auxiliary(Auxiliary::Zero()));
     sweeps += first.sweeps;
     iterations += Family::inner_iterations(first);
-    if (halving == 0) direct = first;
-    if (first.converged() || first.status == Status::Interrupted) break;
+    const bool done = first.converged() || first.status == Status::Interrupted;
+    if (halving == 0 && done) direct_is_first = true;
+    if (done) break;
+    if (halving == 0) direct = std::move(first);
   }
   first.sweeps = sweeps;
   Family::set_inner_iterations(first, iterations);
@@ -296,13 +302,14 @@ Solution continue_in_T(const Problem& problem, const ContinuationOptions& option
   if (!first.converged()) {
     path_text << "no horizon down to T = " << format_value(start) << " converged from the "
               << (v0_guess ? "given" : "geodesic") << " guess";
-    result = best_iterate(problem, &direct, static_cast<const Solution*>(nullptr), options, sweeps, iterations);
+    result = best_iterate(problem, direct_is_first ? &first : &direct, static_cast<const Solution*>(nullptr), options,
+                          sweeps, iterations);
   } else if (start == problem.T) {
     path_text << (v0_guess || aux_guess ? "direct from the given guess" : "direct from the geodesic guess");
     result = std::move(first);
   } else {
     path_text << "continued in T from T = " << format_value(start);
-    result = first;
+    result = std::move(first);
     const PathEnd end = continue_parameter(make, start, problem.T, result, options, "T");
     path_text << " (" << end.stages << " stages)";
     if (!end.complete) {
@@ -363,7 +370,7 @@ TransportedSolution<G> solve_continuation_in_lambda(const TransportedProblem<G, 
     path_text << " (" << end.stages << " stages)";
     if (!end.complete) {
       path_text << "; stopped at lambda = " << format_value(end.reached) << ": " << end.why;
-      result = detail::best_iterate(problem, static_cast<const TransportedSolution<G>*>(nullptr), &result, options,
+      result = detail::best_iterate(problem, static_cast<TransportedSolution<G>*>(nullptr), &result, options,
                                     result.sweeps, result.inner_iterations);
     }
   }

@@ -118,8 +118,8 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   // The analytic path records every sweep (numerics/recorded_points.hpp): the result's point, the
   // last accepted one, then needs no sweep of its own, even after a stop cut a sweep short.
   numerics::RecordedPoints<TransportedTrajectory<G>> points;
-  // After a stop come the action and the result: about 2 plain sweeps (the action's terms cost
-  // about a step each; a tangent-linear sweep costs about 3 plain ones: bench/README.md).
+  // After a stop comes the result: nothing more where the sweep recorded (a stopped result has no
+  // action, solve.hpp), a recording sweep where it did not (the finite-difference path).
   auto reserve = [&](std::chrono::steady_clock::time_point begin, double share) {
     if (options.monitor) {
       options.monitor->reserve_after_stop(
@@ -137,7 +137,7 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
       failure = out.failure;
       return false;
     }
-    reserve(begin, 2.0);
+    reserve(begin, trajectory ? 0.0 : 1.0);
     r.resize(2 * n);
     r << scheme.terminal_residual(out.last), out.last.xi / s;
     return true;
@@ -161,7 +161,7 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
         failure = out.failure;
         return false;
       }
-      reserve(begin, 2.0 / 3);
+      reserve(begin, 0.0);  // it recorded: nothing follows a stop
       const groups::TangentOf<G> rg = scheme.terminal_residual(out.last);
       r.resize(2 * n);
       r << rg, out.last.xi / s;

@@ -52,7 +52,8 @@ struct TransportedSolution {
   std::vector<double> residual_history;
   double solve_time_s = 0;
   /// The discrete transported action S_h of the trajectory (transported/action.hpp), so that users
-  /// can tell solution branches apart; NaN when there is no trajectory.
+  /// can tell solution branches apart; NaN when there is no trajectory or the solve was stopped on
+  /// request (stopped_on_request: interrupted, time-limit).
   double action = std::numeric_limits<double>::quiet_NaN();
 
   std::optional<CollocationReport> collocation;  ///< set by collocation only

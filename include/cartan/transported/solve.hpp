@@ -97,12 +97,16 @@ void check_legendre_inverse(const TransportedProblem<G, L>& problem) {
   }
 }
 
-/// Fills what every result carries: the action S_h of its trajectory, the total time.
+/// Fills what every result carries: the action S_h of its trajectory, the total time. A result
+/// stopped on request keeps action NaN: over a long trajectory the action costs about two sweeps,
+/// the work the stop (a time limit, Ctrl-C) was there to save.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 void complete(const TransportedProblem<G, L>& problem, TransportedSolution<G>& s,
               std::chrono::steady_clock::time_point start) {
   const auto& tr = s.trajectory;
-  if (tr.t.size() >= 2) {
+  if (stopped_on_request(s.status)) {
+    s.action = std::numeric_limits<double>::quiet_NaN();
+  } else if (tr.t.size() >= 2) {
     try {
       s.action = transported_action<G>(problem.lagrangian, problem.lambda, tr.t, tr.g);
     } catch (const std::invalid_argument&) {
