@@ -4,8 +4,11 @@
 // dimensionless scaling of transported/shooting.hpp: unknowns (T v0, Xi0 / s), residual
 // (r_q, Xi_N / s), s = T |v_ref| |mu_ref| with v_ref the geodesic-guess velocity. The Jacobian is
 // tangent-linear (tangent.hpp: one sweep carries the m + m^2 variations) or, with
-// analytic_jacobian = false, by forward differences (1 + m + m^2 sweeps).
+// analytic_jacobian = false, by forward differences (1 + m + m^2 sweeps). The scheme is a kernel
+// of the shooting driver (numerics/shooting_driver.hpp), the Lie-group scheme's: one algorithm,
+// compiled once.
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -15,7 +18,7 @@
 #include "cartan/general/scheme.hpp"
 #include "cartan/general/tangent.hpp"
 #include "cartan/numerics/nonlinear_solve.hpp"
-#include "cartan/numerics/recorded_points.hpp"
+#include "cartan/numerics/shooting_driver.hpp"
 #include "cartan/status.hpp"
 #include "cartan/transported/method.hpp"
 #include "cartan/transported/shooting.hpp"
@@ -70,13 +73,15 @@ double xi_scale(const GeneralProblem<M, L>& problem) {
 /// the state became non-finite, a callback failed or `monitor` has a stop pending (polled every
 /// SolveMonitor::kStepsBetweenPolls steps). ModelError passes through. With `tangent`,
 /// the variations run along (tangent.hpp) and `jacobian` (m + m^2 square) receives
-/// d (terminal_residual, Xi_N reshaped) / d (v0, Xi0 reshaped).
+/// d (terminal_residual, Xi_N reshaped) / d (v0, Xi0 reshaped). `after_stop`: the work after a stop
+/// in sweeps of this kind, projected by the polls until a sweep is timed (negative: by kind).
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 std::optional<GeneralNode<M>> general_sweep(const GeneralScheme<M, L>& scheme, const manifolds::ComponentsOf<M>& v0,
                                             const manifolds::ComponentMatrixOf<M>& Xi0, std::string& failure,
                                             GeneralTrajectory<M>* trajectory = nullptr,
                                             const GeneralSchemeTangent<M, L>* tangent = nullptr,
-                                            Eigen::MatrixXd* jacobian = nullptr, const SolveMonitor* monitor = nullptr) {
+                                            Eigen::MatrixXd* jacobian = nullptr, const SolveMonitor* monitor = nullptr,
+                                            double after_stop = -1) {
   constexpr int m = M::kDim;
   const auto begin = std::chrono::steady_clock::now();
   try {
@@ -84,11 +89,12 @@ std::optional<GeneralNode<M>> general_sweep(const GeneralScheme<M, L>& scheme, c
     GeneralNodeTangent<M> dnode, dnext;
     if (tangent) dnode = tangent->initial(node);
     if (trajectory) trajectory->clear(), trajectory->push(node);
+    // Until a sweep is timed, what follows a stop is projected: by default a recording sweep into
+    // fresh storage (about 2 plain sweeps; a tangent-linear sweep costs about 3 plain ones or
+    // more), or nothing where the sweeps record.
+    const double after = after_stop >= 0 ? after_stop : trajectory ? 0.0 : tangent ? 2.0 / 3 : 2.0;
     for (int k = 0; k < scheme.problem().N; ++k) {
-      // Until a sweep is timed, what follows a stop is projected: a recording sweep (a tangent-linear
-      // sweep costs about 3 plain ones or more), or nothing where the sweeps record themselves.
-      const double after_stop = trajectory ? 0.0 : tangent ? 1.0 / 3 : 1.0;
-      if (SolveMonitor::stop_pending_at(monitor, k, scheme.problem().N, begin, after_stop)) {
+      if (SolveMonitor::stop_pending_at(monitor, k, scheme.problem().N, begin, after)) {
         failure = SolveMonitor::stopped_message(k);
         return std::nullopt;
       }
@@ -116,6 +122,67 @@ std::optional<GeneralNode<M>> general_sweep(const GeneralScheme<M, L>& scheme, c
   }
 }
 
+namespace detail {
+
+/// The general scheme as a kernel of the shooting driver (numerics/shooting_driver.hpp), the one
+/// the Lie-group scheme uses: unknowns y = (v0, Xi0 reshaped), residual (r_q, Xi_N reshaped), the
+/// Jacobian by the tangent-linear sweep (tangent.hpp). A sweep ending where difference(qT, .) is
+/// not defined (the cut locus of qT, or outside the domain) fails: r_q would be meaningless there.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+class GeneralShootingKernel final : public numerics::ShootingKernel {
+ public:
+  GeneralShootingKernel(const GeneralScheme<M, L>& scheme, const SolveMonitor* monitor, GeneralSolution<M>& solution)
+      : scheme_(scheme), tangent_(scheme), monitor_(monitor), solution_(solution) {}
+
+  numerics::SweepEnd sweep(const Eigen::VectorXd& y, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian, int slot,
+                           double after_stop, std::string& failure) override {
+    GeneralTrajectory<M>* trajectory = slot >= 0 ? &buffers_[static_cast<std::size_t>(slot)] : nullptr;
+    const auto last = general_sweep(scheme_, velocity(y), auxiliary(y), failure, trajectory,
+                                    jacobian != nullptr ? &tangent_ : nullptr, jacobian, monitor_, after_stop);
+    if (!last) return numerics::SweepEnd::Failed;
+    if (!scheme_.terminal_residual_defined(last->q)) {
+      failure = "q_N = " + format_value(last->q) + " is where difference(qT, .) is not defined (the cut locus of qT " +
+                "or outside the domain)";
+      return numerics::SweepEnd::Undefined;
+    }
+    r.resize(m + m * m);
+    r << scheme_.terminal_residual(*last), last->Xi.reshaped();
+    return numerics::SweepEnd::Done;
+  }
+
+  bool record_result(const Eigen::VectorXd& y, int slot) override {
+    std::optional<GeneralNode<M>> last;
+    if (slot >= 0) {
+      solution_.trajectory = std::move(buffers_[static_cast<std::size_t>(slot)]);
+      last = solution_.trajectory.back();
+    } else {
+      std::string failure;
+      last = general_sweep(scheme_, velocity(y), auxiliary(y), failure, &solution_.trajectory);
+    }
+    if (!last) {
+      solution_.trajectory = {};  // never a partial trajectory
+      return false;
+    }
+    solution_.v0 = velocity(y);
+    solution_.Xi0 = auxiliary(y);
+    solution_.terminal_error = scheme_.terminal_error(last->q);
+    solution_.xi_terminal = last->Xi.norm();
+    return true;
+  }
+
+ private:
+  static constexpr int m = M::kDim;
+  static manifolds::ComponentsOf<M> velocity(const Eigen::VectorXd& y) { return y.head<m>(); }
+  static manifolds::ComponentMatrixOf<M> auxiliary(const Eigen::VectorXd& y) { return y.tail<m * m>().reshaped(m, m); }
+  const GeneralScheme<M, L>& scheme_;
+  const GeneralSchemeTangent<M, L> tangent_;
+  const SolveMonitor* monitor_;
+  GeneralSolution<M>& solution_;
+  std::array<GeneralTrajectory<M>, 2> buffers_;  ///< the driver's two recording buffers
+};
+
+}  // namespace detail
+
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, const GeneralShootingOptions& options,
                                           const manifolds::ComponentsOf<M>& v0_guess,
@@ -127,103 +194,28 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   constexpr int m = M::kDim;
   const auto start = std::chrono::steady_clock::now();
   const GeneralScheme<M, L> scheme(problem, options.order);
-  const GeneralSchemeTangent<M, L> tangent(scheme);
   GeneralSolution<M> solution;
   solution.order = static_cast<int>(options.order);
-  const double T = problem.T, s = xi_scale(problem);
-  std::string failure;
-  using Xi = manifolds::ComponentMatrixOf<M>;
-  auto unpack = [&](const Eigen::VectorXd& x) {
-    return std::pair<manifolds::ComponentsOf<M>, Xi>(x.head<m>() / T, Xi(x.tail<m * m>().reshaped(m, m) * s));
-  };
-  // Unknowns (T v0, Xi0 / s) and residual rows (r_q, Xi_N / s): the Jacobian's columns scale by
-  // (1 / T, s) and its Xi rows by 1 / s.
-  Eigen::VectorXd scaling(m + m * m);
-  scaling << Eigen::VectorXd::Constant(m, 1 / T), Eigen::VectorXd::Constant(m * m, s);
-  // As in transported/shooting.hpp: the analytic path records every sweep, so that the result's
-  // point needs no sweep of its own, even after a stop cut a sweep short.
-  numerics::RecordedPoints<GeneralTrajectory<M>> points;
-  auto residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian) {
-    const auto [v0, Xi0] = unpack(x);
-    ++solution.sweeps;
-    GeneralTrajectory<M>* trajectory = options.analytic_jacobian ? points.start(x) : nullptr;
-    const auto begin = std::chrono::steady_clock::now();
-    const auto last = general_sweep(scheme, v0, Xi0, failure, trajectory, jacobian ? &tangent : nullptr, jacobian,
-                                    options.monitor);
-    if (!last) return false;
-    // After a stop: the result, or a recording sweep when none was recorded (a tangent-linear
-    // sweep costs about 3 plain ones or more).
-    if (options.monitor) {
-      const double share = (trajectory ? 0.25 : 1.0) / (jacobian ? 3 : 1);
-      options.monitor->reserve_after_stop(
-          std::chrono::duration_cast<std::chrono::nanoseconds>((std::chrono::steady_clock::now() - begin) * share));
-    }
-    if (!scheme.terminal_residual_defined(last->q)) {  // the cut locus of qT: r_q would be meaningless
-      failure = "q_N = " + format_value(last->q) + " is where difference(qT, .) is not defined (the cut locus of qT " +
-                "or outside the domain)";
-      return false;
-    }
-    r.resize(m + m * m);
-    r << scheme.terminal_residual(*last), last->Xi.reshaped() / s;
-    if (trajectory) points.finish(r.norm());
-    if (jacobian) {
-      *jacobian = *jacobian * scaling.asDiagonal();
-      jacobian->bottomRows(m * m) /= s;
-    }
-    return true;
-  };
-  auto residual_only = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) { return residual(x, r, nullptr); };
-  Eigen::VectorXd x0(m + m * m);
-  x0 << v0_guess * T, Xi0_guess.reshaped() / s;
-  numerics::NonlinearSolveOptions lm;
-  lm.tolerance = options.tolerance;
-  lm.max_iterations = options.max_iterations;
-  lm.no_progress_window = options.no_progress_window;
-  lm.max_initial_residual = options.max_initial_residual;
-  lm.monitor = options.monitor;
-  const numerics::NonlinearSolveReport report =
-      numerics::levenberg_marquardt(options.analytic_jacobian
-                                        ? numerics::ResidualFunction(residual)
-                                        : numerics::with_forward_difference_jacobian(residual_only, lm.fd_step),
-                                    x0, lm);
-  solution.iterations = report.iterations;
-  solution.residual_history = report.residual_history;
-  const auto [v0, Xi0] = unpack(report.x);
-  std::optional<GeneralNode<M>> last;
-  GeneralTrajectory<M>* recorded = points.find(report.x);
-  // Stopped before a sweep of the result's point completed: no trajectory, not a sweep after the stop.
-  const bool unrecorded_stop = !recorded && report.status == Status::Interrupted && options.analytic_jacobian;
-  if (recorded) {
-    solution.trajectory = std::move(*recorded);
-    last = solution.trajectory.back();
-  } else if (!unrecorded_stop) {
-    ++solution.sweeps;
-    std::string record_failure;
-    last = general_sweep(scheme, v0, Xi0, record_failure, &solution.trajectory);
-  }
-  if (last) {
-    solution.v0 = v0;
-    solution.Xi0 = Xi0;
-    solution.terminal_error = scheme.terminal_error(last->q);
-    solution.xi_terminal = last->Xi.norm();
-    solution.status = report.status;
-    if (solution.converged() && !(solution.terminal_error <= options.tolerance)) {  // never a wrong "converged"
-      solution.status = Status::NotConverged;
-    }
-  } else {
-    solution.trajectory = {};
-    solution.status = unrecorded_stop ? report.status : Status::NonFinite;
-  }
+  const double s = xi_scale(problem);
+  detail::GeneralShootingKernel<M, L> kernel(scheme, options.monitor, solution);
+  Eigen::VectorXd y0(m + m * m);
+  y0 << v0_guess, Xi0_guess.reshaped();
+  const numerics::ShootingOutcome outcome = numerics::shoot(
+      kernel,
+      {.velocity_size = m, .horizon = problem.T, .aux_scale = s, .analytic_jacobian = options.analytic_jacobian,
+       .solver = transported::detail::solver_options(options)},
+      y0);
+  solution.iterations = outcome.report.iterations;
+  solution.residual_history = outcome.report.residual_history;
+  solution.sweeps = outcome.sweeps;
+  solution.status = outcome.status;
+  const bool missed = outcome.has_trajectory && solution.converged() && !(solution.terminal_error <= options.tolerance);
+  if (missed) solution.status = Status::NotConverged;  // never a wrong "converged"
   std::ostringstream message;
   message << "general shooting (" << (options.analytic_jacobian ? "tangent-linear" : "finite-difference")
           << " Jacobian, Xi scale " << format_value(s)
-          << (scheme.uses_constant_components() ? ", constant frame components" : "") << "): " << report.message
-          << ", " << solution.sweeps << " sweeps";
-  if (!failure.empty()) message << "; last failed sweep: " << failure;
-  if (unrecorded_stop) message << "; stopped before a sweep completed: no trajectory";
-  if (report.status == Status::Converged && !solution.converged()) {
-    message << "; but q_N is " << format_value(solution.terminal_error) << " from qT: not converged";
-  }
+          << (scheme.uses_constant_components() ? ", constant frame components" : "") << "): " << outcome.summary();
+  if (missed) message << "; but q_N is " << format_value(solution.terminal_error) << " from qT: not converged";
   solution.message = message.str();
   solution.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return solution;

@@ -4,7 +4,8 @@
 // problem. Its solution satisfies the same discrete equations as the fixed point of the paper's
 // two-level scheme (xi_k from the backward recursion with xi_N = 0), without the outer loop.
 // The Jacobian is analytic (a tangent-linear sweep, one sweep per evaluation) or by forward
-// differences (1 + 2n sweeps).
+// differences (1 + 2n sweeps). The scheme is a kernel of the shooting driver
+// (numerics/shooting_driver.hpp), which the general scheme shares: the decisions are compiled once.
 //
 // Scale. The unknowns and residual are made dimensionless so that the same tolerance means the
 // same at every horizon: v0 in units of 1/T, xi in units of the curvature integral's size
@@ -12,13 +13,14 @@
 // kinetic Lagrangian the problem at horizon cT is then the same problem). The convergence test
 // is |(log(gT^{-1} g_N), xi_N / xi_scale)| <= tolerance: radians, and a relative xi.
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <sstream>
+#include <string>
 
 #include "cartan/numerics/nonlinear_solve.hpp"
-#include "cartan/numerics/recorded_points.hpp"
+#include "cartan/numerics/shooting_driver.hpp"
 #include "cartan/transported/solution.hpp"
 #include "cartan/transported/sweep.hpp"
 
@@ -95,6 +97,66 @@ bool record_solution(const TransportedScheme<G, L>& scheme, const groups::Tangen
 
 }  // namespace detail
 
+namespace detail {
+
+/// The Lie-group scheme as a kernel of the shooting driver (numerics/shooting_driver.hpp): unknowns
+/// y = (v0, xi0), residual (log(gT^{-1} g_N), xi_N), the Jacobian by the tangent-linear sweep.
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+class TransportedShootingKernel final : public numerics::ShootingKernel {
+ public:
+  TransportedShootingKernel(const TransportedScheme<G, L>& scheme, const SolveMonitor* monitor,
+                            TransportedSolution<G>& solution)
+      : scheme_(scheme), monitor_(monitor), solution_(solution) {}
+
+  numerics::SweepEnd sweep(const Eigen::VectorXd& y, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian, int slot,
+                           double after_stop, std::string& failure) override {
+    SweepOutput<G, L> out;
+    out.monitor = monitor_;
+    out.after_stop = after_stop;
+    out.trajectory = slot >= 0 ? &buffers_[static_cast<std::size_t>(slot)] : nullptr;
+    if (!forward_sweep(scheme_, groups::TangentOf<G>(y.head<n>()), groups::CovectorOf<G>(y.tail<n>()), nullptr,
+                       jacobian != nullptr ? 2 * n : 0, out)) {
+      failure = out.failure;
+      return numerics::SweepEnd::Failed;
+    }
+    const groups::TangentOf<G> rg = scheme_.terminal_residual(out.last);
+    r.resize(2 * n);
+    r << rg, out.last.xi;
+    if (jacobian != nullptr) {
+      jacobian->resize(2 * n, 2 * n);
+      jacobian->topRows(n) = scheme_.terminal_residual_tangent(rg, *out.tangent);
+      jacobian->bottomRows(n) = out.tangent->xi;
+    }
+    return numerics::SweepEnd::Done;
+  }
+
+  bool record_result(const Eigen::VectorXd& y, int slot) override {
+    // record_solution counts its sweep in solution_.sweeps; solve_shooting then takes the driver's count.
+    return record_solution(scheme_, groups::TangentOf<G>(y.head<n>()), groups::CovectorOf<G>(y.tail<n>()), nullptr,
+                           solution_, slot >= 0 ? &buffers_[static_cast<std::size_t>(slot)] : nullptr);
+  }
+
+ private:
+  static constexpr int n = G::kDim;
+  const TransportedScheme<G, L>& scheme_;
+  const SolveMonitor* monitor_;
+  TransportedSolution<G>& solution_;
+  std::array<TransportedTrajectory<G>, 2> buffers_;  ///< the driver's two recording buffers
+};
+
+/// Levenberg–Marquardt's options for a shooting's.
+inline numerics::NonlinearSolveOptions solver_options(const ShootingOptions& options) {
+  numerics::NonlinearSolveOptions lm;
+  lm.tolerance = options.tolerance;
+  lm.max_iterations = options.max_iterations;
+  lm.no_progress_window = options.no_progress_window;
+  lm.max_initial_residual = options.max_initial_residual;
+  lm.monitor = options.monitor;
+  return lm;
+}
+
+}  // namespace detail
+
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, const ShootingOptions& options,
                                       const groups::TangentOf<G>& v0_guess, const groups::CovectorOf<G>& xi0_guess) {
@@ -108,98 +170,22 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   TransportedSolution<G> solution;
   solution.method = Method::Shooting;
   solution.order = static_cast<int>(options.order);
-  std::string failure;
-  // Dimensionless unknowns x = (T v0, xi0 / s) and residual (r_g, xi_N / s) (header comment).
-  const double T = problem.T, s = xi_scale(problem);
-
-  auto unpack = [&](const Eigen::VectorXd& x) {
-    return std::pair<groups::TangentOf<G>, groups::CovectorOf<G>>(x.head<n>() / T, x.tail<n>() * s);
-  };
-  // The analytic path records every sweep (numerics/recorded_points.hpp): the result's point, the
-  // last accepted one, then needs no sweep of its own, even after a stop cut a sweep short.
-  numerics::RecordedPoints<TransportedTrajectory<G>> points;
-  // After a stop comes the result: nothing more where the sweep recorded (a stopped result has no
-  // action, solve.hpp), a recording sweep where it did not (the finite-difference path).
-  auto reserve = [&](std::chrono::steady_clock::time_point begin, double share) {
-    if (options.monitor) {
-      options.monitor->reserve_after_stop(
-          std::chrono::duration_cast<std::chrono::nanoseconds>((std::chrono::steady_clock::now() - begin) * share));
-    }
-  };
-  auto residual_only = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, TransportedTrajectory<G>* trajectory = nullptr) {
-    const auto [v0, xi0] = unpack(x);
-    SweepOutput<G, L> out;
-    out.trajectory = trajectory;
-    out.monitor = options.monitor;
-    ++solution.sweeps;
-    const auto begin = std::chrono::steady_clock::now();
-    if (!forward_sweep(scheme, v0, xi0, nullptr, 0, out)) {
-      failure = out.failure;
-      return false;
-    }
-    reserve(begin, trajectory ? 0.0 : 1.0);
-    r.resize(2 * n);
-    r << scheme.terminal_residual(out.last), out.last.xi / s;
-    return true;
-  };
-  numerics::ResidualFunction f;
-  if (options.analytic_jacobian) {
-    f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
-      TransportedTrajectory<G>* trajectory = points.start(x);
-      if (jac == nullptr) {
-        if (!residual_only(x, r, trajectory)) return false;
-        points.finish(r.norm());
-        return true;
-      }
-      const auto [v0, xi0] = unpack(x);
-      SweepOutput<G, L> out;
-      out.monitor = options.monitor;
-      out.trajectory = trajectory;
-      ++solution.sweeps;
-      const auto begin = std::chrono::steady_clock::now();
-      if (!forward_sweep(scheme, v0, xi0, nullptr, 2 * n, out)) {
-        failure = out.failure;
-        return false;
-      }
-      reserve(begin, 0.0);  // it recorded: nothing follows a stop
-      const groups::TangentOf<G> rg = scheme.terminal_residual(out.last);
-      r.resize(2 * n);
-      r << rg, out.last.xi / s;
-      points.finish(r.norm());
-      // Chain rule for the scaled unknowns: columns for v0 / T and xi0 s; rows of xi_N / s.
-      jac->resize(2 * n, 2 * n);
-      jac->topRows(n) = scheme.terminal_residual_tangent(rg, *out.tangent);
-      jac->bottomRows(n) = out.tangent->xi / s;
-      jac->leftCols(n) /= T;
-      jac->rightCols(n) *= s;
-      return true;
-    };
-  } else {
-    f = numerics::with_forward_difference_jacobian(
-        [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) { return residual_only(x, r); }, 1e-7);
-  }
-  Eigen::VectorXd x0(2 * n);
-  x0 << v0_guess * T, xi0_guess / s;
-  const numerics::NonlinearSolveReport report =
-      numerics::levenberg_marquardt(f, x0, {.tolerance = options.tolerance, .max_iterations = options.max_iterations,
-                                  .no_progress_window = options.no_progress_window,
-                                  .max_initial_residual = options.max_initial_residual, .monitor = options.monitor});
-  solution.inner_iterations = report.iterations;
-  solution.residual_history = report.residual_history;
-  const auto [v0, xi0] = unpack(report.x);
-  TransportedTrajectory<G>* recorded = points.find(report.x);
-  // Stopped before a sweep of the result's point completed: no trajectory (as after a non-finite
-  // sweep), not a sweep after the stop.
-  const bool unrecorded_stop = !recorded && report.status == Status::Interrupted && options.analytic_jacobian;
-  const bool ok = !unrecorded_stop && detail::record_solution(scheme, v0, xi0, nullptr, solution, recorded);
-  solution.status = ok || unrecorded_stop ? report.status : Status::NonFinite;
-  std::ostringstream message;
-  message << "shooting (" << (options.analytic_jacobian ? "analytic" : "finite-difference")
-          << " Jacobian, xi scale " << format_value(s) << "): " << report.message << ", " << solution.sweeps
-          << " sweeps";
-  if (!failure.empty()) message << "; last failed sweep: " << failure;
-  if (unrecorded_stop) message << "; stopped before a sweep completed: no trajectory";
-  solution.message = message.str();
+  // Dimensionless unknowns (T v0, xi0 / s) and residual (r_g, xi_N / s) (header comment).
+  const double s = xi_scale(problem);
+  detail::TransportedShootingKernel<G, L> kernel(scheme, options.monitor, solution);
+  Eigen::VectorXd y0(2 * n);
+  y0 << v0_guess, xi0_guess;
+  const numerics::ShootingOutcome outcome =
+      numerics::shoot(kernel,
+                      {.velocity_size = n, .horizon = problem.T, .aux_scale = s,
+                       .analytic_jacobian = options.analytic_jacobian, .solver = detail::solver_options(options)},
+                      y0);
+  solution.inner_iterations = outcome.report.iterations;
+  solution.residual_history = outcome.report.residual_history;
+  solution.sweeps = outcome.sweeps;
+  solution.status = outcome.status;
+  solution.message = std::string("shooting (") + (options.analytic_jacobian ? "analytic" : "finite-difference") +
+                     " Jacobian, xi scale " + format_value(s) + "): " + outcome.summary();
   solution.solve_time_s = detail::seconds_since(start);
   return solution;
 }

@@ -51,12 +51,12 @@ bool sweep_segment(const TransportedScheme<G, L>& scheme, SchemeNode<G> node,
       out.trajectory->push(nodes[0]);
     }
     std::size_t current = 0;
+    // Until a sweep is timed, what follows a stop is projected: out.after_stop (the shooting
+    // driver's share), else a recording sweep into fresh storage, about 2 plain sweeps or 2/3 of a
+    // tangent-linear one (its pages are new; bench/README.md, "Interruption"; a stopped result has
+    // no action, solve.hpp), or nothing where the solver records its sweeps.
+    const double after_stop = out.after_stop >= 0 ? out.after_stop : out.trajectory ? 0.0 : tangent ? 2.0 / 3 : 2.0;
     for (int k = first; k < last; ++k) {
-      // Until a sweep is timed, what follows a stop is projected: a recording sweep, 1 plain sweep
-      // or a third of a tangent-linear one (bench/README.md, "Interruption"; a stopped result has
-      // no action, solve.hpp); nothing where the solver records its sweeps (shooting.hpp: a stop
-      // before one completed leaves no trajectory rather than sweeping again).
-      const double after_stop = out.after_stop >= 0 ? out.after_stop : out.trajectory ? 0.0 : tangent ? 1.0 / 3 : 1.0;
       if (SolveMonitor::stop_pending_at(out.monitor, k - first, scheme.problem().N, begin, after_stop)) {
         out.failure = SolveMonitor::stopped_message(k);
         return false;
