@@ -52,7 +52,7 @@ const char* non_negative(double x) { return x >= 0 ? nullptr : "must be non-nega
 const char* non_negative_finite(double x) {
   return std::isfinite(x) && x >= 0 ? nullptr : "must be a non-negative number of seconds (0: no limit)";
 }
-const char* one_or_two(double x) { return x == 1 || x == 2 ? nullptr : "must be 1 or 2"; }
+const char* one_or_two(double x) { return is_scheme_order(x) ? nullptr : kSchemeOrderRule; }
 
 std::vector<ProblemField> make_fields() {
   using S = ProblemSpec;

@@ -94,8 +94,8 @@ ResultFile read_sphere(const nlohmann::json& j, ResultFile& r) {
     if (!field.echoed || field.scope == ProblemField::Scope::Group) continue;
     read_field(r.problem, field, require_key(j, field.key, kResultWhere, kResultFile), kResultWhere);
   }
-  if (r.order != 1 && r.order != 2 && r.order != transported::kCollocationOrder) {
-    bad_result("order", std::to_string(r.order), "must be 1 or 2 (the general solver's schemes) or 4 (collocation)");
+  if (!is_result_order(r.order)) {
+    bad_result("order", std::to_string(r.order), kResultOrderRule);
   }
   validate(r.problem);
   r.t = times(require_key(j, "t", kResultWhere, kResultFile), r.problem.T);
@@ -147,7 +147,7 @@ ResultFile read(const nlohmann::json& j) {
   const auto read_method_and_order = [&] {
     r.method = one_of(require_key(j, "method", kResultWhere, kResultFile), "method", enum_words<transported::Method>());
     r.order = json_integer(require_key(j, "order", kResultWhere, kResultFile), kResultWhere, "order");
-    if (r.order != 1 && r.order != 2 && r.order != 4) bad_result("order", std::to_string(r.order), "must be 1, 2 or 4");
+    if (!is_result_order(r.order)) bad_result("order", std::to_string(r.order), kResultOrderRule);
   };
   if (j.contains("manifold")) {
     read_method_and_order();

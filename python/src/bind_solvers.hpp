@@ -43,8 +43,7 @@ struct SolveRequest {
     transported::SolveOptions o;
     o.method = parse_enum<transported::Method>(method, "cartan.solve");
     o.continuation = parse_enum<transported::Continuation>(continuation, "cartan.solve");
-    if (order != 1 && order != 2) throw_invalid("cartan.solve", "order", std::to_string(order), "must be 1 or 2");
-    o.order = order == 2 ? transported::SchemeOrder::Second : transported::SchemeOrder::First;
+    o.order = scheme_order(order, "cartan.solve");
     o.tol = tol;
     o.max_iterations = max_iterations;
     o.segments = segments;

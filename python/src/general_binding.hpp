@@ -317,8 +317,7 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   transported::SolveOptions options;
   options.method = parse_enum<transported::Method>(r.method, where);
   options.continuation = parse_enum<transported::Continuation>(r.continuation, where);
-  if (r.order != 1 && r.order != 2) throw_invalid(where, "order", std::to_string(r.order), "must be 1 or 2");
-  options.order = r.order == 2 ? transported::SchemeOrder::Second : transported::SchemeOrder::First;
+  options.order = scheme_order(r.order, where);
   options.tol = r.tol;
   options.max_iterations = r.max_iterations;
   options.samples = r.samples;

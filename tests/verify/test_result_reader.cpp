@@ -61,7 +61,7 @@ const BadCase kBadCases[] = {
     {"unknown group", [] { return with("group", "se4"); }, "group = \"se4\" is not one of: so3, heisenberg, se2, se3"},
     {"model of another group", [] { json j = with("group", "heisenberg"); return j; }, "model = \"free-rigid-body\""},
     {"unknown method", [] { return with("method", "magic"); }, "method = \"magic\""},
-    {"order 3", [] { return with("order", 3); }, "order = 3 must be 1, 2 or 4"},
+    {"order 3", [] { return with("order", 3); }, "order = 3 must be 1 or 2 (the schemes) or 4 (collocation)"},
     {"fractional order", [] { return with("order", 1.5); }, "order = 1.5 must be an integer"},
     {"lambda a string", [] { return with("lambda", "0.5"); }, "lambda = \"0.5\" must be a number"},
     {"T negative", [] { return with("T", -2.0); }, "T = -2 must be positive"},

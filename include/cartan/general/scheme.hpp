@@ -25,7 +25,7 @@
 
 namespace cartan::general {
 
-using transported::SchemeOrder;
+using ::cartan::SchemeOrder;  // scheme_order.hpp: the vocabulary of both stacks
 
 template <manifolds::ManifoldWithConnection M>
 struct GeneralNode {
@@ -97,9 +97,7 @@ class GeneralScheme {
   GeneralScheme(const GeneralProblem<M, L>& problem, SchemeOrder order)
       : problem_(problem), order_(order), dt_(problem.step()), frame0_(problem.initial_frame()) {
     problem.validate();
-    if (order != SchemeOrder::First && order != SchemeOrder::Second) {
-      throw_invalid("GeneralScheme", "order", std::to_string(static_cast<int>(order)), "must be 1 or 2");
-    }
+    require_scheme_order(order, "GeneralScheme");
     if constexpr (manifolds::ParallelTorsionCurvature<M>) {
       if (problem.manifold.has_parallel_torsion_and_curvature()) {
         torsion_ = manifolds::torsion_components(problem.manifold, problem.q0, frame0_);

@@ -180,9 +180,7 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
                               Status status = Status::Converged) {
   problem.validate();
   constexpr std::string_view where = "verify_general";
-  if (order != 1 && order != 2 && order != transported::kCollocationOrder) {
-    throw_invalid(where, "order", std::to_string(order), "must be 1 or 2 (the schemes) or 4 (collocation)");
-  }
+  require_result_order(order, where);
   if (!(tol > 0) || !std::isfinite(tol)) throw_invalid(where, "tol", format_value(tol), "must be positive and finite");
   const std::size_t n = x.t.size();
   if (n < 3 || x.q.size() != n || x.v.size() != n || x.mu.size() != n || x.Xi.size() != n) {

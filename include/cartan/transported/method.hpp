@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "cartan/enum_names.hpp"
+#include "cartan/scheme_order.hpp"
 
 namespace cartan::transported {
 
@@ -28,8 +29,8 @@ enum class Continuation { None, T, Lambda };
 inline constexpr double kDefaultTol = 1e-10;
 inline constexpr int kDefaultMaxIterations = 200;
 
-/// The collocation scheme's order (Lobatto IIIA, numerics/collocation.hpp), reported as `order`.
-inline constexpr int kCollocationOrder = 4;
+/// The collocation scheme's order (scheme_order.hpp), reported as `order`.
+using ::cartan::kCollocationOrder;
 /// The variational integrator's order (variational.hpp; measured in tests/transported/test_variational.cpp).
 inline constexpr int kVariationalOrder = 2;
 

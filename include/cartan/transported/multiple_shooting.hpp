@@ -55,9 +55,7 @@ struct MultipleShootingOptions {
     if (recentre_every < 1) {
       throw_invalid("MultipleShootingOptions", "recentre_every", std::to_string(recentre_every), "must be at least 1");
     }
-    if (order != SchemeOrder::First && order != SchemeOrder::Second) {
-      throw_invalid("MultipleShootingOptions", "order", std::to_string(static_cast<int>(order)), "must be 1 or 2");
-    }
+    require_scheme_order(order, "MultipleShootingOptions");
   }
 };
 

@@ -29,11 +29,12 @@
 
 #include "cartan/groups/exp_jacobian.hpp"
 #include "cartan/mechanics/lagrangian_hessian.hpp"
+#include "cartan/scheme_order.hpp"
 #include "cartan/transported/problem.hpp"
 
 namespace cartan::transported {
 
-enum class SchemeOrder { First = 1, Second = 2 };
+using ::cartan::SchemeOrder;  // scheme_order.hpp: the vocabulary of both stacks
 
 template <groups::LieGroup G>
 struct SchemeNode {
@@ -115,9 +116,7 @@ class TransportedScheme {
       : problem_(problem), order_(order), dt_(problem.step()), c_torsion_(2 * problem.lambda - 1),
         c_curvature_(problem.lambda * (1 - problem.lambda)) {
     problem.validate();
-    if (order != SchemeOrder::First && order != SchemeOrder::Second) {
-      throw_invalid("TransportedScheme", "order", std::to_string(static_cast<int>(order)), "must be 1 or 2");
-    }
+    require_scheme_order(order, "TransportedScheme");
     if constexpr (Structure::constant_momentum_hessian) {
       momentum_v_inverse_ = mechanics::lagrangian_hessian<G>(problem.lagrangian, 0.0, problem.g0, Tangent::Zero())
                                 .momentum_v.inverse();

@@ -45,9 +45,7 @@ struct SolveOptions {
     require_finite(tol, where, "tol");
     require_reachable_tolerance(tol, where);  // every method refuses what none can reach
     if (max_iterations < 1) throw_invalid(where, "max_iterations", std::to_string(max_iterations), "must be at least 1");
-    if (order != SchemeOrder::First && order != SchemeOrder::Second) {
-      throw_invalid(where, "order", std::to_string(static_cast<int>(order)), "must be 1 or 2");
-    }
+    require_scheme_order(order, where);
     const std::string m = std::string(to_string(method));
     if (order != SchemeOrder::First && method == Method::Variational) {
       throw_invalid(where, "order", std::to_string(static_cast<int>(order)),
