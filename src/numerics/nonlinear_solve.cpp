@@ -142,7 +142,7 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
   auto iteration_begin = std::chrono::steady_clock::now();
   while (true) {
     const auto now = std::chrono::steady_clock::now();
-    const auto last_iteration = now - iteration_begin;  // the next one is begun only if it can end in time
+    const auto last_iteration = now - iteration_begin;  // without evaluations_stop, the next one is begun only if it can end in time
     iteration_begin = now;
     if (report.residual_norm <= options.tolerance) {
       finish(report, Status::Converged, "");
@@ -154,7 +154,9 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
     }
     if (options.monitor != nullptr) {
       options.monitor->report(report.iterations, report.residual_norm);
-      if (options.monitor->stop_requested_before(last_iteration)) {
+      const bool stopping = options.evaluations_stop ? options.monitor->stop_requested()
+                                                     : options.monitor->stop_requested_before(last_iteration);
+      if (stopping) {
         finish(report, Status::Interrupted, "stop requested");
         return report;
       }

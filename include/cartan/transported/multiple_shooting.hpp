@@ -312,7 +312,7 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
   while (solution.inner_iterations < options.max_iterations) {
     const int budget = std::min(options.recentre_every, options.max_iterations - solution.inner_iterations);
     report = numerics::levenberg_marquardt(f, *x, {.tolerance = lifted_tolerance, .max_iterations = budget,
-                                         .monitor = options.monitor});
+                                         .monitor = options.monitor, .evaluations_stop = true});  // segments poll
     solution.inner_iterations += report.iterations;
     const auto& h = report.residual_history;
     solution.residual_history.insert(solution.residual_history.end(), h.begin() + (rounds > 0 && !h.empty()), h.end());

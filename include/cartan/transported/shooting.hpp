@@ -152,6 +152,7 @@ inline numerics::NonlinearSolveOptions solver_options(const ShootingOptions& opt
   lm.no_progress_window = options.no_progress_window;
   lm.max_initial_residual = options.max_initial_residual;
   lm.monitor = options.monitor;
+  lm.evaluations_stop = true;  // both kernels' sweeps poll the monitor
   return lm;
 }
 

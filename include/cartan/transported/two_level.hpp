@@ -88,7 +88,7 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
     solution.outer_iterations = outer + 1;
     // Steps 2-3: inner shooting for v0 with the current {xi_k}.
     report = numerics::levenberg_marquardt(inner, v0, {.tolerance = options.inner_tolerance, .max_iterations = options.max_inner,
-                                             .monitor = options.monitor});
+                                             .monitor = options.monitor, .evaluations_stop = true});  // sweeps poll
     solution.inner_iterations += report.iterations;
     v0 = report.x;
     if (report.status != Status::Converged) {
