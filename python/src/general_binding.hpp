@@ -273,32 +273,30 @@ inline py::object field_of(const py::object& object, const char* name, const cha
   return object.attr(name);
 }
 
-/// The trajectory (t, q, frame, v, mu, Xi) of a GeneralSolveResult-like object, each entry checked
-/// (points valid on the manifold, finite components) with errors naming `what`.
+/// The trajectory (t, q, frame, v, mu, Xi) of a GeneralSolveResult-like object, each field read as
+/// a whole array (to_eigen_list: one shape check, no Python object per row) and each point checked
+/// on the manifold, with errors naming `what`.
 template <class M>
 general::GeneralTrajectory<M> trajectory_of(const M& manifold, const py::object& object, const char* where,
                                             const char* what) {
-  const auto field = [&](const char* name) -> py::sequence { return field_of(object, name, where, what); };
-  const py::sequence times = field("t"), q = field("q"), frames = field("frame"), v = field("v"), mu = field("mu"),
-                     Xi = field("Xi");
+  // Built by append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
+  const auto name = [what](const char* field_name) { return std::string(what).append(".").append(field_name); };
+  const auto field = [&](const char* field_name) { return field_of(object, field_name, where, what); };
   general::GeneralTrajectory<M> x;
-  for (const auto& time : times) x.t.push_back(number_arg<double>(time, where, "t"));
+  const Array t = as_array(field("t"), where, name("t"));
+  if (t.ndim() != 1) throw_invalid(where, name("t"), "array of shape " + shape_text(t), "must be one-dimensional");
+  x.t.assign(t.data(), t.data() + t.shape(0));
+  x.q = to_eigen_list<PointOf<M>>(field("q"), where, name("q"));
+  x.frame = to_eigen_list<FrameOf<M>>(field("frame"), where, name("frame"));
+  x.v = to_eigen_list<ComponentsOf<M>>(field("v"), where, name("v"));
+  x.mu = to_eigen_list<ComponentsOf<M>>(field("mu"), where, name("mu"));
+  x.Xi = to_eigen_list<ComponentMatrixOf<M>>(field("Xi"), where, name("Xi"));
   const std::size_t n = x.t.size();
-  if (py::len(q) != n || py::len(frames) != n || py::len(v) != n || py::len(mu) != n || py::len(Xi) != n) {
+  if (x.q.size() != n || x.frame.size() != n || x.v.size() != n || x.mu.size() != n || x.Xi.size() != n) {
     throw_invalid(where, what, "(" + std::to_string(n) + " times)", "needs q, frame, v, mu and Xi at every time");
   }
-  // Built by append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
-  const auto name = [what](const char* field_name, std::size_t k) {
-    std::string s(what);
-    s.append(".").append(field_name).append("[").append(std::to_string(k)).append("]");
-    return s;
-  };
   for (std::size_t k = 0; k < n; ++k) {
-    x.q.push_back(point_arg(manifold, q[k], where, name("q", k).c_str()));
-    x.frame.push_back(to_eigen<FrameOf<M>>(frames[k], where, name("frame", k)));
-    x.v.push_back(to_eigen<ComponentsOf<M>>(v[k], where, name("v", k)));
-    x.mu.push_back(to_eigen<ComponentsOf<M>>(mu[k], where, name("mu", k)));
-    x.Xi.push_back(to_eigen<ComponentMatrixOf<M>>(Xi[k], where, name("Xi", k)));
+    manifold.validate(x.q[k], name("q").append("[").append(std::to_string(k)).append("]"));
   }
   return x;
 }
