@@ -1,10 +1,16 @@
 # Warning and sanitizer flags shared by every cartan target.
+# cartan_set_warnings(<target> [NOT_INSTRUMENTED]): with CARTAN_SANITIZE, the target's own code is
+# compiled with AddressSanitizer + UndefinedBehaviorSanitizer unless NOT_INSTRUMENTED, and it is
+# always linked with their runtime (the library it links is instrumented).
 function(cartan_set_warnings target)
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "NOT_INSTRUMENTED" "" "")
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
                          -Wno-sign-conversion $<$<BOOL:${CARTAN_WERROR}>:-Werror>)
   if(CARTAN_SANITIZE)
-    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer
-                           -fno-sanitize-recover=all)
+    if(NOT ARG_NOT_INSTRUMENTED)
+      target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer
+                             -fno-sanitize-recover=all)
+    endif()
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
 endfunction()
