@@ -237,12 +237,4 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
   }
 }
 
-double singular_value_ratio(const Eigen::MatrixXd& a) {
-  if (a.size() == 0 || !a.allFinite()) return std::numeric_limits<double>::quiet_NaN();
-  // One-sided Jacobi: singular values to high relative accuracy; compiles in a third of the time
-  // of BDCSVD (bench/README.md "Build time"), and a diagnostic's matrices are small.
-  const Eigen::VectorXd sigma = Eigen::JacobiSVD<Eigen::MatrixXd>(a).singularValues();
-  return sigma(0) > 0 ? sigma(sigma.size() - 1) / sigma(0) : 0.0;
-}
-
 }  // namespace cartan::numerics

@@ -15,6 +15,7 @@
 #include "cartan/errors.hpp"
 #include "cartan/general/lagrangian.hpp"
 #include "cartan/manifolds/geometry.hpp"
+#include "cartan/numerics/spectrum.hpp"
 
 namespace cartan::general {
 
@@ -48,9 +49,7 @@ struct GeneralProblem {
     if (!(size > 0) || (in_span - *frame0).cwiseAbs().maxCoeff() > 1e-9 * size) {
       throw_invalid("GeneralProblem", "frame0", format_value(*frame0), "must consist of tangent vectors at q0");
     }
-    const Eigen::JacobiSVD<manifolds::FrameOf<M>> svd(*frame0);
-    const auto sigma = svd.singularValues();
-    if (!(sigma[M::kDim - 1] > 1e-10 * sigma[0])) {
+    if (!(numerics::singular_value_ratio(*frame0) > 1e-10)) {
       throw_invalid("GeneralProblem", "frame0", format_value(*frame0), "must be a basis of the tangent space");
     }
   }

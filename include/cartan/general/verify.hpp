@@ -15,12 +15,12 @@
 //   * stationarity of the discrete transported action (action.hpp) along smooth endpoint-fixed
 //     variations.
 
-#include <Eigen/Eigenvalues>
 #include <numbers>
 #include <random>
 
 #include "cartan/general/action.hpp"
 #include "cartan/general/shooting.hpp"
+#include "cartan/numerics/spectrum.hpp"
 #include "cartan/verify/report.hpp"
 
 namespace cartan::general {
@@ -89,7 +89,7 @@ class GeneralChecks {
                        p_.lagrangian.momentum(x_.t[k], x_.q[k], Components(x_.v[k] - dv))) / (2 * s);
       }
       const manifolds::ComponentMatrixOf<M> sym = (mass + mass.transpose()) / 2;
-      const double smallest = Eigen::SelfAdjointEigenSolver<manifolds::ComponentMatrixOf<M>>(sym, Eigen::EigenvaluesOnly).eigenvalues()[0];
+      const double smallest = numerics::smallest_symmetric_eigenvalue(sym);
       if (smallest > 0) stiffness = std::max(stiffness, force.norm() / smallest);
     }
     return speed + std::sqrt(stiffness);

@@ -26,6 +26,7 @@
 
 #include "cartan/errors.hpp"
 #include "cartan/groups/group.hpp"
+#include "cartan/numerics/spectrum.hpp"
 
 namespace cartan::groups {
 
@@ -163,9 +164,9 @@ struct MatrixLieGroup {
     for (int i = 0; i < kDim; ++i) {
       for (int j = 0; j < kDim; ++j) a.gram(i, j) = a.basis[i].cwiseProduct(a.basis[j]).sum();
     }
-    const Eigen::SelfAdjointEigenSolver<AlgebraMatrix> spectrum(a.gram, Eigen::EigenvaluesOnly);
-    const double largest = spectrum.eigenvalues().maxCoeff();
-    const double smallest = spectrum.eigenvalues().minCoeff();
+    const Eigen::VectorXd spectrum = numerics::symmetric_eigenvalues(a.gram);
+    const double largest = spectrum.maxCoeff();
+    const double smallest = spectrum.minCoeff();
     if (!(smallest * kMaxGramCondition > largest)) {
       throw_invalid(where, "Gram matrix of the basis", format_value(a.gram),
                     "is singular or ill-conditioned (eigenvalues " + format_value(smallest) + " .. " +

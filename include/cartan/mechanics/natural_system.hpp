@@ -11,7 +11,6 @@
 // differences of dV are used when it is missing).
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -20,6 +19,7 @@
 #include "cartan/errors.hpp"
 #include "cartan/groups/group.hpp"
 #include "cartan/mechanics/lagrangian_hessian.hpp"
+#include "cartan/numerics/spectrum.hpp"
 
 namespace cartan::mechanics {
 
@@ -72,7 +72,7 @@ class Inertia {
                     "is not symmetric: max|I - I^T| = " + format_value(asymmetry));
     }
     matrix_ = (inertia + inertia.transpose()) / 2;
-    const Vector eigenvalues = Eigen::SelfAdjointEigenSolver<Matrix>(matrix_, Eigen::EigenvaluesOnly).eigenvalues();
+    const Eigen::VectorXd eigenvalues = numerics::symmetric_eigenvalues(matrix_);
     if (!(eigenvalues.minCoeff() > 1e-14 * eigenvalues.maxCoeff()) || !(eigenvalues.maxCoeff() > 0)) {
       throw_invalid(where, "inertia", format_value(inertia),
                     "is not positive definite: eigenvalues " + format_value(eigenvalues));

@@ -80,9 +80,4 @@ ResidualFunction with_forward_difference_jacobian(
 NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen::VectorXd& x0,
                                          const NonlinearSolveOptions& options = {});
 
-/// sigma_min / sigma_max of `a` (0 when singular; NaN for an empty or non-finite matrix), a
-/// diagnostic. Out of line so that the dynamic-size SVD is compiled once, in the library, not in
-/// every unit that includes a solver (bench/README.md "Build time").
-double singular_value_ratio(const Eigen::MatrixXd& a);
-
 }  // namespace cartan::numerics

@@ -29,6 +29,7 @@
 #include <optional>
 #include <sstream>
 
+#include "cartan/numerics/spectrum.hpp"
 #include "cartan/transported/shooting.hpp"
 
 namespace cartan::transported {

@@ -14,7 +14,6 @@
 // Each check returns a dimensionless figure (a relative size); the thresholds come from the
 // scheme's order and the resolution h * omega (discretisation_threshold).
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -23,6 +22,7 @@
 #include <vector>
 
 #include "cartan/mechanics/lagrangian_hessian.hpp"
+#include "cartan/numerics/spectrum.hpp"
 #include "cartan/transported/scheme.hpp"
 #include "cartan/transported/action.hpp"
 #include "cartan/transported/along.hpp"
@@ -109,7 +109,7 @@ class TrajectoryChecks {
       speed = std::max(speed, (G::Ad(transport_[k]) * x_.v[k]).norm());
       const mechanics::LagrangianHessian<G> hess = mechanics::lagrangian_hessian<G>(l_, x_.t[k], x_.g[k], x_.v[k]);
       const groups::AlgebraMatrixOf<G> mass = (hess.momentum_v + hess.momentum_v.transpose()) / 2;
-      const double smallest = Eigen::SelfAdjointEigenSolver<groups::AlgebraMatrixOf<G>>(mass, Eigen::EigenvaluesOnly).eigenvalues()[0];
+      const double smallest = numerics::smallest_symmetric_eigenvalue(mass);
       if (smallest > 0) stiffness = std::max(stiffness, hess.gradient_g.norm() / smallest);
     }
     return speed + std::sqrt(stiffness);
