@@ -7,7 +7,8 @@
 namespace cartan::numerics {
 namespace {
 
-/// The eigenvalues of `a` by Eigen's self-adjoint solver, fixed-size for orders 1 to 6.
+/// The eigenvalues of `a` by Eigen's self-adjoint solver at the fixed size n: the orders of the
+/// shipped manifolds and groups (2, 3 and 6); other orders take the dynamic-size path.
 template <int n>
 Eigen::VectorXd eigenvalues_of_order(const Eigen::Ref<const Eigen::MatrixXd>& a) {
   using Matrix = Eigen::Matrix<double, n, n>;
@@ -25,11 +26,8 @@ double smallest_of_order(const Eigen::Ref<const Eigen::MatrixXd>& a) {
 Eigen::VectorXd symmetric_eigenvalues(const Eigen::Ref<const Eigen::MatrixXd>& a) {
   switch (a.rows()) {
     case 0: return Eigen::VectorXd();
-    case 1: return eigenvalues_of_order<1>(a);
     case 2: return eigenvalues_of_order<2>(a);
     case 3: return eigenvalues_of_order<3>(a);
-    case 4: return eigenvalues_of_order<4>(a);
-    case 5: return eigenvalues_of_order<5>(a);
     case 6: return eigenvalues_of_order<6>(a);
     default: return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(a, Eigen::EigenvaluesOnly).eigenvalues();
   }
@@ -38,11 +36,8 @@ Eigen::VectorXd symmetric_eigenvalues(const Eigen::Ref<const Eigen::MatrixXd>& a
 double smallest_symmetric_eigenvalue(const Eigen::Ref<const Eigen::MatrixXd>& a) {
   switch (a.rows()) {
     case 0: return std::numeric_limits<double>::quiet_NaN();
-    case 1: return smallest_of_order<1>(a);
     case 2: return smallest_of_order<2>(a);
     case 3: return smallest_of_order<3>(a);
-    case 4: return smallest_of_order<4>(a);
-    case 5: return smallest_of_order<5>(a);
     case 6: return smallest_of_order<6>(a);
     default: return symmetric_eigenvalues(a)[0];
   }

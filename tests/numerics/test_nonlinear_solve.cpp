@@ -162,18 +162,5 @@ TEST(LevenbergMarquardt, RejectsBadInput) {
   expect_invalid([&] { levenberg_marquardt(ResidualFunction{}, start); }, "f is empty");
 }
 
-// The conditioning diagnostic of multiple shooting: sigma_min / sigma_max, exactly for a rotated
-// diagonal (orthogonal factors change no singular value; 1e-15: rounding of a 3 x 3 SVD).
-TEST(SingularValueRatio, ClosedFormsAndDegenerateInput) {
-  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-  const Eigen::MatrixXd a = rotation * Eigen::Vector3d(4, 1, 2).asDiagonal() * rotation.transpose();
-  EXPECT_NEAR(singular_value_ratio(a), 0.25, 1e-15);
-  EXPECT_EQ(singular_value_ratio(Eigen::MatrixXd::Zero(2, 2)), 0.0);
-  EXPECT_TRUE(std::isnan(singular_value_ratio(Eigen::MatrixXd(0, 0))));
-  Eigen::MatrixXd bad = a;
-  bad(1, 1) = std::nan("");
-  EXPECT_TRUE(std::isnan(singular_value_ratio(bad)));
-}
-
 }  // namespace
 }  // namespace cartan::numerics

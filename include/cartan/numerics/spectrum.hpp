@@ -2,8 +2,8 @@
 // Spectra of small matrices, out of line: the eigen- and singular-value decompositions are
 // compiled once, in the library, instead of in every unit that validates an inertia, a frame or a
 // Lie algebra's basis, or verifies a solution (each fixed-size decomposition costs a unit a few
-// seconds of compile time; bench/README.md "Build time"). Matrices of order 1 to 6 take a
-// fixed-size path without allocation; larger ones a dynamic-size path.
+// seconds of compile time; bench/README.md "Build time"). Matrices of order 2, 3 and 6 (the shipped
+// manifolds and groups) take a fixed-size path without allocation, others a dynamic-size one.
 
 #include <Eigen/Core>
 
