@@ -393,8 +393,9 @@ class GeneralSolveResult:
     v0, Xi0: the initial values; terminal_error: how far q_N is from qT, ``|difference(qT, q_N)|`` where
     that is a logarithm and the distance of the stored points at the cut locus (never 0 there);
     xi_terminal = ``|Xi_N|``;
-    iterations (Levenberg-Marquardt or collocation's Newton), sweeps (runs of the scheme; collocation:
-    Jacobian evaluations); residual_history; solve_time: seconds in the solver; mesh_size,
+    iterations (Levenberg-Marquardt or collocation's Newton; on the Lie-group kernel of
+    :func:`solve_general`, summed over the stages of a continuation in T), sweeps (runs of the scheme;
+    collocation: Jacobian evaluations); residual_history; solve_time: seconds in the solver; mesh_size,
     max_residual: collocation only (else None; order is then 4).
     """
     status: str
@@ -468,8 +469,13 @@ def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, poten
     (with continuation "none" or "T") or "collocation" of the continuous system (fourth order,
     adaptive mesh; from `guess` or the geodesic guess, and with continuation "T" from the order-2
     shooting solution when Newton fails from the geodesic guess); the Lie-group solver's other
-    methods need cartan.solve. tol: shooting, on the dimensionless terminal residual
-    ``|(difference(qT, q_N), Xi_N / s)|``; collocation, on the relative RMS residual per interval.
+    methods need cartan.solve. On a GroupManifold with connection "cartan-schouten" (lam given) and
+    the default frame0, shooting and continuation in T run on the Lie-group kernel, the scheme of
+    cartan.solve with 2 dim unknowns instead of dim + dim^2, and the result is converted to this
+    scheme's (the same discrete equations: frame = P, Xi rebuilt; docs/general-connections.md,
+    "The Lie-group kernel"); its message starts "Lie-group kernel". tol: shooting, on the
+    dimensionless terminal residual ``|(difference(qT, q_N), Xi_N / s)|`` (on the Lie-group kernel
+    ``|(log(qT^-1 q_N), xi_N / s)|``, xi = C(Xi)); collocation, on the relative RMS residual per interval.
     max_iterations: Levenberg-Marquardt (Newton) iterations per stage (per mesh). v0 (m,), Xi0 (m, m):
     guesses (default: the geodesic guess and 0); guess: a whole trajectory instead, any object with
     t (from 0 to T), q, frame, v, mu, Xi such as an earlier GeneralSolveResult. samples (collocation):

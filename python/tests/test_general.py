@@ -9,10 +9,12 @@ Tolerances (theory):
   classical equation from q0 with the solver's q'(0) = frame0 @ v0 (solve_ivp, rtol 1e-12) misses qT
   by the scheme's error in v0: O(h^2) at order 2 (measured 3.9e-4 at N = 200, 9.6e-5 at N = 400: ratio
   4.00); the whole curve differs by as much (8.6e-5 at N = 400).
-* SO(3), Cartan-Schouten lambda: the general solver and the Lie-group lambda solver solve the same
-  discrete equations (docs/general-connections.md#reduction); both stop at |r| <= 1e-12 on a problem
-  whose root has O(1) sensitivity, so they agree to ~1e-10 (measured 6e-15: both converge past tol);
-  asserted 1e-10.
+* SO(3), Cartan-Schouten lambda: solve_general runs the Lie-group kernel there, and the general
+  scheme and the Lie-group lambda solver solve the same discrete equations
+  (docs/general-connections.md#reduction): frame = P = Ad(h), C(Xi) = xi. Both stop at |r| <= 1e-12
+  on a problem whose root has O(1) sensitivity, so they agree to ~1e-10 (measured 6e-15: both
+  converge past tol; docs/design/lie-kernel.md §2.1 measured the frame against P and C(Xi) against xi
+  to 3e-15 and 8e-15); asserted 1e-10.
 * Energy 1/2 v.A v + V is conserved by the exact flow for every connection; the scheme's drift is
   O(h^p): the ratio at N and 2N is 2 at order 1 and 4 at order 2 (measured 2.00 and 4.00 on the
   anisotropic sphere A = diag(1, 3) from N = 150 to 1200; asserted within 15%).
@@ -198,19 +200,32 @@ def test_spherical_pendulum_is_the_classical_one():
     assert curve_gap[0] / curve_gap[1] == pytest.approx(4.0, abs=0.8)
 
 
+def aux_to_xi(manifold, Xi):
+    """C(Xi)_i = sum_{k,n} Xi[k, n] [e_k, e_i]^n (docs/general-connections.md#reduction), row by row of Xi."""
+    e = np.eye(manifold.dim)
+    brackets = np.array([[manifold.frame_bracket(ek, ei) for ei in e] for ek in e])  # [k, i] = [e_k, e_i]
+    return np.einsum("...kn,kin->...i", Xi, brackets)
+
+
 @pytest.mark.parametrize("order", [1, 2])
 def test_so3_cartan_schouten_equals_the_lambda_solver(order):
+    """solve_general on GroupManifold("so3", "cartan-schouten", lam) runs the Lie-group kernel
+    (include/cartan/general/lie_kernel.hpp): its frame is the lambda solver's P = Ad(h) and C(Xi) its
+    xi, and verify_general passes the result."""
     kwargs = dict(T=5.0, N=200, order=order, tol=1e-12, method="shooting")
+    manifold = GroupManifold("so3", "cartan-schouten", lam=0.3)
     lie = cartan.solve(cartan.RigidBody([2.0, 3.0, 4.0]), lam=0.3, gT=GT, **kwargs)
-    gen = cartan.solve_general(GroupManifold("so3", "cartan-schouten", lam=0.3), q0=np.eye(3), qT=GT,
-                               inertia=[2.0, 3.0, 4.0], **kwargs)
+    gen = cartan.solve_general(manifold, q0=np.eye(3), qT=GT, inertia=[2.0, 3.0, 4.0], **kwargs)
     assert lie.converged and gen.converged, (lie.message, gen.message)
-    assert "constant frame components" in gen.message and gen.method == "shooting"
+    assert "Lie-group kernel" in gen.message and gen.method == "shooting"
     np.testing.assert_allclose(gen.v0, lie.v0, atol=1e-10)
     np.testing.assert_allclose(gen.q, lie.g, atol=1e-10)
     np.testing.assert_allclose(gen.v, lie.v, atol=1e-10)
     np.testing.assert_allclose(gen.mu, lie.mu, atol=1e-10)
     np.testing.assert_allclose(gen.t, lie.t, atol=1e-14)
+    np.testing.assert_allclose(gen.frame, lie.P, atol=1e-10)
+    np.testing.assert_allclose(aux_to_xi(manifold, gen.Xi), lie.xi, atol=1e-10)
+    assert cartan.verify_general(gen, manifold, inertia=[2.0, 3.0, 4.0]).passed
 
 
 def sphere_energy(r, A, G):

@@ -15,12 +15,19 @@
 // another T), and `branch` names the path.
 // Multiple shooting, two-level and continuation in lambda belong to the Lie-group Cartan–Schouten
 // solver; asking for them here is an error naming them.
+// Kernels: shooting and continuation in T run on the general scheme (shooting.hpp), or, on a Lie
+// group whose connection is Cartan–Schouten given by its lambda with frame0 the identity, on the
+// Lie-group scheme, whose result is converted (lie_kernel.hpp; docs/design/lie-kernel.md): the same
+// discrete equations with 2m unknowns instead of m + m^2, and the same strategy, branches and
+// status rules. Collocation is always the general one. solve_general_shooting is the general
+// kernel alone.
 
 #include <chrono>
 #include <optional>
 #include <sstream>
 
 #include "cartan/general/collocation.hpp"
+#include "cartan/general/lie_kernel.hpp"
 #include "cartan/general/shooting.hpp"
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/solve_options.hpp"
@@ -64,16 +71,14 @@ namespace cartan::general {
 
 namespace detail {
 
-/// Continuation in T (transported/continuation.hpp's path, through ShootingFamily above). `direct`
-/// is the failed attempt at the full horizon, not repeated.
-template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-GeneralSolution<M> continue_in_T(const GeneralProblem<M, L>& problem, const GeneralShootingOptions& shooting,
-                                 const GeneralSolution<M>& direct) {
+/// Continuation in T (transported/continuation.hpp's path) of a problem family: the general
+/// problem (ShootingFamily above) or the Lie kernel's (lie_kernel.hpp). `direct` is the failed
+/// attempt at the full horizon, not repeated.
+template <class Problem, class Solution = typename transported::ShootingFamily<Problem>::Solution>
+Solution continue_in_T(const Problem& problem, const GeneralShootingOptions& shooting, const Solution& direct) {
   transported::ContinuationOptions options;
   options.shooting = shooting;
-  GeneralSolution<M> result = transported::detail::continue_in_T(
-      problem, options, std::optional<manifolds::ComponentsOf<M>>(), std::optional<manifolds::ComponentMatrixOf<M>>(),
-      &direct);
+  Solution result = transported::detail::continue_in_T(problem, options, std::nullopt, std::nullopt, &direct);
   result.branch = "continuation in T (" + result.branch + ")";
   return result;
 }
@@ -112,12 +117,28 @@ GeneralSolution<M> collocation(const GeneralProblem<M, L>& problem, const transp
   return refined;
 }
 
-/// The methods of solve (below) after its checks, under the options' deadline.
+/// run_strategy's shooting on the general scheme: the general problem's family (ShootingFamily
+/// above), Xi0 as it is, results as they are.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-GeneralSolution<M> run_methods(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options,
-                               const GeneralGuess<M>& guess) {
+struct GeneralKernel {
+  using Problem = GeneralProblem<M, L>;
+  const Problem& problem;
+
+  const Problem& shooting_problem() const { return problem; }
+  const manifolds::ComponentMatrixOf<M>& auxiliary(const manifolds::ComponentMatrixOf<M>& Xi0) const { return Xi0; }
+  GeneralSolution<M> result(GeneralSolution<M>&& s) const { return std::move(s); }
+};
+
+/// The methods of solve (below) after its checks, under the options' deadline, with the shooting
+/// and continuation in T of `kernel` (GeneralKernel above or LieKernel, lie_kernel.hpp): its
+/// `shooting_problem()` is shot through its ShootingFamily, a guess Xi0 enters as
+/// `auxiliary(Xi0)`, and `result` makes the returned solution a GeneralSolution<M>.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L, class Kernel>
+GeneralSolution<M> run_strategy(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options,
+                                const GeneralGuess<M>& guess, const Kernel& kernel) {
   using transported::Continuation;
   using transported::Method;
+  using Family = transported::ShootingFamily<typename Kernel::Problem>;
   if (options.method == Method::Collocation) return detail::collocation(problem, options, guess);
   GeneralShootingOptions shooting{.order = options.order, .tolerance = options.tol,
                                   .max_iterations = options.max_iterations, .no_progress_window = 0,
@@ -127,18 +148,18 @@ GeneralSolution<M> run_methods(const GeneralProblem<M, L>& problem, const transp
   const std::string from =
       guess.v0 || guess.Xi0 || guess.trajectory ? "from the given guess" : "from the geodesic guess";
   const GeneralTrajectory<M>* path = guess.trajectory ? &*guess.trajectory : nullptr;
-  GeneralSolution<M> direct = solve_general_shooting(
-      problem, shooting, path ? path->v.front() : guess.v0.value_or(geodesic_guess(problem)),
-      path ? path->Xi.front() : guess.Xi0.value_or(manifolds::ComponentMatrixOf<M>::Zero()));
+  auto direct = Family::shoot(
+      kernel.shooting_problem(), shooting, path ? path->v.front() : guess.v0.value_or(geodesic_guess(problem)),
+      kernel.auxiliary(path ? path->Xi.front() : guess.Xi0.value_or(manifolds::ComponentMatrixOf<M>::Zero())));
   direct.branch = "shooting (" + from + ")";
   if (direct.converged() || direct.status == Status::Interrupted ||
       (!auto_strategy && options.continuation == Continuation::None)) {
-    return direct;
+    return kernel.result(std::move(direct));
   }
-  GeneralSolution<M> continued = detail::continue_in_T(problem, shooting, direct);
+  auto continued = detail::continue_in_T(kernel.shooting_problem(), shooting, direct);
   if (!auto_strategy || continued.converged() || continued.status == Status::Interrupted) {
     if (auto_strategy) continued.branch += ", after shooting failed";
-    return continued;
+    return kernel.result(std::move(continued));
   }
   transported::SolveOptions c = options;
   c.method = Method::Collocation;
@@ -150,17 +171,35 @@ GeneralSolution<M> run_methods(const GeneralProblem<M, L>& problem, const transp
     collocated.branch += ", after shooting and continuation in T failed";
     return collocated;
   }
-  continued.status = collocated.status == Status::Interrupted ? Status::Interrupted : Status::StrategyFailed;
-  continued.message = "every method of the default strategy failed (shooting " + from +
-                      ", continuation in T, collocation): " + continued.message + "; collocation: " + collocated.message;
-  return continued;
+  GeneralSolution<M> failed = kernel.result(std::move(continued));
+  failed.status = collocated.status == Status::Interrupted ? Status::Interrupted : Status::StrategyFailed;
+  failed.message = "every method of the default strategy failed (shooting " + from +
+                   ", continuation in T, collocation): " + failed.message + "; collocation: " + collocated.message;
+  return failed;
+}
+
+/// run_strategy on the general scheme.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralSolution<M> run_methods(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options,
+                               const GeneralGuess<M>& guess) {
+  return run_strategy(problem, options, guess, GeneralKernel<M, L>{problem});
+}
+
+/// run_strategy on the Lie-group scheme of the Cartan–Schouten connection of parameter `lambda`
+/// (lie_kernel.hpp; where lie_kernel_applies), at the shooting tolerance options.tol.
+template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
+GeneralSolution<manifolds::GroupManifold<G>> run_methods_lie(const GeneralProblem<manifolds::GroupManifold<G>, L>& problem,
+                                                             double lambda, const transported::SolveOptions& options,
+                                                             const GeneralGuess<manifolds::GroupManifold<G>>& guess) {
+  return run_strategy(problem, options, guess, LieKernel<G, L>{lie_kernel_problem(problem, lambda), options.tol});
 }
 
 }  // namespace detail
 
 /// Solves the general problem. Throws std::invalid_argument for an invalid problem or options,
 /// or a method this problem family does not have; numerical failure is a status. solve_time_s is
-/// the whole call's, every attempt of the strategy included.
+/// the whole call's, every attempt of the strategy included. Shooting runs on the Lie-group kernel
+/// where lie_kernel_applies (header comment), its message then starting "Lie-group kernel".
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options = {},
                          const GeneralGuess<M>& guess = {}) {
@@ -184,7 +223,14 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported:
   }
   const auto start = std::chrono::steady_clock::now();
   const transported::SolveOptions timed = transported::with_deadline(options, start);
-  GeneralSolution<M> s = detail::run_methods(problem, timed, guess);
+  GeneralSolution<M> s = [&] {
+    if constexpr (kIsGroupManifold<M>) {
+      if (lie_kernel_applies(problem, timed)) {
+        return detail::run_methods_lie(problem, *problem.manifold.cartan_schouten_lambda(), timed, guess);
+      }
+    }
+    return detail::run_methods(problem, timed, guess);
+  }();
   transported::apply_time_limit(timed, s.status, s.message);
   s.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return s;
