@@ -22,8 +22,10 @@ deps-docs:
 # The release tree builds what ships (library, CLI, Python module, examples); the C++ tests are
 # compiled once, in the sanitizer tree (CARTAN_CXX_TESTS; README.md "What runs where"). For them
 # here too: make build CMAKE_FLAGS=-DCARTAN_CXX_TESTS=ON.
+CONFIGURE_RELEASE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DCARTAN_CXX_TESTS=OFF $(CMAKE_FLAGS)
+
 build: deps
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DCARTAN_CXX_TESTS=OFF $(CMAKE_FLAGS)
+	$(CONFIGURE_RELEASE)
 	cmake --build $(BUILD) -j $(JOBS)
 
 # The sanitizer build: clang, AddressSanitizer + UndefinedBehaviorSanitizer on every target, and
@@ -34,26 +36,47 @@ build: deps
 # translation units about twice as fast as GCC with the same sanitizer flags, in half the memory.
 SANITIZE_FLAGS ?= -O1 -g0 -DNDEBUG
 
-build-asan: deps
-	CC=clang CXX=clang++ cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+CONFIGURE_ASAN = CC=clang CXX=clang++ cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$(SANITIZE_FLAGS)" -DCARTAN_FUZZ=ON -DCARTAN_FUZZ_SECONDS=$(FUZZ_SECONDS) \
 	  -DCARTAN_BUILD_BENCH=OFF -DCARTAN_BUILD_EXAMPLES=OFF -DCARTAN_CXX_TESTS=ON $(CMAKE_FLAGS)
+
+build-asan: deps
+	$(CONFIGURE_ASAN)
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
 
+# Both trees by one make whose $(JOBS) job slots the two share (GNU make's jobserver, through the
+# generated Makefiles): no more compilers at once than `make build` alone, so no more memory, and
+# the slots one tree leaves idle (its links, the last units before a target that needs them all)
+# compile the other's units. `make test` builds this way.
+build-trees: deps
+	$(CONFIGURE_RELEASE)
+	$(CONFIGURE_ASAN)
+	+$(MAKE) --no-print-directory -j $(JOBS) compile-release compile-asan
+
+.PHONY: build-trees compile-release compile-asan
+compile-release:
+	+$(MAKE) --no-print-directory -C $(BUILD)
+compile-asan:
+	+$(MAKE) --no-print-directory -C $(BUILD_ASAN)
+
 # Label `install` (the fresh-clone `pip install`, which compiles everything again): make test-install.
+RUN_RELEASE_TESTS = ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -LE install
+RUN_ASAN_TESTS = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -LE fuzz
+RUN_FUZZ_TESTS = ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -L fuzz
+
 test-release: build deps-docs
-	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -LE install
+	$(RUN_RELEASE_TESTS)
 
 test-asan: build-asan
-	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-	  ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -LE fuzz
+	$(RUN_ASAN_TESTS)
 
 # libFuzzer targets (tests/fuzz/README.md), in the sanitizer build: each target over its corpus,
 # then FUZZ_SECONDS of fuzzing each; fails on any finding.
 build-fuzz: build-asan
 
 test-fuzz: build-asan
-	ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -L fuzz
+	$(RUN_FUZZ_TESTS)
 
 # A long campaign: FUZZ_RUNS executions per target; new inputs in $(BUILD_ASAN)/tests/fuzz/corpus.
 fuzz: build-asan
@@ -64,7 +87,10 @@ fuzz: build-asan
 	    $(BUILD_ASAN)/tests/fuzz/corpus/$$target tests/fuzz/corpus/$$target || exit 1; \
 	done
 
-test: test-release test-asan test-fuzz
+test: build-trees deps-docs
+	$(RUN_RELEASE_TESTS)
+	$(RUN_ASAN_TESTS)
+	$(RUN_FUZZ_TESTS)
 
 # `pip install --no-build-isolation` of a fresh clone of HEAD into a fresh virtual environment, then
 # `import cartan` from elsewhere (tests/package/pip_install.py; compiles the module: ~15-20 CPU-minutes).
