@@ -1,8 +1,9 @@
 #pragma once
 // The general solve of the Python module (bind_general.cpp) on each manifold type: solve_on and
-// verify_on with their Lagrangians and arguments. Every Lagrangian goes behind the erased type, whose
-// solve and verify the library compiles once per manifold (cartan/general/compiled.hpp): this
-// unit only converts the arguments and the result.
+// verify_on with their Lagrangians and arguments, and the manifold classes' holders and argument
+// helpers (bind_manifolds.cpp). Every Lagrangian goes behind the erased type, whose solve and
+// verify the library compiles once per manifold (cartan/general/compiled.hpp): this unit only
+// converts the arguments and the result.
 
 #include <array>
 #include <memory>
