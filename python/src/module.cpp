@@ -163,5 +163,6 @@ PYBIND11_MODULE(_cartan, m) {
   cartan::python::bind_se2(m);
   cartan::python::bind_bvp(m);
   cartan::python::bind_manifolds(m);
+  cartan::python::bind_group_manifold(m);
   cartan::python::bind_general(m);
 }
