@@ -9,5 +9,7 @@ void bind_heisenberg(pybind11::module_& m);
 void bind_se3(pybind11::module_& m);
 void bind_se2(pybind11::module_& m);
 void bind_bvp(pybind11::module_& m);  ///< solve_bvp and its dense output
-void bind_general(pybind11::module_& m);  ///< manifolds with a connection and solve_general
+void bind_manifolds(pybind11::module_& m);  ///< manifolds with a connection (Sphere, ..., Chart)
+void bind_group_manifold(pybind11::module_& m);  ///< GroupManifold (any left-invariant connection)
+void bind_general(pybind11::module_& m);  ///< solve_general and verify_general on those manifolds
 }  // namespace cartan::python

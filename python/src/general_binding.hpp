@@ -1,8 +1,9 @@
 #pragma once
 // The general solve of the Python module (bind_general.cpp) on each manifold type: solve_on and
-// verify_on with their Lagrangians and arguments. Every Lagrangian goes behind the erased type, whose
-// solve and verify the library compiles once per manifold (cartan/general/compiled.hpp): this
-// unit only converts the arguments and the result.
+// verify_on with their Lagrangians and arguments, and the manifold classes' holders, argument
+// helpers and geometry methods (bind_manifolds.cpp, bind_group_manifold.cpp). Every Lagrangian
+// goes behind the erased type, whose solve and verify the library compiles once per manifold
+// (cartan/general/compiled.hpp): this unit only converts the arguments and the result.
 
 #include <array>
 #include <memory>
@@ -140,6 +141,131 @@ Square<N> matrix_or_diagonal(const py::handle& obj, const std::string& where, co
 // ---- the manifold classes ---------------------------------------------------------------------
 
 /// The geometry of manifolds/manifold.hpp and geometry.hpp, the same for every class.
+template <class Holder>
+void def_manifold_methods(py::class_<Holder>& cls, const std::string& name) {
+  cls.def_property_readonly("name", [](const Holder& h) {
+    return visit_holder(h, [](const auto& m) { return std::string(m.name()); });
+  }, "The manifold's name (\"sphere\", \"hyperbolic-plane\", \"euclidean\", or the group's).");
+  cls.def_property_readonly("dim", [](const Holder& h) {
+    return visit_holder(h, [](const auto& m) { return std::decay_t<decltype(m)>::kDim; });
+  }, "m, the dimension (the length of v and mu).");
+  cls.def_property_readonly("ambient_dim", [](const Holder& h) {
+    return visit_holder(h, [](const auto& m) { return std::decay_t<decltype(m)>::kAmbientDim; });
+  }, "d >= m, the length of the vectors that represent tangent vectors.");
+  cls.def_property_readonly("point_shape", [](const Holder& h) {
+    return visit_holder(h, [](const auto& m) {
+      using P = PointOf<std::decay_t<decltype(m)>>;
+      constexpr int rows = P::RowsAtCompileTime, cols = P::ColsAtCompileTime;
+      return cols == 1 ? py::make_tuple(rows) : py::make_tuple(rows, cols);
+    });
+  }, "The shape of a point: (3,) on the quadrics, (m,) in R^m, the group element's shape.");
+
+  cls.def("christoffel", [name](const Holder& h, const py::object& q, const py::object& x, const py::object& y) {
+    return visit_holder(h, [&](const auto& m) {
+      using M = std::decay_t<decltype(m)>;
+      const std::string w = name + ".christoffel";
+      return to_numpy(m.christoffel(point_arg(m, q, w, "q"), finite_arg<VectorOf<M>>(x, w, "x"),
+                                    finite_arg<VectorOf<M>>(y, w, "y")));
+    });
+  }, py::arg("q"), py::arg("x"), py::arg("y"),
+     "Gamma_q(x, y): nabla_{q'} Y = y' + Gamma_q(u, y) for a curve with represented velocity u.");
+  cls.def("frame_bracket", [name](const Holder& h, const py::object& x, const py::object& y) {
+    return visit_holder(h, [&](const auto& m) {
+      using M = std::decay_t<decltype(m)>;
+      const std::string w = name + ".frame_bracket";
+      return to_numpy(m.frame_bracket(finite_arg<VectorOf<M>>(x, w, "x"), finite_arg<VectorOf<M>>(y, w, "y")));
+    });
+  }, py::arg("x"), py::arg("y"), "The bracket of the constant fields x, y (0, or [x, y] on a group).");
+  cls.def("torsion", [name](const Holder& h, const py::object& q, const py::object& x, const py::object& y) {
+    return visit_holder(h, [&](const auto& m) {
+      using M = std::decay_t<decltype(m)>;
+      const std::string w = name + ".torsion";
+      return to_numpy(manifolds::torsion(m, point_arg(m, q, w, "q"), finite_arg<VectorOf<M>>(x, w, "x"),
+                                         finite_arg<VectorOf<M>>(y, w, "y")));
+    });
+  }, py::arg("q"), py::arg("x"), py::arg("y"), "T(x, y) = nabla_x y - nabla_y x - [x, y] at q.");
+  cls.def("curvature", [name](const Holder& h, const py::object& q, const py::object& x, const py::object& y,
+                              const py::object& z) {
+    return visit_holder(h, [&](const auto& m) {
+      using M = std::decay_t<decltype(m)>;
+      const std::string w = name + ".curvature";
+      return to_numpy(manifolds::curvature(m, point_arg(m, q, w, "q"), finite_arg<VectorOf<M>>(x, w, "x"),
+                                           finite_arg<VectorOf<M>>(y, w, "y"), finite_arg<VectorOf<M>>(z, w, "z")));
+    });
+  }, py::arg("q"), py::arg("x"), py::arg("y"), py::arg("z"),
+     "R(x, y) z = nabla_x nabla_y z - nabla_y nabla_x z - nabla_[x,y] z at q.");
+  cls.def("step", [name](const Holder& h, const py::object& q, const py::object& x) {
+    return visit_holder(h, [&](const auto& m) {
+      using M = std::decay_t<decltype(m)>;
+      const std::string w = name + ".step";
+      return to_numpy(m.step(point_arg(m, q, w, "q"), finite_arg<VectorOf<M>>(x, w, "x")));
+    });
+  }, py::arg("q"), py::arg("x"),
+     "The end of the manifold's piece s -> step(q, s x) at s = 1 (q + x, a geodesic, g exp(x)).");
+  cls.def("difference", [name](const Holder& h, const py::object& a, const py::object& b) {
+    return visit_holder(h, [&](const auto& m) {
+      const std::string w = name + ".difference";
+      return to_numpy(m.difference(point_arg(m, a, w, "a"), point_arg(m, b, w, "b")));
+    });
+  }, py::arg("a"), py::arg("b"), "The x with step(a, x) = b (the local inverse of step).");
+  cls.def("transport_along_step", [name](const Holder& h, const py::object& q, const py::object& x) {
+    return visit_holder(h, [&](const auto& m) {
+      using M = std::decay_t<decltype(m)>;
+      const std::string w = name + ".transport_along_step";
+      return to_numpy(m.transport_along_step(point_arg(m, q, w, "q"), finite_arg<VectorOf<M>>(x, w, "x")));
+    });
+  }, py::arg("q"), py::arg("x"), "The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1].");
+  cls.def("tangent_basis", [name](const Holder& h, const py::object& q) {
+    return visit_holder(h, [&](const auto& m) { return to_numpy(m.tangent_basis(point_arg(m, q, name + ".tangent_basis", "q"))); });
+  }, py::arg("q"), "A (d, m) basis of T_qQ (orthonormal where there is a metric): the default frame0.");
+  cls.def("metric", [name](const Holder& h, const py::object& q) {
+    return visit_holder(h, [&](const auto& m) -> py::object {
+      const auto g = manifolds::metric_at(m, point_arg(m, q, name + ".metric", "q"));
+      return g ? py::object(to_numpy(*g)) : py::object(py::none());
+    });
+  }, py::arg("q"), "The (d, d) matrix of the metric the connection preserves, or None.");
+  cls.def("torsion_components", [name](const Holder& h, const py::object& q, const py::object& frame) {
+    return visit_holder(h, [&](const auto& m) {
+      using M = std::decay_t<decltype(m)>;
+      constexpr int n = M::kDim;
+      const std::string w = name + ".torsion_components";
+      const PointOf<M> p = point_arg(m, q, w, "q");
+      const FrameOf<M> e = frame.is_none() ? m.tangent_basis(p) : finite_arg<FrameOf<M>>(frame, w, "frame");
+      const auto c = manifolds::torsion_components(m, p, e);  // c[i](k, j) = T_ij^k
+      std::array<Square<n>, n> out;                             // out[i](j, k) = T_ij^k
+      for (int i = 0; i < n; ++i) out[i] = c[i].transpose();
+      return tensor_numpy<n>(out);
+    });
+  }, py::arg("q"), py::arg("frame") = py::none(),
+     "T[i, j, k] = T_ij^k with T(e_i, e_j) = T_ij^k e_k in the frame (default tangent_basis(q)).");
+  cls.def("curvature_components", [name](const Holder& h, const py::object& q, const py::object& frame) {
+    return visit_holder(h, [&](const auto& m) {
+      using M = std::decay_t<decltype(m)>;
+      constexpr int n = M::kDim;
+      const std::string w = name + ".curvature_components";
+      const PointOf<M> p = point_arg(m, q, w, "q");
+      const FrameOf<M> e = frame.is_none() ? m.tangent_basis(p) : finite_arg<FrameOf<M>>(frame, w, "frame");
+      const auto c = manifolds::curvature_components(m, p, e);  // c[i][j](l, k) = R_ijk^l
+      py::array_t<double> out({n, n, n, n});
+      double* data = out.mutable_data();
+      for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+          for (int k = 0; k < n; ++k) {
+            for (int l = 0; l < n; ++l) *data++ = c[i][j](l, k);
+          }
+        }
+      }
+      return out;
+    });
+  }, py::arg("q"), py::arg("frame") = py::none(),
+     "R[i, j, k, l] = R_ijk^l with R(e_i, e_j) e_k = R_ijk^l e_l in the frame (default tangent_basis(q)).");
+  cls.def("has_parallel_torsion_and_curvature", [](const Holder& h) {
+    return visit_holder(h, [](const auto& m) { return m.has_parallel_torsion_and_curvature(); });
+  }, "True when nabla T = nabla R = 0 (the solver then computes the frame components once).");
+  cls.def("validate", [](const Holder& h, const py::object& q) {
+    visit_holder(h, [&](const auto& m) { (void)point_arg(m, q, "validate", "q"); });
+  }, py::arg("q"), "Raises ValueError unless q is a valid point of the manifold.");
+}
 
 // ---- Lagrangians ------------------------------------------------------------------------------
 

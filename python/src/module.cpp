@@ -162,5 +162,7 @@ PYBIND11_MODULE(_cartan, m) {
   cartan::python::bind_se3(m);
   cartan::python::bind_se2(m);
   cartan::python::bind_bvp(m);
+  cartan::python::bind_manifolds(m);
+  cartan::python::bind_group_manifold(m);
   cartan::python::bind_general(m);
 }

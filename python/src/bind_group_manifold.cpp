@@ -1,0 +1,131 @@
+// The Python class GroupManifold (include/cartan/manifolds/group_manifold.hpp) in its own
+// translation unit: one class over GroupManifold<G> for SO(3), H3, SE(2), SE(3) with any
+// left-invariant connection, with the geometry methods of every manifold class
+// (def_manifold_methods, general_binding.hpp); bind_general.cpp solves on it.
+
+#include "general_binding.hpp"
+
+namespace cartan::python {
+
+namespace {
+
+using namespace general_binding;
+
+/// f(std::type_identity<G>{}) for the group named `group` (a name or a group class of this module).
+template <class F>
+decltype(auto) visit_group(const py::object& group, const std::string& where, F&& f) {
+  std::string name;
+  if (py::isinstance<py::str>(group)) {
+    name = group.cast<std::string>();
+  } else if (py::hasattr(group, "name") && py::hasattr(group, "element_shape")) {
+    name = py::str(group.attr("name")).cast<std::string>();
+  }
+  if (name == "so3") return f(std::type_identity<groups::SO3>{});
+  if (name == "heisenberg") return f(std::type_identity<groups::Heisenberg>{});
+  if (name == "se2") return f(std::type_identity<groups::SE2>{});
+  if (name == "se3") return f(std::type_identity<groups::SE3>{});
+  throw_invalid(where, "group", repr_of(group),
+                "is not one of: so3, heisenberg, se2, se3 (or cartan.SO3, cartan.Heisenberg, cartan.SE2, cartan.SE3)");
+}
+
+/// The group manifold for `connection`: a name with its parameter, or a `<Group>.Connection`.
+template <groups::LieGroup G>
+manifolds::GroupManifold<G> make_group_manifold(const py::object& connection, const py::object& lam,
+                                                const py::object& metric, const py::object& alpha) {
+  using GM = manifolds::GroupManifold<G>;
+  constexpr int n = G::kDim;
+  const std::string where = "GroupManifold";
+  // Each connection takes exactly its own parameter (`needed`), or none.
+  const auto takes = [&](const std::string& kind, std::string_view needed) {
+    const std::pair<const char*, const py::object*> parameters[] = {{"lam", &lam}, {"metric", &metric}, {"alpha", &alpha}};
+    for (const auto& [parameter, value] : parameters) {
+      const bool is_needed = parameter == needed;
+      if (is_needed && value->is_none()) throw_invalid(where, parameter, "None", "must be given for connection " + kind);
+      if (!is_needed && !value->is_none()) {
+        throw_invalid(where, parameter, repr_of(*value), "does not apply to connection " + kind);
+      }
+    }
+  };
+  if (py::isinstance<connections::InvariantConnection<G>>(connection)) {
+    takes("<Group>.Connection", "");
+    return GM(connection.cast<const connections::InvariantConnection<G>&>());
+  }
+  const std::string kind = py::isinstance<py::str>(connection) ? connection.cast<std::string>() : std::string();
+  if (kind == "cartan-schouten") {
+    takes(kind, "lam");
+    const double l = number_arg<double>(lam, where, "lam");
+    require_finite(l, where, "lam");
+    return GM::cartan_schouten(l);
+  }
+  if (kind == "levi-civita") {
+    takes(kind, "metric");
+    return GM::levi_civita(matrix_or_diagonal<n>(metric, where, "metric"));
+  }
+  if (kind == "coefficients") {
+    takes(kind, "alpha");
+    const auto a = tensor_arg<n>(alpha, where, "alpha");  // a[i](j, k) = alpha[i][j][k]
+    typename connections::InvariantConnection<G>::Coefficients c;  // c[i](k, j): column j is alpha(e_i, e_j)
+    for (int i = 0; i < n; ++i) c[i] = a[i].transpose();
+    return GM(connections::InvariantConnection<G>(groups::Side::Left, c));
+  }
+  throw_invalid(where, "connection", repr_of(connection),
+                "is not one of: cartan-schouten, levi-civita, coefficients (or a left <Group>.Connection)");
+}
+
+}  // namespace
+
+void bind_group_manifold(py::module_& m) {
+  py::class_<AnyGroupManifold> cls(
+      m, "GroupManifold",
+      "A Lie group (so3, heisenberg, se2, se3) with a left-invariant connection, as a manifold: points are "
+      "group elements, vectors left-trivialised algebra coordinates, the Christoffel map is the connection's "
+      "bilinear map alpha.");
+  cls.def(py::init([](const py::object& group, const py::object& connection, const py::object& lam,
+                      const py::object& metric, const py::object& alpha) {
+            return visit_group(group, "GroupManifold", [&]<class G>(std::type_identity<G>) {
+              return AnyGroupManifold{make_group_manifold<G>(connection, lam, metric, alpha)};
+            });
+          }),
+          py::arg("group"), py::arg("connection") = "cartan-schouten", py::kw_only(), py::arg("lam") = py::none(),
+          py::arg("metric") = py::none(), py::arg("alpha") = py::none(),
+          "group: \"so3\", \"heisenberg\", \"se2\", \"se3\" or the group class. connection: \"cartan-schouten\" "
+          "(with lam: alpha = lam ad), \"levi-civita\" (with metric, a symmetric positive-definite (n, n) matrix or "
+          "its (n,) diagonal), \"coefficients\" (with alpha, a (n, n, n) array: alpha(e_i, e_j) = sum_k "
+          "alpha[i, j, k] e_k), or a left <Group>.Connection object.");
+  def_manifold_methods(cls, "GroupManifold");
+  cls.def_property_readonly("group", [](const AnyGroupManifold& h) {
+    return visit_holder(h, [](const auto& gm) -> py::object {
+      return py::type::of<GroupTag<typename std::decay_t<decltype(gm)>::Group>>();
+    });
+  }, "The group class (cartan.SO3, ...).");
+  cls.def_property_readonly("lam", [](const AnyGroupManifold& h) -> py::object {
+    return visit_holder(h, [](const auto& gm) -> py::object {
+      const auto l = gm.cartan_schouten_lambda();
+      return l ? py::object(py::float_(*l)) : py::object(py::none());
+    });
+  }, "lam for a Cartan-Schouten connection, else None.");
+  cls.def_property_readonly("alpha", [](const AnyGroupManifold& h) {
+    return visit_holder(h, [](const auto& gm) {
+      using G = typename std::decay_t<decltype(gm)>::Group;
+      constexpr int n = G::kDim;
+      std::array<Square<n>, n> out;  // out[i](j, k) = alpha[i][j][k]
+      for (int i = 0; i < n; ++i) out[i] = gm.connection().coefficients()[i].transpose();
+      return tensor_numpy<n>(out);
+    });
+  }, "The bilinear map as a (n, n, n) array: alpha(e_i, e_j) = sum_k alpha[i, j, k] e_k.");
+  cls.def_property_readonly("connection", [](const AnyGroupManifold& h) {
+    return visit_holder(h, [](const auto& gm) { return py::cast(gm.connection()); });
+  }, "The connection as a <Group>.Connection object.");
+  cls.def("__repr__", [](const AnyGroupManifold& h) {
+    return visit_holder(h, [](const auto& gm) {
+      using G = typename std::decay_t<decltype(gm)>::Group;
+      const auto l = gm.cartan_schouten_lambda();
+      const std::string text = "GroupManifold(\"" + std::string(gm.name()) + "\", ";
+      if (l) return text + "\"cartan-schouten\", lam=" + format_value(*l) + ")";
+      if (gm.metric(G::identity())) return text + "\"levi-civita\", metric=...)";
+      return text + "\"coefficients\", alpha=...)";
+    });
+  });
+}
+
+}  // namespace cartan::python
