@@ -32,6 +32,7 @@
 #include "cartan/general/shooting.hpp"
 #include "cartan/manifolds/geometry.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
+#include "cartan/numerics/spectrum.hpp"
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/solve_options.hpp"
 
@@ -113,18 +114,12 @@ struct AuxPseudoInverse {
   double smallest_singular_value = std::numeric_limits<double>::infinity();  ///< infinite where C = 0
 };
 
-/// Computed once per group (an SVD of the m x m^2 matrix of C).
+/// Computed once per group (numerics::pseudo_inverse: an SVD of the m x m^2 matrix of C).
 template <groups::LieGroup G>
 const AuxPseudoInverse<G>& aux_pseudo_inverse() {
   static const AuxPseudoInverse<G> inverse = [] {
-    const Eigen::MatrixXd c = aux_to_xi_matrix<G>();
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(c, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    AuxPseudoInverse<G> out;
-    // The minimum-norm least-squares solution, the singular values below the rank threshold
-    // dropped: C^+ itself.
-    out.matrix = svd.solve(Eigen::MatrixXd::Identity(G::kDim, G::kDim));
-    if (svd.rank() > 0) out.smallest_singular_value = svd.singularValues()[svd.rank() - 1];
-    return out;
+    const numerics::PseudoInverse c_plus = numerics::pseudo_inverse(aux_to_xi_matrix<G>());
+    return AuxPseudoInverse<G>{c_plus.matrix, c_plus.smallest_singular_value};
   }();
   return inverse;
 }
