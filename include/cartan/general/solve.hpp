@@ -186,12 +186,12 @@ GeneralSolution<M> run_methods(const GeneralProblem<M, L>& problem, const transp
 }
 
 /// run_strategy on the Lie-group scheme of the Cartan–Schouten connection of parameter `lambda`
-/// (lie_kernel.hpp; where lie_kernel_applies), at the shooting tolerance options.tol.
+/// (lie_kernel.hpp; where lie_kernel_applies).
 template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 GeneralSolution<manifolds::GroupManifold<G>> run_methods_lie(const GeneralProblem<manifolds::GroupManifold<G>, L>& problem,
                                                              double lambda, const transported::SolveOptions& options,
                                                              const GeneralGuess<manifolds::GroupManifold<G>>& guess) {
-  return run_strategy(problem, options, guess, LieKernel<G, L>{lie_kernel_problem(problem, lambda), options.tol});
+  return run_strategy(problem, options, guess, LieKernel<G, L>{lie_kernel_problem(problem, lambda)});
 }
 
 }  // namespace detail
