@@ -95,10 +95,6 @@ bool record_solution(const TransportedScheme<G, L>& scheme, const groups::Tangen
   return true;
 }
 
-}  // namespace detail
-
-namespace detail {
-
 /// The Lie-group scheme as a kernel of the shooting driver (numerics/shooting_driver.hpp): unknowns
 /// y = (v0, xi0), residual (log(gT^{-1} g_N), xi_N), the Jacobian by the tangent-linear sweep.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
