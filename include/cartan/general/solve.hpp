@@ -73,9 +73,9 @@ namespace detail {
 
 /// Continuation in T (transported/continuation.hpp's path) of a problem family: the general
 /// problem (ShootingFamily above) or the Lie kernel's (lie_kernel.hpp). `direct` is the failed
-/// attempt at the full horizon, not repeated.
+/// attempt at the full horizon, not repeated (pass it moved: the path keeps it).
 template <class Problem, class Solution = typename transported::ShootingFamily<Problem>::Solution>
-Solution continue_in_T(const Problem& problem, const GeneralShootingOptions& shooting, const Solution& direct) {
+Solution continue_in_T(const Problem& problem, const GeneralShootingOptions& shooting, Solution direct) {
   transported::ContinuationOptions options;
   options.shooting = shooting;
   Solution result = transported::detail::continue_in_T(problem, options, std::nullopt, std::nullopt, &direct);
@@ -156,7 +156,7 @@ GeneralSolution<M> run_strategy(const GeneralProblem<M, L>& problem, const trans
       (!auto_strategy && options.continuation == Continuation::None)) {
     return kernel.result(std::move(direct));
   }
-  auto continued = detail::continue_in_T(kernel.shooting_problem(), shooting, direct);
+  auto continued = detail::continue_in_T(kernel.shooting_problem(), shooting, std::move(direct));
   if (!auto_strategy || continued.converged() || continued.status == Status::Interrupted) {
     if (auto_strategy) continued.branch += ", after shooting failed";
     return kernel.result(std::move(continued));
