@@ -126,6 +126,7 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
   }
   if (!decided(solution.status)) solution.status = Status::OuterNotConverged;
   // Step 6: the trajectory for the final {xi_k}.
+  ++solution.sweeps;
   if (!detail::record_solution(scheme, groups::TangentOf<G>(v0), groups::CovectorOf<G>::Zero(), &xi, solution)) {
     solution.status = Status::NonFinite;
   }
