@@ -89,6 +89,14 @@ class SolveMonitor {
     if (!stopped_ && deadline_passed_after(next)) stopped_ = true;
     return stop_requested();
   }
+  /// The work after a stop, in sweeps of the kind that polls (stop_pending_at's `after_stop`, and
+  /// the factor on a timed sweep for reserve_after_stop): `finishing` where the sweep records its
+  /// nodes, else a recording sweep into fresh storage, about 2 plain sweeps (its pages are new;
+  /// bench/README.md, "Interruption"; a stopped result has no action); a tangent-linear sweep costs
+  /// about 3 plain ones.
+  static constexpr double sweeps_after_stop(bool records, bool tangent_linear, double finishing = 0.0) {
+    return (records ? finishing : 2.0) / (tangent_linear ? 3 : 1);
+  }
   /// The time a solver needs after a stop to return its result (a recording sweep, the action):
   /// the deadline then applies that much earlier, so that the call ends near its time limit
   /// rather than that much after it. Solvers update it as they measure their sweeps.

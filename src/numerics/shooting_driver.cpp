@@ -86,11 +86,10 @@ ShootingOutcome shoot(ShootingKernel& kernel, const ShootingDriverOptions& optio
   const auto evaluate = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian, bool record) {
     const int slot = record ? slots.start(x) : -1;
     ++outcome.sweeps;
-    // After a stop comes the result (a quarter of a plain sweep covers it), or a recording sweep
-    // where this one did not record: into fresh storage, about 2 plain sweeps; a tangent-linear
-    // sweep costs about 3 plain ones or more. The deadline applies that much earlier
+    // After a stop comes the result (a quarter of a plain sweep covers it) where this sweep
+    // records, else a recording sweep. The deadline applies that much earlier
     // (SolveMonitor::reserve_after_stop).
-    const double share = (record ? 0.25 : 2.0) / (jacobian != nullptr ? 3 : 1);
+    const double share = SolveMonitor::sweeps_after_stop(record, jacobian != nullptr, 0.25);
     const auto begin = std::chrono::steady_clock::now();
     // A stop during this sweep leaves nothing to do where it records (the best point's trajectory
     // is at hand or there is none), else the recording sweep: what its polls project.

@@ -4,6 +4,8 @@
 #include <Eigen/SVD>
 #include <limits>
 
+#include "cartan/errors.hpp"
+
 namespace cartan::numerics {
 namespace {
 
@@ -49,6 +51,21 @@ double singular_value_ratio(const Eigen::Ref<const Eigen::MatrixXd>& a) {
   // of BDCSVD (bench/README.md "Build time"), and the matrices here are small.
   const Eigen::VectorXd sigma = Eigen::JacobiSVD<Eigen::MatrixXd>(a).singularValues();
   return sigma(0) > 0 ? sigma(sigma.size() - 1) / sigma(0) : 0.0;
+}
+
+PseudoInverse pseudo_inverse(const Eigen::Ref<const Eigen::MatrixXd>& a) {
+  require_finite(a, "pseudo_inverse", "a");
+  PseudoInverse out;
+  if (a.size() == 0) {
+    out.matrix.resize(a.cols(), a.rows());
+    return out;
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  // solve drops the singular values below the rank threshold: on the identity it gives a^+.
+  out.matrix = svd.solve(Eigen::MatrixXd::Identity(a.rows(), a.rows()));
+  out.rank = svd.rank();
+  if (out.rank > 0) out.smallest_singular_value = svd.singularValues()[out.rank - 1];
+  return out;
 }
 
 }  // namespace cartan::numerics

@@ -15,8 +15,9 @@
 //     increment of Xi (disc-aux: -h v_k mu_k^T; at order 2 the mean with the predictor's) and C^+
 //     the pseudo-inverse of C: the part of Xi in the kernel of C never feeds back (design §2.3);
 //   * terminal_error and xi_terminal by the general definitions, and general's rule for the status:
-//     never a wrong "converged" (design §2.4), applied to every shooting of the continuation path
-//     through the Lie kernel's problem family (LieKernelProblem).
+//     never a wrong "converged" (design §2.4), applied once, by the Lie kernel's problem family
+//     (LieKernelProblem), to every shooting (the continuation path's included): every result
+//     converted is one of them.
 // On a group with a centre (H3) C is not onto: xi's central components have no Xi behind them;
 // they are constant (rate 0) and vanish at a root with the rest of xi_N (design §2.1, item 3).
 
@@ -32,6 +33,7 @@
 #include "cartan/general/shooting.hpp"
 #include "cartan/manifolds/geometry.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
+#include "cartan/numerics/spectrum.hpp"
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/solve_options.hpp"
 
@@ -113,18 +115,12 @@ struct AuxPseudoInverse {
   double smallest_singular_value = std::numeric_limits<double>::infinity();  ///< infinite where C = 0
 };
 
-/// Computed once per group (an SVD of the m x m^2 matrix of C).
+/// Computed once per group (numerics::pseudo_inverse: an SVD of the m x m^2 matrix of C).
 template <groups::LieGroup G>
 const AuxPseudoInverse<G>& aux_pseudo_inverse() {
   static const AuxPseudoInverse<G> inverse = [] {
-    const Eigen::MatrixXd c = aux_to_xi_matrix<G>();
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(c, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    AuxPseudoInverse<G> out;
-    // The minimum-norm least-squares solution, the singular values below the rank threshold
-    // dropped: C^+ itself.
-    out.matrix = svd.solve(Eigen::MatrixXd::Identity(G::kDim, G::kDim));
-    if (svd.rank() > 0) out.smallest_singular_value = svd.singularValues()[svd.rank() - 1];
-    return out;
+    const numerics::PseudoInverse c_plus = numerics::pseudo_inverse(aux_to_xi_matrix<G>());
+    return AuxPseudoInverse<G>{c_plus.matrix, c_plus.smallest_singular_value};
   }();
   return inverse;
 }
@@ -263,16 +259,15 @@ GeneralTrajectory<manifolds::GroupManifold<G>> general_trajectory_from_lie(const
 
 /// A Lie-kernel result as the general solve's (design §2.4): the trajectory converted
 /// (general_trajectory_from_lie), Xi0 its Xi_0 (with its part in the kernel of C, so not C^+ xi0),
-/// terminal_error = separation(qT, q_N) and xi_terminal = |Xi_N|, general's status rule at `tol`,
-/// the message prefixed with "Lie-group kernel (Cartan–Schouten, lambda = ...): ". iterations are
-/// Levenberg–Marquardt's, summed over the stages of a continuation in T (the general kernel reports
-/// its last solve's); sweeps and residual_history are the Lie kernel's (2m unknowns, not m + m^2).
-/// A result without a trajectory keeps none.
+/// terminal_error = separation(qT, q_N) and xi_terminal = |Xi_N|, the status as it is (`lie` is a
+/// shooting of LieKernelProblem's family or a continuation path's result: general's status rule
+/// applied), the message prefixed with "Lie-group kernel (Cartan–Schouten, lambda = ...): ".
+/// iterations are Levenberg–Marquardt's, summed over the stages of a continuation in T (the general
+/// kernel reports its last solve's); sweeps and residual_history are the Lie kernel's (2m
+/// unknowns, not m + m^2). A result without a trajectory keeps none.
 template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 GeneralSolution<manifolds::GroupManifold<G>> general_solution_from_lie(const LieKernelProblem<G, L>& problem,
-                                                                       transported::TransportedSolution<G>&& lie,
-                                                                       double tol) {
-  detail::apply_general_status_rule(problem, lie, tol);
+                                                                       transported::TransportedSolution<G>&& lie) {
   GeneralSolution<manifolds::GroupManifold<G>> out;
   out.status = lie.status;
   out.message = "Lie-group kernel (Cartan–Schouten, lambda = " + format_value(problem.lambda) + "): " + lie.message;
@@ -305,17 +300,16 @@ namespace detail {
 
 /// run_strategy's shooting (solve.hpp) on the Lie-group kernel: the family of LieKernelProblem, a
 /// guess Xi0 as xi0 = C(Xi0) (its part in the kernel of C cannot enter, design §4), results
-/// converted at the shooting tolerance `tol`.
+/// converted.
 template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 struct LieKernel {
   using Problem = LieKernelProblem<G, L>;
   Problem problem;
-  double tol;
 
   const Problem& shooting_problem() const { return problem; }
   groups::CovectorOf<G> auxiliary(const groups::AlgebraMatrixOf<G>& Xi0) const { return aux_to_xi<G>(Xi0); }
   GeneralSolution<manifolds::GroupManifold<G>> result(transported::TransportedSolution<G>&& s) const {
-    return general_solution_from_lie(problem, std::move(s), tol);
+    return general_solution_from_lie(problem, std::move(s));
   }
 };
 

@@ -89,10 +89,9 @@ std::optional<GeneralNode<M>> general_sweep(const GeneralScheme<M, L>& scheme, c
     GeneralNodeTangent<M> dnode, dnext;
     if (tangent) dnode = tangent->initial(node);
     if (trajectory) trajectory->clear(), trajectory->push(node);
-    // Until a sweep is timed, what follows a stop is projected: by default a recording sweep into
-    // fresh storage (about 2 plain sweeps; a tangent-linear sweep costs about 3 plain ones or
-    // more), or nothing where the sweeps record.
-    const double after = after_stop >= 0 ? after_stop : trajectory ? 0.0 : tangent ? 2.0 / 3 : 2.0;
+    // Until a sweep is timed, what follows a stop is projected: `after_stop`, else by kind.
+    const double after =
+        after_stop >= 0 ? after_stop : SolveMonitor::sweeps_after_stop(trajectory != nullptr, tangent != nullptr);
     for (int k = 0; k < scheme.problem().N; ++k) {
       if (SolveMonitor::stop_pending_at(monitor, k, scheme.problem().N, begin, after)) {
         failure = SolveMonitor::stopped_message(k);

@@ -73,9 +73,9 @@ namespace detail {
 
 /// Continuation in T (transported/continuation.hpp's path) of a problem family: the general
 /// problem (ShootingFamily above) or the Lie kernel's (lie_kernel.hpp). `direct` is the failed
-/// attempt at the full horizon, not repeated.
+/// attempt at the full horizon, not repeated (pass it moved: the path keeps it).
 template <class Problem, class Solution = typename transported::ShootingFamily<Problem>::Solution>
-Solution continue_in_T(const Problem& problem, const GeneralShootingOptions& shooting, const Solution& direct) {
+Solution continue_in_T(const Problem& problem, const GeneralShootingOptions& shooting, Solution direct) {
   transported::ContinuationOptions options;
   options.shooting = shooting;
   Solution result = transported::detail::continue_in_T(problem, options, std::nullopt, std::nullopt, &direct);
@@ -156,7 +156,7 @@ GeneralSolution<M> run_strategy(const GeneralProblem<M, L>& problem, const trans
       (!auto_strategy && options.continuation == Continuation::None)) {
     return kernel.result(std::move(direct));
   }
-  auto continued = detail::continue_in_T(kernel.shooting_problem(), shooting, direct);
+  auto continued = detail::continue_in_T(kernel.shooting_problem(), shooting, std::move(direct));
   if (!auto_strategy || continued.converged() || continued.status == Status::Interrupted) {
     if (auto_strategy) continued.branch += ", after shooting failed";
     return kernel.result(std::move(continued));
@@ -186,12 +186,12 @@ GeneralSolution<M> run_methods(const GeneralProblem<M, L>& problem, const transp
 }
 
 /// run_strategy on the Lie-group scheme of the Cartan–Schouten connection of parameter `lambda`
-/// (lie_kernel.hpp; where lie_kernel_applies), at the shooting tolerance options.tol.
+/// (lie_kernel.hpp; where lie_kernel_applies).
 template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 GeneralSolution<manifolds::GroupManifold<G>> run_methods_lie(const GeneralProblem<manifolds::GroupManifold<G>, L>& problem,
                                                              double lambda, const transported::SolveOptions& options,
                                                              const GeneralGuess<manifolds::GroupManifold<G>>& guess) {
-  return run_strategy(problem, options, guess, LieKernel<G, L>{lie_kernel_problem(problem, lambda), options.tol});
+  return run_strategy(problem, options, guess, LieKernel<G, L>{lie_kernel_problem(problem, lambda)});
 }
 
 }  // namespace detail

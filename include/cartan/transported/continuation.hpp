@@ -246,11 +246,12 @@ Solution best_iterate(const Problem& problem, Solution* direct, const Solution* 
 }
 
 /// Continuation in T of any problem family (solve_continuation_in_T below; general/solve.hpp).
+/// `failed_direct`, when not null, is moved from.
 template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
 Solution continue_in_T(const Problem& problem, const ContinuationOptions& options,
                        std::optional<typename ShootingFamily<Problem>::Velocity> v0_guess,
                        std::optional<typename ShootingFamily<Problem>::Auxiliary> aux_guess,
-                       const Solution* failed_direct) {
+                       Solution* failed_direct) {
   using Family = ShootingFamily<Problem>;
   using Velocity = typename Family::Velocity;
   using Auxiliary = typename Family::Auxiliary;
@@ -275,7 +276,7 @@ Solution continue_in_T(const Problem& problem, const ContinuationOptions& option
   int sweeps = 0, iterations = 0;
   for (int halving = 0; halving <= options.max_halvings; ++halving, start /= 2) {
     if (halving == 0 && failed_direct != nullptr) {
-      direct = *failed_direct;
+      direct = std::move(*failed_direct);
       continue;
     }
     const Problem p = make(start);
@@ -338,7 +339,21 @@ TransportedSolution<G> solve_continuation_in_T(const TransportedProblem<G, L>& p
                                                const TransportedSolution<G>* failed_direct = nullptr) {
   problem.validate();
   options.validate();
-  return detail::continue_in_T(problem, options, v0_guess, xi0_guess, failed_direct);
+  std::optional<TransportedSolution<G>> direct;  // the path's own copy, moved from
+  if (failed_direct != nullptr) direct = *failed_direct;
+  return detail::continue_in_T(problem, options, v0_guess, xi0_guess, direct ? &*direct : nullptr);
+}
+
+/// The same, moving from `failed_direct` instead of copying it (its trajectory may be long).
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+TransportedSolution<G> solve_continuation_in_T(const TransportedProblem<G, L>& problem,
+                                               const ContinuationOptions& options,
+                                               std::optional<groups::TangentOf<G>> v0_guess,
+                                               std::optional<groups::CovectorOf<G>> xi0_guess,
+                                               TransportedSolution<G>&& failed_direct) {
+  problem.validate();
+  options.validate();
+  return detail::continue_in_T(problem, options, v0_guess, xi0_guess, &failed_direct);
 }
 
 /// Continuation in lambda from lambda_start (default 0, the classical left Euler–Poincaré case).

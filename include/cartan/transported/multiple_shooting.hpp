@@ -334,6 +334,7 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
     lifted_tolerance = report.residual_norm * 0.5 * options.tolerance / single;
     if (!(lifted_tolerance > 0)) break;  // single is inf (its sweep failed) or |r| is exactly 0
   }
+  ++solution.sweeps;
   const bool recorded = detail::record_solution(scheme, System::v0(*x), System::xi0(*x), nullptr, solution);
   const bool consistent =
       recorded && std::hypot(solution.terminal_error, solution.xi_terminal / xi_scale(problem)) <= options.tolerance;

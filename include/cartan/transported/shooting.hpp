@@ -72,6 +72,7 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
 
 /// Final recorded sweep shared by the solvers: fills trajectory and terminal figures. With
 /// `recorded` (the trajectory of a sweep from the same v0 and xi0), takes it instead of sweeping.
+/// The sweep it makes without `recorded` is the caller's to count, as the solvers' other sweeps.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 bool record_solution(const TransportedScheme<G, L>& scheme, const groups::TangentOf<G>& v0, const groups::CovectorOf<G>& xi0,
                      const std::vector<groups::CovectorOf<G>>* given_xi, TransportedSolution<G>& solution,
@@ -81,7 +82,6 @@ bool record_solution(const TransportedScheme<G, L>& scheme, const groups::Tangen
   } else {
     SweepOutput<G, L> out;
     out.trajectory = &solution.trajectory;
-    ++solution.sweeps;
     if (!forward_sweep(scheme, v0, xi0, given_xi, 0, out)) {
       solution.trajectory = {};  // never a partial trajectory
       return false;
@@ -94,10 +94,6 @@ bool record_solution(const TransportedScheme<G, L>& scheme, const groups::Tangen
   solution.xi_terminal = tr.xi.back().norm();
   return true;
 }
-
-}  // namespace detail
-
-namespace detail {
 
 /// The Lie-group scheme as a kernel of the shooting driver (numerics/shooting_driver.hpp): unknowns
 /// y = (v0, xi0), residual (log(gT^{-1} g_N), xi_N), the Jacobian by the tangent-linear sweep.
@@ -130,8 +126,7 @@ class TransportedShootingKernel final : public numerics::ShootingKernel {
     return numerics::SweepEnd::Done;
   }
 
-  bool record_result(const Eigen::VectorXd& y, int slot) override {
-    // record_solution counts its sweep in solution_.sweeps; solve_shooting then takes the driver's count.
+  bool record_result(const Eigen::VectorXd& y, int slot) override {  // the driver counts the sweep
     return record_solution(scheme_, groups::TangentOf<G>(y.head<n>()), groups::CovectorOf<G>(y.tail<n>()), nullptr,
                            solution_, slot >= 0 ? &buffers_[static_cast<std::size_t>(slot)] : nullptr);
   }

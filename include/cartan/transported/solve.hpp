@@ -177,16 +177,19 @@ TransportedSolution<G> collocation(const TransportedProblem<G, L>& problem, cons
   }
 }
 
+/// Shooting as `options` say; `failed_direct` (continuation in T), when not null, is moved from.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> shooting(const TransportedProblem<G, L>& problem, const SolveOptions& options,
-                                const SolveGuess<G>& guess, const TransportedSolution<G>* failed_direct = nullptr) {
+                                const SolveGuess<G>& guess, TransportedSolution<G>* failed_direct = nullptr) {
   const SolveMonitor stage = options.monitor.stage("shooting");
   ContinuationOptions c{.shooting = {.order = options.order, .tolerance = options.tol,
                                      .max_iterations = options.max_iterations, .monitor = &stage}};
   const std::optional<groups::TangentOf<G>> v0 = guess.start_v0();
   const std::optional<groups::CovectorOf<G>> xi0 = guess.start_xi0();
   switch (options.continuation) {
-    case Continuation::T: return solve_continuation_in_T(problem, c, v0, xi0, failed_direct);
+    case Continuation::T:
+      return failed_direct != nullptr ? solve_continuation_in_T(problem, c, v0, xi0, std::move(*failed_direct))
+                                      : solve_continuation_in_T(problem, c, v0, xi0);
     case Continuation::Lambda:
       return solve_continuation_in_lambda(problem, options.lambda_start.value_or(0.0), c);
     case Continuation::None: break;
@@ -252,7 +255,7 @@ TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const S
     TransportedSolution<G> r = solve_shooting(problem, s, guess.start_v0().value_or(geodesic_guess(problem)),
                                               guess.start_xi0().value_or(groups::CovectorOf<G>::Zero()));
     r.branch = guessed ? "direct from the given guess" : "direct from the geodesic guess";
-    if (halve_horizon && !r.converged() && !stopped()) direct_attempt = r;  // step 2 starts from it
+    if (halve_horizon && !r.converged() && !stopped()) direct_attempt = r;  // step 2 starts from it (moved)
     if (attempt("shooting", std::move(r))) return finish(true);
   }
   // 2. Continuation in T where a shorter horizon is an easier problem.

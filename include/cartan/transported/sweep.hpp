@@ -52,10 +52,10 @@ bool sweep_segment(const TransportedScheme<G, L>& scheme, SchemeNode<G> node,
     }
     std::size_t current = 0;
     // Until a sweep is timed, what follows a stop is projected: out.after_stop (the shooting
-    // driver's share), else a recording sweep into fresh storage, about 2 plain sweeps or 2/3 of a
-    // tangent-linear one (its pages are new; bench/README.md, "Interruption"; a stopped result has
-    // no action, solve.hpp), or nothing where the solver records its sweeps.
-    const double after_stop = out.after_stop >= 0 ? out.after_stop : out.trajectory ? 0.0 : tangent ? 2.0 / 3 : 2.0;
+    // driver's share), else by kind.
+    const double after_stop = out.after_stop >= 0
+                                  ? out.after_stop
+                                  : SolveMonitor::sweeps_after_stop(out.trajectory != nullptr, tangent.has_value());
     for (int k = first; k < last; ++k) {
       if (SolveMonitor::stop_pending_at(out.monitor, k - first, scheme.problem().N, begin, after_stop)) {
         out.failure = SolveMonitor::stopped_message(k);

@@ -59,10 +59,10 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
       failure = out.failure;
       return false;
     }
-    // After a stop: a recording sweep into fresh storage, about two plain sweeps (a tangent-linear
-    // sweep costs about three plain ones; a stopped result has no action, solve.hpp).
+    // After a stop: a recording sweep (these sweeps record nothing).
     if (options.monitor) {
-      options.monitor->reserve_after_stop((std::chrono::steady_clock::now() - begin) * 2 / (columns > 0 ? 3 : 1));
+      options.monitor->reserve_after_stop(std::chrono::duration_cast<std::chrono::nanoseconds>(
+          (std::chrono::steady_clock::now() - begin) * SolveMonitor::sweeps_after_stop(false, columns > 0)));
     }
     const groups::TangentOf<G> rg = scheme.terminal_residual(out.last);
     r = rg;
@@ -126,6 +126,7 @@ TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, 
   }
   if (!decided(solution.status)) solution.status = Status::OuterNotConverged;
   // Step 6: the trajectory for the final {xi_k}.
+  ++solution.sweeps;
   if (!detail::record_solution(scheme, groups::TangentOf<G>(v0), groups::CovectorOf<G>::Zero(), &xi, solution)) {
     solution.status = Status::NonFinite;
   }
