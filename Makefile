@@ -61,8 +61,8 @@ compile-asan:
 
 # Label `install` (the fresh-clone `pip install`, which compiles everything again): make test-install.
 RUN_RELEASE_TESTS = ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -LE install
-RUN_ASAN_TESTS = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-	  ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -LE fuzz
+SANITIZER_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+RUN_ASAN_TESTS = $(SANITIZER_ENV) ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -LE fuzz
 RUN_FUZZ_TESTS = ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -L fuzz
 
 test-release: build deps-docs
@@ -87,10 +87,11 @@ fuzz: build-asan
 	    $(BUILD_ASAN)/tests/fuzz/corpus/$$target tests/fuzz/corpus/$$target || exit 1; \
 	done
 
+# make test: both trees compiled together (build-trees), the release tests, then the sanitizer
+# tests and the fuzzers in one ctest (the fuzzers first, the tests beside them).
 test: build-trees deps-docs
 	$(RUN_RELEASE_TESTS)
-	$(RUN_ASAN_TESTS)
-	$(RUN_FUZZ_TESTS)
+	$(SANITIZER_ENV) ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS)
 
 # `pip install --no-build-isolation` of a fresh clone of HEAD into a fresh virtual environment, then
 # `import cartan` from elsewhere (tests/package/pip_install.py; compiles the module: ~15-20 CPU-minutes).
