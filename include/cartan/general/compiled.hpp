@@ -5,8 +5,8 @@
 // Christoffel symbols, charts of dimension 2 and 3, and SO(3), H3, SE(2), SE(3) with any
 // left-invariant connection. Including this header instead of instantiating them costs a unit
 // seconds rather than tens of seconds per manifold (bench/README.md, "Build time"); the
-// definitions are in src/general/, one unit per manifold. Any other (manifold, Lagrangian) pair is
-// instantiated where it is used, as before.
+// definitions are in src/general/, one file per manifold, compiled in unity groups (CMakeLists.txt).
+// Any other (manifold, Lagrangian) pair is instantiated where it is used, as before.
 
 #include "cartan/general/erased_lagrangian.hpp"
 #include "cartan/general/solve.hpp"

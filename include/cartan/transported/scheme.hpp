@@ -71,11 +71,12 @@ struct TransportedTrajectory {
     const std::size_t m = t.size();
     if (m < 2) throw_invalid(where, "trajectory.t.size()", std::to_string(m), "must be at least 2");
     if (g.size() != m || v.size() != m || xi.size() != m || (with_mu && mu.size() != m)) {
-      throw_invalid(where, "trajectory", "(" + std::to_string(m) + " times)",
+      // Appended, not "(" + std::string: GCC 12's -Wrestrict misreads that pattern once inlined.
+      throw_invalid(where, "trajectory", std::string("(").append(std::to_string(m)).append(" times)"),
                     with_mu ? "needs g, v, mu and xi at every time" : "needs g, v and xi at every time");
     }
     for (std::size_t k = 0; k < m; ++k) {
-      const std::string row = " (row " + std::to_string(k) + ")";
+      const std::string row = std::string(" (row ").append(std::to_string(k)).append(")");
       require_finite(v[k], where, "trajectory.v" + row);
       require_finite(xi[k], where, "trajectory.xi" + row);
       if (with_mu) require_finite(mu[k], where, "trajectory.mu" + row);
