@@ -108,6 +108,7 @@ bench: build
 	mkdir -p out
 	$(BUILD)/bench/bench_transported --benchmark_min_time=0.2 | tee out/bench_transported.txt
 	$(BUILD)/bench/bench_scheme | tee out/bench_scheme.txt
+	$(BUILD)/bench/bench_library --benchmark_repetitions=5 --benchmark_report_aggregates_only=true | tee out/bench_library.txt
 	/usr/bin/python3 bench/compare_with_python.py --module $(BUILD)/python --repeat 3 --markdown out/bench_compare.md
 	/usr/bin/python3 bench/compare_collocation.py --cartan $(BUILD)/cartan --bench $(BUILD)/bench/bench_collocation --markdown out/bench_collocation.md
 	/usr/bin/python3 bench/compare_collocation_warm.py --timer $(BUILD)/bench/collocation_timer --markdown out/bench_collocation_warm.md
