@@ -8,7 +8,7 @@ FUZZ_RUNS ?= 1000000
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps deps-docs docs build build-asan build-fuzz fuzz test test-release test-asan test-fuzz test-install run bench clean
+.PHONY: all deps deps-docs docs build build-asan build-trees compile-release compile-asan build-fuzz fuzz test test-release test-asan test-fuzz test-install run bench clean
 
 all: build
 
@@ -53,7 +53,6 @@ build-trees: deps
 	$(CONFIGURE_ASAN)
 	+$(MAKE) --no-print-directory -j $(JOBS) compile-release compile-asan
 
-.PHONY: build-trees compile-release compile-asan
 compile-release:
 	+$(MAKE) --no-print-directory -C $(BUILD)
 compile-asan:
@@ -62,21 +61,20 @@ compile-asan:
 # Label `install` (the fresh-clone `pip install`, which compiles everything again): make test-install.
 RUN_RELEASE_TESTS = ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -LE install
 SANITIZER_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-RUN_ASAN_TESTS = $(SANITIZER_ENV) ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -LE fuzz
-RUN_FUZZ_TESTS = ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -L fuzz
+RUN_SANITIZER_TESTS = $(SANITIZER_ENV) ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS)
 
 test-release: build deps-docs
 	$(RUN_RELEASE_TESTS)
 
 test-asan: build-asan
-	$(RUN_ASAN_TESTS)
+	$(RUN_SANITIZER_TESTS) -LE fuzz
 
 # libFuzzer targets (tests/fuzz/README.md), in the sanitizer build: each target over its corpus,
 # then FUZZ_SECONDS of fuzzing each; fails on any finding.
 build-fuzz: build-asan
 
 test-fuzz: build-asan
-	$(RUN_FUZZ_TESTS)
+	$(RUN_SANITIZER_TESTS) -L fuzz
 
 # A long campaign: FUZZ_RUNS executions per target; new inputs in $(BUILD_ASAN)/tests/fuzz/corpus.
 fuzz: build-asan
@@ -91,7 +89,7 @@ fuzz: build-asan
 # tests and the fuzzers in one ctest (the fuzzers first, the tests beside them).
 test: build-trees deps-docs
 	$(RUN_RELEASE_TESTS)
-	$(SANITIZER_ENV) ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS)
+	$(RUN_SANITIZER_TESTS)
 
 # `pip install --no-build-isolation` of a fresh clone of HEAD into a fresh virtual environment, then
 # `import cartan` from elsewhere (tests/package/pip_install.py; compiles the module: ~15-20 CPU-minutes).

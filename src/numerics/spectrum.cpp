@@ -9,18 +9,13 @@
 namespace cartan::numerics {
 namespace {
 
-/// The eigenvalues of `a` by Eigen's self-adjoint solver at the fixed size n: the orders of the
-/// shipped manifolds and groups (2, 3 and 6); other orders take the dynamic-size path.
+/// The eigenvalues of `a`, ascending, by Eigen's self-adjoint solver at the fixed size n (without
+/// allocation): the orders of the shipped manifolds and groups (2, 3 and 6); other orders take the
+/// dynamic-size path.
 template <int n>
-Eigen::VectorXd eigenvalues_of_order(const Eigen::Ref<const Eigen::MatrixXd>& a) {
+Eigen::Matrix<double, n, 1> eigenvalues_of_order(const Eigen::Ref<const Eigen::MatrixXd>& a) {
   using Matrix = Eigen::Matrix<double, n, n>;
   return Eigen::SelfAdjointEigenSolver<Matrix>(Matrix(a), Eigen::EigenvaluesOnly).eigenvalues();
-}
-
-template <int n>
-double smallest_of_order(const Eigen::Ref<const Eigen::MatrixXd>& a) {
-  using Matrix = Eigen::Matrix<double, n, n>;
-  return Eigen::SelfAdjointEigenSolver<Matrix>(Matrix(a), Eigen::EigenvaluesOnly).eigenvalues()[0];
 }
 
 }  // namespace
@@ -38,9 +33,9 @@ Eigen::VectorXd symmetric_eigenvalues(const Eigen::Ref<const Eigen::MatrixXd>& a
 double smallest_symmetric_eigenvalue(const Eigen::Ref<const Eigen::MatrixXd>& a) {
   switch (a.rows()) {
     case 0: return std::numeric_limits<double>::quiet_NaN();
-    case 2: return smallest_of_order<2>(a);
-    case 3: return smallest_of_order<3>(a);
-    case 6: return smallest_of_order<6>(a);
+    case 2: return eigenvalues_of_order<2>(a)[0];
+    case 3: return eigenvalues_of_order<3>(a)[0];
+    case 6: return eigenvalues_of_order<6>(a)[0];
     default: return symmetric_eigenvalues(a)[0];
   }
 }
