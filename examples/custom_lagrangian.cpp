@@ -12,7 +12,7 @@
 
 #include "cartan/mechanics/lagrangian_hessian.hpp"
 #include "cartan/groups/so3.hpp"
-#include "cartan/transported/continuation.hpp"
+#include "cartan/transported/compiled.hpp"  // the library's solve for the erased Lagrangian
 
 /// The four required members; no `hessian`, so the solvers differentiate momentum and
 /// group_gradient by central differences (lagrangian_hessian.hpp).
@@ -82,9 +82,13 @@ cartan::transported::TransportedSolution<cartan::groups::SO3> solve(const L& top
   const cartan::groups::SO3::Element gT =
       cartan::groups::SO3::minimal_rotation(Eigen::Vector3d(-0.7, -1, -0.7), Eigen::Vector3d(0.8, 0.8, 1));
   const cartan::transported::TransportedProblem<cartan::groups::SO3, L> problem{top, lambda, 3.0, steps, cartan::groups::SO3::identity(), gT};
-  cartan::transported::ContinuationOptions options;  // the CLI's default path: shooting, continued in T if needed
-  options.shooting = {.order = cartan::transported::SchemeOrder::Second, .tolerance = tol};
-  return cartan::transported::solve_continuation_in_T(problem, options);
+  cartan::transported::SolveOptions options;  // shooting, continued in T if it fails from the guess
+  options.method = cartan::transported::Method::Shooting;
+  options.continuation = cartan::transported::Continuation::T;
+  options.order = cartan::transported::SchemeOrder::Second;
+  options.tol = tol;
+  // Behind the erased Lagrangian: the library's compiled solve, so this file instantiates no solver.
+  return cartan::transported::solve(cartan::transported::erased(problem), options);
 }
 
 void print(const char* label, const cartan::transported::TransportedSolution<cartan::groups::SO3>& s) {

@@ -1,6 +1,7 @@
 #pragma once
 // `<Group>._solve(...)`: the library's solve (include/cartan/transported/solve.hpp) for the
-// listed built-in models and any Lagrangian written in Python, with the CLI's method names and
+// listed built-in models and any Lagrangian written in Python (behind the erased Lagrangian, whose
+// solve and verify the library compiles: transported/compiled.hpp), with the CLI's method names and
 // options (SolveOptions). Nothing is decided here: the options are translated, the library runs,
 // and its result becomes a dict of SolveResult's fields (python/cartan/__init__.py).
 //
@@ -21,10 +22,36 @@
 #include "bind_models.hpp"
 #include "report_dict.hpp"
 #include "cartan/transported/along.hpp"
-#include "cartan/transported/solve.hpp"
-#include "cartan/verify/report.hpp"
+#include "cartan/transported/compiled.hpp"
 
 namespace cartan::python {
+
+/// A Lagrangian written in Python as the solvers take it: the erased Lagrangian (`Solved`), whose
+/// solve and verify are compiled in the library, keeping the adapter's callback state.
+template <groups::LieGroup G>
+class ErasedPythonLagrangian : public mechanics::ErasedLagrangian<G> {
+ public:
+  using Solved = mechanics::ErasedLagrangian<G>;
+  explicit ErasedPythonLagrangian(const py::object& object) : ErasedPythonLagrangian(PythonLagrangian<G>(object)) {}
+  const CallbackState& state() const { return python_.state(); }
+
+ private:
+  explicit ErasedPythonLagrangian(const PythonLagrangian<G>& python) : Solved(python), python_(python) {}
+  PythonLagrangian<G> python_;
+};
+
+/// The type a model is solved as: a built-in model as itself, a Python one as its `Solved` type.
+template <class L>
+struct SolvedAs {
+  using type = L;
+};
+template <class L>
+  requires requires { typename L::Solved; }
+struct SolvedAs<L> {
+  using type = typename L::Solved;
+};
+template <class L>
+using SolvedAsT = typename SolvedAs<std::decay_t<L>>::type;
 
 /// The options as Python gives them; `options()` translates them for the library.
 struct SolveRequest {
@@ -183,8 +210,8 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
                                             const py::object& v0, const py::object& xi0, const py::object& guess,
                                             const py::object& progress) {
       const SolveCall<G> call(a, g0, gT, request, v0, xi0, guess, progress);
-      return reply(visit_model<PythonLagrangian<G>, Models...>(model, [&](const auto& l) {
-        using L = std::decay_t<decltype(l)>;
+      return reply(visit_model<ErasedPythonLagrangian<G>, Models...>(model, [&](const auto& l) {
+        using L = SolvedAsT<decltype(l)>;
         return run(transported::TransportedProblem<G, L>{l, lambda, T, N, call.g0, call.gT}, call);
       }), call, lambda, T, N);
     }, py::arg("lagrangian"), py::arg("lam"), py::arg("T"), py::arg("N"), py::arg("g0"), py::arg("gT"),
@@ -193,7 +220,7 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
   def_entry("_solve", [](const auto& problem, const SolveCall<G>& call) {
     SolvedAlong<G> out{transported::solve(problem, call.options, call.guess), std::nullopt};
     if (!stopped_on_request(out.solution.status)) {
-      out.along = transported::along_solution<G>(problem.lagrangian, problem.lambda, out.solution.trajectory);
+      out.along = transported::along_solution<G>(mechanics::ErasedLagrangian<G>(problem.lagrangian), problem.lambda, out.solution.trajectory);
     }
     return out;
   }, [a](SolvedAlong<G>&& s, const SolveCall<G>& call, double lambda, double T, int N) {
@@ -212,10 +239,13 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
     const groups::ElementOf<G> first = a.element(g0, "verify", "g0"), last = a.element(gT, "verify", "gT");
     const Status outcome = parse_enum<Status>(status, "cartan.verify");
     if (x.t.empty() && outcome != Status::Converged) return report_dict(verify::unchecked_failure(outcome));
-    const verify::Report report = visit_model<PythonLagrangian<G>, Models...>(model, [&](const auto& l) {
-      using L = std::decay_t<decltype(l)>;
-      const int steps = std::max<int>(1, static_cast<int>(x.t.size()) - 1);
-      return verify::verify_trajectory(transported::TransportedProblem<G, L>{l, lambda, T, steps, first, last}, x, order, tol, outcome);
+    const int steps = std::max<int>(1, static_cast<int>(x.t.size()) - 1);
+    // Every model behind the erased Lagrangian, whose verify the library compiles (the same
+    // evaluations, so the same figures as the model's own type would give).
+    const verify::Report report = visit_model<ErasedPythonLagrangian<G>, Models...>(model, [&](const auto& l) {
+      return verify::verify_trajectory(
+          transported::ErasedProblem<G>{mechanics::ErasedLagrangian<G>(l), lambda, T, steps, first, last}, x, order, tol,
+          outcome);
     });
     return report_dict(report);
   }, py::arg("lagrangian"), py::arg("result"), py::arg("lam"), py::arg("T"), py::arg("g0"), py::arg("gT"),
@@ -225,8 +255,8 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
     py::dict d;
     add_along_fields<G>(d, std::optional<transported::AlongSolution<G>>(
                                model.is_none() ? transported::along_transport<G>(lambda, x)
-                                               : visit_model<PythonLagrangian<G>, Models...>(model, [&](const auto& l) {
-                                                   return transported::along_solution<G>(l, lambda, x);
+                                               : visit_model<ErasedPythonLagrangian<G>, Models...>(model, [&](const auto& l) {
+                                                   return transported::along_solution<G>(mechanics::ErasedLagrangian<G>(l), lambda, x);
                                                  })),
                         !model.is_none());
     return d;

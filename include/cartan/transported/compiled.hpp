@@ -1,0 +1,51 @@
+#pragma once
+// The transported solve and verify (solve.hpp, verify/report.hpp) compiled once in the library for
+// the erased Lagrangian (mechanics/erased_lagrangian.hpp; `erased(problem)` wraps any problem's)
+// on every shipped group: SO(3), H3, SE(2), SE(3). Including this header instead of instantiating
+// them costs a unit seconds rather than tens of seconds per Lagrangian (bench/README.md, "Build
+// time"); the definitions are in src/transported/, one file per group, compiled in the library's
+// `transported` unity group (CMakeLists.txt). The Python module solves its Lagrangians written in
+// Python through them. Built-in models keep their own compiled instantiations (solve.hpp).
+
+#include "cartan/groups/heisenberg.hpp"
+#include "cartan/groups/se2.hpp"
+#include "cartan/groups/se3.hpp"
+#include "cartan/groups/so3.hpp"
+#include "cartan/mechanics/erased_lagrangian.hpp"
+#include "cartan/transported/solve.hpp"
+#include "cartan/verify/report.hpp"
+
+namespace cartan::transported {
+
+/// The problem of the compiled solve on G (compiled.hpp): any Lagrangian behind the erased type.
+template <groups::LieGroup G>
+using ErasedProblem = TransportedProblem<G, mechanics::ErasedLagrangian<G>>;
+
+/// `problem` with its Lagrangian behind the erased type (for the compiled solve and verify).
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+ErasedProblem<G> erased(const TransportedProblem<G, L>& problem) {
+  return {mechanics::ErasedLagrangian<G>(problem.lagrangian), problem.lambda, problem.T, problem.N, problem.g0, problem.gT};
+}
+
+}  // namespace cartan::transported
+
+/// The shipped groups, one X(G) each (the list of the header comment).
+#define CARTAN_TRANSPORTED_SHIPPED_GROUPS(X) \
+  X(::cartan::groups::SO3)                   \
+  X(::cartan::groups::Heisenberg)            \
+  X(::cartan::groups::SE2)                   \
+  X(::cartan::groups::SE3)
+
+/// `extern template` (declaration) or `template` (definition, in src/transported/) of the solve
+/// and the verifier for the erased Lagrangian on G.
+#define CARTAN_TRANSPORTED_COMPILED(prefix, G)                                                                  \
+  prefix ::cartan::transported::TransportedSolution<G> cartan::transported::solve(                             \
+      const ::cartan::transported::ErasedProblem<G>&, const ::cartan::transported::SolveOptions&,              \
+      const ::cartan::transported::SolveGuess<G>&);                                                            \
+  prefix ::cartan::verify::Report cartan::verify::verify_trajectory(                                            \
+      const ::cartan::transported::ErasedProblem<G>&, ::cartan::transported::TransportedTrajectory<G>, int, double, \
+      ::cartan::Status);
+
+#define CARTAN_TRANSPORTED_EXTERN(G) CARTAN_TRANSPORTED_COMPILED(extern template, G)
+CARTAN_TRANSPORTED_SHIPPED_GROUPS(CARTAN_TRANSPORTED_EXTERN)
+#undef CARTAN_TRANSPORTED_EXTERN
