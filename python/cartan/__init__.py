@@ -383,7 +383,8 @@ class GeneralSolveResult:
     """The result of :func:`solve_general`, with the vocabulary of :class:`SolveResult`.
 
     status: one of :data:`STATUSES`; success (also `converged`): status == "converged"; message,
-    method ("shooting" or "collocation"), order, branch: as in SolveResult; manifold: the manifold's
+    method ("shooting" or "collocation"; on the Lie-group kernel also "multiple-shooting" and
+    "two-level"), order, branch: as in SolveResult; manifold: the manifold's
     name; T, N, q0, qT, tol: the problem and the requested tolerance.
     t (N+1,), q (N+1, ``*point_shape``): the nodes and points (collocation: the final mesh or the
     `samples` times); frame (N+1, d, m): the parallel frame
@@ -442,7 +443,8 @@ class GeneralSolveResult:
 def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, potential_gradient=None, gravity=None,
                   lagrangian=None, frame0=None, method="auto", continuation="none", order=1,
                   tol=_cartan.defaults["tol"], max_iterations=_cartan.defaults["max_iterations"], v0=None,
-                  Xi0=None, guess=None, samples=0, max_nodes=None, time_limit=None, progress=None):
+                  Xi0=None, guess=None, samples=0, max_nodes=None, time_limit=None, progress=None,
+                  segments: Optional[int] = None, lambda_start: Optional[float] = None):
     """Solves the transported-velocity boundary-value problem on a manifold with any linear connection
     (docs/general-connections.md; the library's general::solve): on [0, T] with N steps, q(0) = q0,
     q(T) = qT, for l(q, v) with v the components of the transported velocity in the frame `frame0`
@@ -468,12 +470,14 @@ def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, poten
     method: "auto" (shooting from the guess, then continuation in T, then collocation), "shooting"
     (with continuation "none" or "T") or "collocation" of the continuous system (fourth order,
     adaptive mesh; from `guess` or the geodesic guess, and with continuation "T" from the order-2
-    shooting solution when Newton fails from the geodesic guess); the Lie-group solver's other
-    methods need cartan.solve. On a GroupManifold with connection "cartan-schouten" (lam given) and
-    the default frame0, shooting and continuation in T run on the Lie-group kernel, the scheme of
-    cartan.solve with 2 dim unknowns instead of dim + dim^2, and the result is converted to this
-    scheme's (the same discrete equations: frame = P, Xi rebuilt; docs/general-connections.md,
-    "The Lie-group kernel"); its message starts "Lie-group kernel". tol: shooting, on the
+    shooting solution when Newton fails from the geodesic guess). On a GroupManifold with connection
+    "cartan-schouten" (lam given) and the default frame0, shooting and continuation in T run on the
+    Lie-group kernel, the scheme of cartan.solve with 2 dim unknowns instead of dim + dim^2, and the
+    result is converted to this scheme's (the same discrete equations: frame = P, Xi rebuilt;
+    docs/general-connections.md, "The Lie-group kernel"); its message starts "Lie-group kernel".
+    There the kernel's own methods are available too, as :func:`solve` runs them: "multiple-shooting"
+    (`segments`), "two-level", and "shooting" with continuation "lambda" (from `lambda_start`,
+    default 0); anywhere else they are refused by name. "variational" is :func:`solve`'s only. tol: shooting, on the
     dimensionless terminal residual ``|(difference(qT, q_N), Xi_N / s)|`` (on the Lie-group kernel
     ``|(log(qT^-1 q_N), xi_N / s)|``, xi = C(Xi)); collocation, on the relative RMS residual per interval.
     max_iterations: Levenberg-Marquardt (Newton) iterations per stage (per mesh). v0 (m,), Xi0 (m, m):
@@ -490,7 +494,8 @@ def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, poten
     """
     check_types("cartan.solve_general", dict(T=T, N=N, method=method, continuation=continuation,
                                              order=order, tol=tol, max_iterations=max_iterations, samples=samples,
-                                             max_nodes=max_nodes, time_limit=time_limit))
+                                             max_nodes=max_nodes, time_limit=time_limit, segments=segments,
+                                             lambda_start=lambda_start))
     request = _cartan._GeneralRequest()
     request.T, request.N, request.q0, request.qT = T, N, q0, qT
     request.inertia, request.potential, request.potential_gradient = inertia, potential, potential_gradient
@@ -498,6 +503,7 @@ def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, poten
     request.method, request.continuation, request.order, request.tol = method, continuation, order, tol
     request.max_iterations, request.v0, request.Xi0, request.progress = max_iterations, v0, Xi0, progress
     request.guess, request.samples, request.max_nodes, request.time_limit = guess, samples, max_nodes, time_limit
+    request.segments, request.lambda_start = segments, lambda_start
     return GeneralSolveResult(**_cartan._solve_general(manifold, request))
 
 

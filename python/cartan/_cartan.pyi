@@ -936,6 +936,8 @@ class _GeneralRequest(metaclass=type):
     max_nodes: Any
     time_limit: Any
     guess: Any
+    segments: Any
+    lambda_start: Any
 
 def _solve_general(manifold: Any, request: _GeneralRequest) -> dict: ...
 

@@ -62,7 +62,9 @@ void bind_general(py::module_& m) {
       .def_readwrite("samples", &GeneralRequest::samples)
       .def_readwrite("max_nodes", &GeneralRequest::max_nodes)
       .def_readwrite("time_limit", &GeneralRequest::time_limit)
-      .def_readwrite("guess", &GeneralRequest::guess);
+      .def_readwrite("guess", &GeneralRequest::guess)
+      .def_readwrite("segments", &GeneralRequest::segments)
+      .def_readwrite("lambda_start", &GeneralRequest::lambda_start);
   m.def("_solve_general", [](const py::object& manifold, const GeneralRequest& request) {
     return visit_manifold(manifold, [&](const auto& mf, ChartCallbacks* chart) { return solve_on(mf, request, chart); });
   }, py::arg("manifold"), py::arg("request"));

@@ -304,6 +304,7 @@ struct GeneralRequest {
   py::object v0 = py::none(), Xi0 = py::none(), progress = py::none();
   int samples = 0;
   py::object max_nodes = py::none(), guess = py::none(), time_limit = py::none();
+  py::object segments = py::none(), lambda_start = py::none();  ///< the Lie-group kernel's methods
 };
 
 inline constexpr const char* kWhere = "cartan.solve_general";
@@ -447,6 +448,8 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   options.samples = r.samples;
   if (!r.max_nodes.is_none()) options.max_nodes = number_arg<int>(r.max_nodes, where, "max_nodes");
   if (!r.time_limit.is_none()) options.time_limit = number_arg<double>(r.time_limit, where, "time_limit");
+  if (!r.segments.is_none()) options.segments = number_arg<int>(r.segments, where, "segments");
+  if (!r.lambda_start.is_none()) options.lambda_start = number_arg<double>(r.lambda_start, where, "lambda_start");
   options.monitor = python_monitor(r.progress).stage("general shooting");  // copied here, with the GIL
   general::GeneralGuess<M> guess;
   if (!r.v0.is_none()) guess.v0 = finite_arg<ComponentsOf<M>>(r.v0, where, "v0");

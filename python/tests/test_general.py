@@ -228,6 +228,32 @@ def test_so3_cartan_schouten_equals_the_lambda_solver(order):
     assert cartan.verify_general(gen, manifold, inertia=[2.0, 3.0, 4.0]).passed
 
 
+@pytest.mark.parametrize("method, options", [("multiple-shooting", dict(segments=4)), ("two-level", {}),
+                                             ("shooting", dict(continuation="lambda"))])
+def test_the_lie_group_methods_are_the_kernels_on_cartan_schouten(method, options):
+    """The Lie-group kernel's own methods through solve_general on GroupManifold("so3", lam): the
+    nodes of cartan.solve by the same method (both stop at tol 1e-10 on the same discrete equations;
+    the two-level scheme on the change of xi, hence 1e-7), the frame P and C(Xi) = xi rebuilt, and
+    verify_general passes; on the sphere the same method is refused by name, and "variational" (the
+    Lie-group solve's only) on every manifold."""
+    kwargs = dict(T=3.0, N=100, method=method, **options)
+    manifold = GroupManifold("so3", "cartan-schouten", lam=0.3)
+    lie = cartan.solve(cartan.RigidBody([2.0, 3.0, 4.0]), lam=0.3, gT=GT, **kwargs)
+    gen = cartan.solve_general(manifold, q0=np.eye(3), qT=GT, inertia=[2.0, 3.0, 4.0], **kwargs)
+    assert lie.converged and gen.converged, (lie.message, gen.message)
+    assert "Lie-group kernel" in gen.message and gen.method == lie.method == method
+    atol = 1e-7 if method == "two-level" else 1e-8
+    np.testing.assert_allclose(gen.q, lie.g, atol=atol)
+    np.testing.assert_allclose(gen.mu, lie.mu, atol=atol)
+    np.testing.assert_allclose(gen.frame, lie.P, atol=atol)
+    np.testing.assert_allclose(aux_to_xi(manifold, gen.Xi[-1]), lie.xi[-1], atol=atol)
+    assert cartan.verify_general(gen, manifold, inertia=[2.0, 3.0, 4.0]).passed
+    with pytest.raises(ValueError, match="not available for a general connection|continuation = lambda"):
+        cartan.solve_general(Sphere(), **{**SPHERE_ARGS, "method": method, **options})
+    with pytest.raises(ValueError, match="the Lie-group solve only"):
+        cartan.solve_general(manifold, q0=np.eye(3), qT=GT, T=3.0, N=100, method="variational")
+
+
 def sphere_energy(r, A, G):
     return 0.5 * np.einsum("ki,ij,kj->k", r.v, A, r.v) + G * r.q[:, 2]
 

@@ -39,6 +39,7 @@
 #include "cartan/mechanics/free_body.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
 #include "cartan/mechanics/rigid_body.hpp"
+#include "cartan/transported/along.hpp"
 #include "cartan/transported/solve.hpp"  // the Lie-group solve, instantiated in the library
 #include "general_cases.hpp"
 #include "test_support.hpp"
@@ -317,6 +318,77 @@ TEST(LieKernel, GuessesAndOptionsMapOntoTheLieKernel) {
   EXPECT_EQ(collocated.method, Method::Collocation);
   EXPECT_EQ(collocated.order, kCollocationOrder);
   EXPECT_FALSE(has(collocated.message, "Lie-group kernel")) << collocated.message;
+}
+
+// The Lie-group kernel's own methods through general::solve (solve.hpp, header comment): multiple
+// shooting, two-level and shooting continued in lambda run as transported::solve runs them on the
+// paper's problem, so the nodes are the Lie-group solve's by the same method (both stop at tol 1e-10
+// on the same discrete equations, 1e-8 at the nodes; the two-level scheme stops on the change of xi,
+// 1e-7), with the frame rebuilt as the transport P_k = Ad(h_k) and Xi_N = C^+ xi_N. Anywhere else
+// (another connection, a frame0 other than the identity, the sphere) they are refused by name, and
+// the variational method everywhere.
+TEST(LieKernel, TheLieGroupMethodsAreTheKernelsCapabilities) {
+  const auto lie_problem = paper_oscillator(0.3, 100, 3);
+  const auto p = on_cartan_schouten(lie_problem);
+  struct Case {
+    Method method;
+    transported::Continuation continuation;
+    double tolerance;
+  };
+  for (const Case c : {Case{Method::MultipleShooting, transported::Continuation::None, 1e-8},
+                       Case{Method::TwoLevel, transported::Continuation::None, 1e-7},
+                       Case{Method::Shooting, transported::Continuation::Lambda, 1e-8}}) {
+    transported::SolveOptions options;
+    options.method = c.method;
+    options.continuation = c.continuation;
+    const std::string name = std::string(to_string(c.method)) + " " + std::string(to_string(c.continuation));
+    const auto reference = transported::solve(lie_problem, options);
+    const auto s = general::solve(p, options);
+    ASSERT_TRUE(reference.converged()) << name << ": " << reference.message;
+    ASSERT_TRUE(s.converged()) << name << ": " << s.message;
+    EXPECT_EQ(s.method, reference.method) << name;
+    EXPECT_TRUE(has(s.message, "Lie-group kernel")) << name << ": " << s.message;
+    EXPECT_LE(max_gap(s.trajectory.q, reference.trajectory.g), c.tolerance) << name;
+    EXPECT_LE(max_gap(s.trajectory.mu, reference.trajectory.mu), c.tolerance) << name;
+    EXPECT_LE(s.terminal_error, 1e-9) << name;
+    // The rebuilt frame and Xi: Ad of the transport, and Xi_N = C^+ xi_N.
+    ASSERT_EQ(s.trajectory.frame.size(), s.trajectory.t.size()) << name;
+    ASSERT_EQ(s.trajectory.Xi.size(), s.trajectory.t.size()) << name;
+    const auto P = transported::along_transport<groups::SO3>(lie_problem.lambda, reference.trajectory).P;
+    EXPECT_LE(max_gap(s.trajectory.frame, P), c.tolerance) << name;
+    EXPECT_NEAR_MATRIX(general::aux_to_xi<groups::SO3>(s.trajectory.Xi.back()), reference.trajectory.xi.back(),
+                       c.tolerance) << name;
+  }
+  // A guess trajectory enters as the Lie-group solver's (xi = C(Xi)): from the solution itself,
+  // multiple shooting stops at once.
+  transported::SolveOptions multiple;
+  multiple.method = Method::MultipleShooting;
+  const auto first = general::solve(p, multiple);
+  ASSERT_TRUE(first.converged()) << first.message;
+  GeneralGuess<SO3Manifold> start;
+  start.trajectory = first.trajectory;
+  const auto again = general::solve(p, multiple, start);
+  ASSERT_TRUE(again.converged()) << again.message;
+  EXPECT_LE(again.iterations, 1);
+
+  // Refused by name where the kernel does not apply, and continuation in lambda with collocation.
+  auto levi_civita = p;
+  levi_civita.manifold = SO3Manifold::levi_civita(Eigen::Matrix3d::Identity());
+  expect_invalid([&] { (void)general::solve(levi_civita, multiple); },
+                 {"multiple-shooting", "not available for a general connection"});
+  auto rotated = p;
+  rotated.frame0 = groups::SO3::exp(Eigen::Vector3d(0.1, 0.2, 0.3));
+  transported::SolveOptions in_lambda;
+  in_lambda.method = Method::Shooting;
+  in_lambda.continuation = transported::Continuation::Lambda;
+  expect_invalid([&] { (void)general::solve(rotated, in_lambda); }, {"continuation = lambda", "identity frame0"});
+  transported::SolveOptions collocation_in_lambda;
+  collocation_in_lambda.method = Method::Collocation;
+  collocation_in_lambda.continuation = transported::Continuation::Lambda;
+  expect_invalid([&] { (void)general::solve(p, collocation_in_lambda); }, {"continuation = lambda", "collocation"});
+  transported::SolveOptions variational;
+  variational.method = Method::Variational;
+  expect_invalid([&] { (void)general::solve(p, variational); }, {"variational", "the Lie-group solve only"});
 }
 
 // Design §5.4, item 5: the general kernel everywhere else: another connection, Cartan–Schouten

@@ -145,15 +145,21 @@ LieKernelProblem<G, L> lie_kernel_problem(const GeneralProblem<manifolds::GroupM
            problem.qT}};
 }
 
-/// Whether general::solve runs its shooting on the Lie-group kernel (design §1.3, §5.2): a
-/// Cartan–Schouten connection given by its lambda (GroupManifold::cartan_schouten; the same
-/// connection given by its coefficients keeps the general kernel), frame0 unset or exactly the
-/// identity, and a shooting method (collocation is the general one).
+/// Whether the general problem is the Lie-group kernel's (design §1.3, §5.2): a Cartan–Schouten
+/// connection given by its lambda (GroupManifold::cartan_schouten; the same connection given by its
+/// coefficients keeps the general kernel) and frame0 unset or exactly the identity.
+template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
+bool lie_kernel_available(const GeneralProblem<manifolds::GroupManifold<G>, L>& problem) {
+  return problem.manifold.cartan_schouten_lambda().has_value() &&
+         (!problem.frame0 || *problem.frame0 == groups::AlgebraMatrixOf<G>::Identity());
+}
+
+/// Whether general::solve runs its shooting on the Lie-group kernel: where it is available and the
+/// method shoots (collocation is the general one).
 template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 bool lie_kernel_applies(const GeneralProblem<manifolds::GroupManifold<G>, L>& problem,
                         const transported::SolveOptions& options) {
-  return problem.manifold.cartan_schouten_lambda().has_value() && options.method != transported::Method::Collocation &&
-         (!problem.frame0 || *problem.frame0 == groups::AlgebraMatrixOf<G>::Identity());
+  return lie_kernel_available(problem) && options.method != transported::Method::Collocation;
 }
 
 namespace detail {
@@ -260,8 +266,8 @@ GeneralTrajectory<manifolds::GroupManifold<G>> general_trajectory_from_lie(const
 /// A Lie-kernel result as the general solve's (design §2.4): the trajectory converted
 /// (general_trajectory_from_lie), Xi0 its Xi_0 (with its part in the kernel of C, so not C^+ xi0),
 /// terminal_error = separation(qT, q_N) and xi_terminal = |Xi_N|, the status as it is (`lie` is a
-/// shooting of LieKernelProblem's family or a continuation path's result: general's status rule
-/// applied), the message prefixed with "Lie-group kernel (Cartan–Schouten, lambda = ...): ".
+/// shooting of LieKernelProblem's family, a continuation path's result or run_lie_method's
+/// (solve.hpp): general's status rule applied), the message prefixed with "Lie-group kernel (Cartan–Schouten, lambda = ...): ".
 /// iterations are Levenberg–Marquardt's, summed over the stages of a continuation in T (the general
 /// kernel reports its last solve's); sweeps and residual_history are the Lie kernel's (2m
 /// unknowns, not m + m^2). A result without a trajectory keeps none.
@@ -271,7 +277,7 @@ GeneralSolution<manifolds::GroupManifold<G>> general_solution_from_lie(const Lie
   GeneralSolution<manifolds::GroupManifold<G>> out;
   out.status = lie.status;
   out.message = "Lie-group kernel (Cartan–Schouten, lambda = " + format_value(problem.lambda) + "): " + lie.message;
-  out.method = transported::Method::Shooting;
+  out.method = lie.method;
   out.branch = std::move(lie.branch);
   out.order = lie.order;
   out.v0 = lie.v0;

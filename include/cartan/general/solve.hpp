@@ -13,8 +13,14 @@
 // geodesic guess converges, then lengthen it with a secant predictor, accepting a stage only near
 // its prediction. A failure returns the best iterate of the requested problem (never a stage at
 // another T), and `branch` names the path.
-// Multiple shooting, two-level and continuation in lambda belong to the Lie-group Cartan–Schouten
-// solver; asking for them here is an error naming them.
+// Multiple shooting, two-level and continuation in lambda are the Lie-group kernel's capabilities:
+// on a Lie group whose connection is Cartan–Schouten given by its lambda with frame0 the identity
+// they run as transported::solve runs them (on the kernel's problem behind the erased reduced
+// Lagrangian, whose solve the library compiles: transported/compiled.hpp), with general's status
+// rule and the result converted (their trajectories are the scheme's, so the frame and Xi rebuild
+// exactly); anywhere else asking for them is an error naming them. The variational method stays
+// the Lie-group solve's: its node velocities are means of its steps' (variational.hpp), not a
+// trajectory of the scheme, so no frame of the general scheme can be rebuilt from them.
 // Kernels: shooting and continuation in T run on the general scheme (shooting.hpp), or, on a Lie
 // group whose connection is Cartan–Schouten given by its lambda with frame0 the identity, on the
 // Lie-group scheme, whose result is converted (lie_kernel.hpp; docs/design/lie-kernel.md): the same
@@ -29,6 +35,7 @@
 #include "cartan/general/collocation.hpp"
 #include "cartan/general/lie_kernel.hpp"
 #include "cartan/general/shooting.hpp"
+#include "cartan/transported/compiled.hpp"
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/solve_options.hpp"
 
@@ -194,12 +201,39 @@ GeneralSolution<manifolds::GroupManifold<G>> run_methods_lie(const GeneralProble
   return run_strategy(problem, options, guess, LieKernel<G, L>{lie_kernel_problem(problem, lambda)});
 }
 
+/// The Lie-group kernel's own methods (header comment): transported::solve of the kernel's problem
+/// with its Lagrangian behind the erased type, a guess as the Lie-group solver's (xi = C(Xi)),
+/// general's status rule, the result converted (general_solution_from_lie).
+template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
+GeneralSolution<manifolds::GroupManifold<G>> run_lie_method(const GeneralProblem<manifolds::GroupManifold<G>, L>& problem,
+                                                            double lambda, const transported::SolveOptions& options,
+                                                            const GeneralGuess<manifolds::GroupManifold<G>>& guess) {
+  const LieKernelProblem<G, L> kernel = lie_kernel_problem(problem, lambda);
+  transported::SolveGuess<G> lie_guess;
+  lie_guess.v0 = guess.v0;
+  if (guess.Xi0) lie_guess.xi0 = aux_to_xi<G>(*guess.Xi0);
+  if (guess.trajectory) {
+    const GeneralTrajectory<manifolds::GroupManifold<G>>& x = *guess.trajectory;
+    transported::TransportedTrajectory<G> path;
+    path.t = x.t;
+    path.g = x.q;
+    path.v = x.v;
+    path.mu = x.mu;
+    for (const auto& Xi : x.Xi) path.xi.push_back(aux_to_xi<G>(Xi));
+    lie_guess.trajectory = std::move(path);
+  }
+  transported::TransportedSolution<G> s = transported::solve(transported::erased(kernel), options, lie_guess);
+  apply_general_status_rule(kernel, s, options.tol);
+  return general_solution_from_lie(kernel, std::move(s));
+}
+
 }  // namespace detail
 
 /// Solves the general problem. Throws std::invalid_argument for an invalid problem or options,
 /// or a method this problem family does not have; numerical failure is a status. solve_time_s is
 /// the whole call's, every attempt of the strategy included. Shooting runs on the Lie-group kernel
-/// where lie_kernel_applies (header comment), its message then starting "Lie-group kernel".
+/// where lie_kernel_applies, and the kernel's own methods where it is available (header comment),
+/// the message then starting "Lie-group kernel".
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options = {},
                          const GeneralGuess<M>& guess = {}) {
@@ -207,13 +241,25 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported:
   options.validate();
   using transported::Continuation;
   using transported::Method;
-  if (options.method != Method::Auto && options.method != Method::Shooting && options.method != Method::Collocation) {
-    throw_invalid("general::solve", "method", std::string(to_string(options.method)),
-                  "is not available for a general connection (methods: auto, shooting, collocation)");
-  }
-  if (options.continuation == Continuation::Lambda) {
+  // The Lie-group kernel's own methods (header comment): multiple shooting, two-level, and
+  // continuation in lambda of shooting.
+  const bool collocation = options.method == Method::Collocation;
+  const bool lie_method = options.method == Method::MultipleShooting || options.method == Method::TwoLevel ||
+                          (options.continuation == Continuation::Lambda && !collocation);
+  bool lie_kernel = false;
+  if constexpr (kIsGroupManifold<M>) lie_kernel = lie_kernel_available(problem);
+  if (options.continuation == Continuation::Lambda && (collocation || !lie_kernel)) {
     throw_invalid("general::solve", "continuation", "lambda",
-                  "needs a Cartan–Schouten connection on a Lie group (general connections: none, T)");
+                  collocation ? "is not available with collocation, which is the general one (continuation: none, T)"
+                              : "needs a Cartan–Schouten connection on a Lie group, given by lambda, with the identity "
+                                "frame0 (general connections: none, T)");
+  }
+  if (options.method == Method::Variational || (lie_method && !lie_kernel)) {
+    throw_invalid("general::solve", "method", std::string(to_string(options.method)),
+                  "is not available for a general connection (methods: auto, shooting, collocation; on a group "
+                  "with a Cartan–Schouten connection given by lambda and the identity frame0 also "
+                  "multiple-shooting and two-level; variational: the Lie-group solve only, whose node "
+                  "velocities are means of its steps' and carry no frame of the general scheme)");
   }
   if (guess.v0) require_finite(*guess.v0, "general::solve", "guess.v0");
   if (guess.Xi0) require_finite(*guess.Xi0, "general::solve", "guess.Xi0");
@@ -225,9 +271,9 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported:
   const transported::SolveOptions timed = transported::with_deadline(options, start);
   GeneralSolution<M> s = [&] {
     if constexpr (kIsGroupManifold<M>) {
-      if (lie_kernel_applies(problem, timed)) {
-        return detail::run_methods_lie(problem, *problem.manifold.cartan_schouten_lambda(), timed, guess);
-      }
+      const double lambda = problem.manifold.cartan_schouten_lambda().value_or(0.0);
+      if (lie_method) return detail::run_lie_method(problem, lambda, timed, guess);
+      if (lie_kernel_applies(problem, timed)) return detail::run_methods_lie(problem, lambda, timed, guess);
     }
     return detail::run_methods(problem, timed, guess);
   }();
