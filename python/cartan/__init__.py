@@ -545,15 +545,39 @@ def verify_general(result, manifold, *, inertia=None, potential=None, potential_
     return VerifyReport(**_cartan._verify_general(manifold, request, result))
 
 
-def verify(result, lagrangian, *, group=None):
-    """Checks a :class:`SolveResult` of the Lagrangian `lagrangian` independently of the solver, as
-    `cartan verify` does (docs/verify.md): boundary conditions against result.tol, the Legendre
-    relation, conservation of E = mu.v - l (for a Lagrangian that does not depend on t), the residual
-    of eq:reduced-system by finite differences and the stationarity of the discrete transported
-    action, with thresholds from the order and the resolution h omega. A result that did not converge
-    always fails (check "converged"). `result` may be any object with the fields lam, T, g0, gT, order,
-    tol, status, t, g, v, mu, xi (e.g. a SolveResult with a changed field); `lagrangian` is a built-in
-    model or a Python-defined Lagrangian as for :func:`solve`. Returns a :class:`VerifyReport`."""
+def verify(result, lagrangian, *, group=None, inertia=None, potential=None, potential_gradient=None, gravity=None):
+    """Checks a result independently of the solver, as `cartan verify` does, and returns a
+    :class:`VerifyReport`. One entry point for both kinds of result:
+
+    * a :class:`SolveResult` of the Lagrangian `lagrangian` (docs/verify.md): boundary conditions
+      against result.tol, the Legendre relation, conservation of E = mu.v - l (for a Lagrangian that
+      does not depend on t), the residual of eq:reduced-system by finite differences and the
+      stationarity of the discrete transported action, with thresholds from the order and the
+      resolution h omega. A result that did not converge always fails (check "converged"). `result`
+      may be any object with the fields lam, T, g0, gT, order, tol, status, t, g, v, mu, xi (e.g. a
+      SolveResult with a changed field); `lagrangian` is a built-in model or a Python-defined
+      Lagrangian as for :func:`solve`.
+    * a :class:`GeneralSolveResult`, with `lagrangian` its manifold (any of :data:`MANIFOLDS`): the
+      checks of :func:`verify_general`, the Lagrangian given by `inertia`, `potential`,
+      `potential_gradient`, `gravity` as for :func:`solve_general`. A Lagrangian object of the
+      manifold goes through ``verify_general(result, manifold, lagrangian=...)``.
+
+    Which one is decided by `lagrangian`: a manifold means the second, anything else the first; the
+    keywords of the other kind raise ValueError naming them."""
+    terms = dict(inertia=inertia, potential=potential, potential_gradient=potential_gradient, gravity=gravity)
+    if isinstance(lagrangian, MANIFOLDS):
+        if group is not None:
+            raise ValueError(f"cartan.verify: group = {group!r} applies to a group model's SolveResult, "
+                             f"not on the manifold {type(lagrangian).__name__}")
+        return verify_general(result, lagrangian, **terms)
+    if isinstance(result, GeneralSolveResult):
+        raise ValueError(f"cartan.verify: lagrangian = {type(lagrangian).__name__} is not a manifold; a "
+                         "GeneralSolveResult is checked on its manifold: cartan.verify(result, manifold, ...)")
+    given = [name for name, value in terms.items() if value is not None]
+    if given:
+        raise ValueError(f"cartan.verify: {given[0]} = {terms[given[0]]!r} applies to a manifold's "
+                         "GeneralSolveResult (pass the manifold as the second argument); a group model "
+                         "carries its own Lagrangian")
     grp = _group_of(lagrangian, group, "verify")
     d = grp._verify(lagrangian, result, result.lam, result.T, result.g0, result.gT, result.order, result.tol,
                     result.status)

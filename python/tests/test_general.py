@@ -254,6 +254,29 @@ def test_the_lie_group_methods_are_the_kernels_on_cartan_schouten(method, option
         cartan.solve_general(manifold, q0=np.eye(3), qT=GT, T=3.0, N=100, method="variational")
 
 
+def test_verify_is_one_entry_point_for_both_kinds_of_result():
+    """cartan.verify checks a GeneralSolveResult on its manifold exactly as verify_general does (the
+    same call underneath: every figure equal), a SolveResult as before, and names the keyword or the
+    argument that belongs to the other kind."""
+    manifold = GroupManifold("so3", "cartan-schouten", lam=0.3)
+    kwargs = dict(T=3.0, N=100, tol=1e-10)
+    gen = cartan.solve_general(manifold, q0=np.eye(3), qT=GT, inertia=[2.0, 3.0, 4.0], **kwargs)
+    lie = cartan.solve(cartan.RigidBody([2.0, 3.0, 4.0]), lam=0.3, gT=GT, **kwargs)
+    assert gen.converged and lie.converged
+    one = cartan.verify(gen, manifold, inertia=[2.0, 3.0, 4.0])
+    other = cartan.verify_general(gen, manifold, inertia=[2.0, 3.0, 4.0])
+    assert one.passed and [c["figure"] for c in one.checks] == [c["figure"] for c in other.checks]
+    sphere = cartan.solve_general(Sphere(), gravity=1.0, **SPHERE_ARGS)
+    assert cartan.verify(sphere, Sphere(), gravity=1.0).passed
+    assert cartan.verify(lie, cartan.RigidBody([2.0, 3.0, 4.0])).passed
+    with pytest.raises(ValueError, match="inertia = .* applies to a manifold"):
+        cartan.verify(lie, cartan.RigidBody([2.0, 3.0, 4.0]), inertia=[2.0, 3.0, 4.0])
+    with pytest.raises(ValueError, match="RigidBody is not a manifold"):
+        cartan.verify(gen, cartan.RigidBody([2.0, 3.0, 4.0]))
+    with pytest.raises(ValueError, match="group = 'SO3' applies to a group model"):
+        cartan.verify(gen, manifold, group="SO3", inertia=[2.0, 3.0, 4.0])
+
+
 def sphere_energy(r, A, G):
     return 0.5 * np.einsum("ki,ij,kj->k", r.v, A, r.v) + G * r.q[:, 2]
 
