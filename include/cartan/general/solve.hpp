@@ -16,9 +16,10 @@
 // Multiple shooting, two-level and continuation in lambda are the Lie-group kernel's capabilities:
 // on a Lie group whose connection is Cartan–Schouten given by its lambda with frame0 the identity
 // they run as transported::solve runs them (on the kernel's problem behind the erased reduced
-// Lagrangian, whose solve the library compiles: transported/compiled.hpp), with general's status
-// rule and the result converted (their trajectories are the scheme's, so the frame and Xi rebuild
-// exactly); anywhere else asking for them is an error naming them. The variational method stays
+// Lagrangian, whose solve the library compiles for SO(3), H3, SE(2) and SE(3): erased_solve.hpp),
+// with general's status rule and the result converted (their trajectories are the scheme's, so the
+// frame and Xi rebuild exactly); anywhere else (another group included) asking for them is an error
+// naming them. The variational method stays
 // the Lie-group solve's: its node velocities are means of its steps' (variational.hpp), not a
 // trajectory of the scheme, so no frame of the general scheme can be rebuilt from them.
 // Kernels: shooting and continuation in T run on the general scheme (shooting.hpp), or, on a Lie
@@ -35,8 +36,8 @@
 #include "cartan/general/collocation.hpp"
 #include "cartan/general/lie_kernel.hpp"
 #include "cartan/general/shooting.hpp"
-#include "cartan/transported/compiled.hpp"
 #include "cartan/transported/continuation.hpp"
+#include "cartan/transported/erased_solve.hpp"
 #include "cartan/transported/solve_options.hpp"
 
 namespace cartan::general {
@@ -222,7 +223,7 @@ GeneralSolution<manifolds::GroupManifold<G>> run_lie_method(const GeneralProblem
     for (const auto& Xi : x.Xi) path.xi.push_back(aux_to_xi<G>(Xi));
     lie_guess.trajectory = std::move(path);
   }
-  transported::TransportedSolution<G> s = transported::solve(transported::erased(kernel), options, lie_guess);
+  transported::TransportedSolution<G> s = transported::solve_erased<G>(transported::erased(kernel), options, lie_guess);
   apply_general_status_rule(kernel, s, options.tol);
   return general_solution_from_lie(kernel, std::move(s));
 }
@@ -247,17 +248,19 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported:
   const bool lie_method = options.method == Method::MultipleShooting || options.method == Method::TwoLevel ||
                           (options.continuation == Continuation::Lambda && !collocation);
   bool lie_kernel = false;
-  if constexpr (kIsGroupManifold<M>) lie_kernel = lie_kernel_available(problem);
+  if constexpr (kIsGroupManifold<M>) {
+    lie_kernel = lie_kernel_available(problem) && transported::kCompiledGroup<typename M::Group>;
+  }
   if (options.continuation == Continuation::Lambda && (collocation || !lie_kernel)) {
     throw_invalid("general::solve", "continuation", "lambda",
                   collocation ? "is not available with collocation, which is the general one (continuation: none, T)"
-                              : "needs a Cartan–Schouten connection on a Lie group, given by lambda, with the identity "
-                                "frame0 (general connections: none, T)");
+                              : "needs a Cartan–Schouten connection on SO(3), H3, SE(2) or SE(3), given by lambda, "
+                                "with the identity frame0 (general connections: none, T)");
   }
   if (options.method == Method::Variational || (lie_method && !lie_kernel)) {
     throw_invalid("general::solve", "method", std::string(to_string(options.method)),
-                  "is not available for a general connection (methods: auto, shooting, collocation; on a group "
-                  "with a Cartan–Schouten connection given by lambda and the identity frame0 also "
+                  "is not available for a general connection (methods: auto, shooting, collocation; on SO(3), "
+                  "H3, SE(2), SE(3) with a Cartan–Schouten connection given by lambda and the identity frame0 also "
                   "multiple-shooting and two-level; variational: the Lie-group solve only, whose node "
                   "velocities are means of its steps' and carry no frame of the general scheme)");
   }
@@ -272,7 +275,9 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported:
   GeneralSolution<M> s = [&] {
     if constexpr (kIsGroupManifold<M>) {
       const double lambda = problem.manifold.cartan_schouten_lambda().value_or(0.0);
-      if (lie_method) return detail::run_lie_method(problem, lambda, timed, guess);
+      if constexpr (transported::kCompiledGroup<typename M::Group>) {
+        if (lie_method) return detail::run_lie_method(problem, lambda, timed, guess);
+      }
       if (lie_kernel_applies(problem, timed)) return detail::run_methods_lie(problem, lambda, timed, guess);
     }
     return detail::run_methods(problem, timed, guess);

@@ -4,27 +4,19 @@
 // on every shipped group: SO(3), H3, SE(2), SE(3). Including this header instead of instantiating
 // them costs a unit seconds rather than tens of seconds per Lagrangian (bench/README.md, "Build
 // time"); the definitions are in src/transported/, one file per group, compiled in the library's
-// `transported` unity group (CMakeLists.txt). The Python module solves its Lagrangians written in
+// `transported_erased` unity group (CMakeLists.txt). The Python module solves its Lagrangians written in
 // Python through them. Built-in models keep their own compiled instantiations (solve.hpp).
 
-#include "cartan/groups/heisenberg.hpp"
-#include "cartan/groups/se2.hpp"
-#include "cartan/groups/se3.hpp"
-#include "cartan/groups/so3.hpp"
-#include "cartan/mechanics/erased_lagrangian.hpp"
+#include "cartan/transported/erased_solve.hpp"
 #include "cartan/transported/solve.hpp"
 #include "cartan/verify/report.hpp"
 
 namespace cartan::transported {
 
-/// The problem of the compiled solve on G (compiled.hpp): any Lagrangian behind the erased type.
 template <groups::LieGroup G>
-using ErasedProblem = TransportedProblem<G, mechanics::ErasedLagrangian<G>>;
-
-/// `problem` with its Lagrangian behind the erased type (for the compiled solve and verify).
-template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-ErasedProblem<G> erased(const TransportedProblem<G, L>& problem) {
-  return {mechanics::ErasedLagrangian<G>(problem.lagrangian), problem.lambda, problem.T, problem.N, problem.g0, problem.gT};
+TransportedSolution<G> solve_erased(const ErasedProblem<G>& problem, const SolveOptions& options,
+                                    const SolveGuess<G>& guess) {
+  return solve(problem, options, guess);
 }
 
 }  // namespace cartan::transported
@@ -37,9 +29,12 @@ ErasedProblem<G> erased(const TransportedProblem<G, L>& problem) {
   X(::cartan::groups::SE3)
 
 /// `extern template` (declaration) or `template` (definition, in src/transported/) of the solve
-/// and the verifier for the erased Lagrangian on G.
+/// (also as solve_erased, erased_solve.hpp) and the verifier for the erased Lagrangian on G.
 #define CARTAN_TRANSPORTED_COMPILED(prefix, G)                                                                  \
   prefix ::cartan::transported::TransportedSolution<G> cartan::transported::solve(                             \
+      const ::cartan::transported::ErasedProblem<G>&, const ::cartan::transported::SolveOptions&,              \
+      const ::cartan::transported::SolveGuess<G>&);                                                            \
+  prefix ::cartan::transported::TransportedSolution<G> cartan::transported::solve_erased<G>(                   \
       const ::cartan::transported::ErasedProblem<G>&, const ::cartan::transported::SolveOptions&,              \
       const ::cartan::transported::SolveGuess<G>&);                                                            \
   prefix ::cartan::verify::Report cartan::verify::verify_trajectory(                                            \
