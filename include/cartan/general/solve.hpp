@@ -19,9 +19,9 @@
 // Lagrangian, whose solve the library compiles for SO(3), H3, SE(2) and SE(3): erased_solve.hpp),
 // with general's status rule and the result converted (their trajectories are the scheme's, so the
 // frame and Xi rebuild exactly); anywhere else (another group included) asking for them is an error
-// naming them. The variational method stays
-// the Lie-group solve's: its node velocities are means of its steps' (variational.hpp), not a
-// trajectory of the scheme, so no frame of the general scheme can be rebuilt from them.
+// naming them. The variational method stays the Lie-group solve's: its node velocities are means
+// of its steps' (variational.hpp), not a trajectory of the scheme, so no frame of the general
+// scheme can be rebuilt from them.
 // Kernels: shooting and continuation in T run on the general scheme (shooting.hpp), or, on a Lie
 // group whose connection is Cartan–Schouten given by its lambda with frame0 the identity, on the
 // Lie-group scheme, whose result is converted (lie_kernel.hpp; docs/design/lie-kernel.md): the same
@@ -274,11 +274,14 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported:
   const transported::SolveOptions timed = transported::with_deadline(options, start);
   GeneralSolution<M> s = [&] {
     if constexpr (kIsGroupManifold<M>) {
-      const double lambda = problem.manifold.cartan_schouten_lambda().value_or(0.0);
       if constexpr (transported::kCompiledGroup<typename M::Group>) {
-        if (lie_method) return detail::run_lie_method(problem, lambda, timed, guess);
+        if (lie_method) {
+          return detail::run_lie_method(problem, *problem.manifold.cartan_schouten_lambda(), timed, guess);
+        }
       }
-      if (lie_kernel_applies(problem, timed)) return detail::run_methods_lie(problem, lambda, timed, guess);
+      if (lie_kernel_applies(problem, timed)) {
+        return detail::run_methods_lie(problem, *problem.manifold.cartan_schouten_lambda(), timed, guess);
+      }
     }
     return detail::run_methods(problem, timed, guess);
   }();

@@ -3,9 +3,11 @@
 // the erased Lagrangian (mechanics/erased_lagrangian.hpp; `erased(problem)` wraps any problem's)
 // on every shipped group: SO(3), H3, SE(2), SE(3). Including this header instead of instantiating
 // them costs a unit seconds rather than tens of seconds per Lagrangian (bench/README.md, "Build
-// time"); the definitions are in src/transported/, one file per group, compiled in the library's
-// `transported_erased` unity group (CMakeLists.txt). The Python module solves its Lagrangians written in
-// Python through them. Built-in models keep their own compiled instantiations (solve.hpp).
+// time"); the definitions are in src/transported/, one file per group
+// (CARTAN_TRANSPORTED_SHIPPED_GROUPS, erased_solve.hpp), compiled in the library's
+// `transported_erased` unity group (CMakeLists.txt). The Python module solves its Lagrangians
+// written in Python through them. Built-in models keep their own compiled instantiations
+// (solve.hpp).
 
 #include "cartan/transported/erased_solve.hpp"
 #include "cartan/transported/solve.hpp"
@@ -20,13 +22,6 @@ TransportedSolution<G> solve_erased(const ErasedProblem<G>& problem, const Solve
 }
 
 }  // namespace cartan::transported
-
-/// The shipped groups, one X(G) each (the list of the header comment).
-#define CARTAN_TRANSPORTED_SHIPPED_GROUPS(X) \
-  X(::cartan::groups::SO3)                   \
-  X(::cartan::groups::Heisenberg)            \
-  X(::cartan::groups::SE2)                   \
-  X(::cartan::groups::SE3)
 
 /// `extern template` (declaration) or `template` (definition, in src/transported/) of the solve
 /// (also as solve_erased, erased_solve.hpp) and the verifier for the erased Lagrangian on G.

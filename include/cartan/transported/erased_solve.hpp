@@ -16,6 +16,14 @@
 #include "cartan/transported/solution.hpp"
 #include "cartan/transported/solve_options.hpp"
 
+/// The groups on which the library compiles the erased solve and verify, one X(G) each
+/// (src/transported/erased_*.cpp; compiled.hpp).
+#define CARTAN_TRANSPORTED_SHIPPED_GROUPS(X) \
+  X(::cartan::groups::SO3)                   \
+  X(::cartan::groups::Heisenberg)            \
+  X(::cartan::groups::SE2)                   \
+  X(::cartan::groups::SE3)
+
 namespace cartan::transported {
 
 /// The problem of the compiled solve on G: any Lagrangian behind the erased type.
@@ -28,10 +36,11 @@ ErasedProblem<G> erased(const TransportedProblem<G, L>& problem) {
   return {mechanics::ErasedLagrangian<G>(problem.lagrangian), problem.lambda, problem.T, problem.N, problem.g0, problem.gT};
 }
 
-/// The groups on which the library compiles the erased solve and verify (src/transported/erased_*.cpp).
+/// Whether the library compiles the erased solve and verify on G (CARTAN_TRANSPORTED_SHIPPED_GROUPS).
+#define CARTAN_TRANSPORTED_IS_SHIPPED(Shipped) std::is_same_v<G, Shipped> ||
 template <class G>
-inline constexpr bool kCompiledGroup = std::is_same_v<G, groups::SO3> || std::is_same_v<G, groups::Heisenberg> ||
-                                       std::is_same_v<G, groups::SE2> || std::is_same_v<G, groups::SE3>;
+inline constexpr bool kCompiledGroup = CARTAN_TRANSPORTED_SHIPPED_GROUPS(CARTAN_TRANSPORTED_IS_SHIPPED) false;
+#undef CARTAN_TRANSPORTED_IS_SHIPPED
 
 /// solve(problem, options, guess) (solve.hpp) for the erased Lagrangian: defined in compiled.hpp and
 /// compiled in the library for every kCompiledGroup; declared here so that a caller needs no more.
