@@ -12,6 +12,7 @@
 
 #include "cartan/general/compiled.hpp"
 #include "cartan/general/shooting.hpp"
+#include "cartan/general/solve.hpp"  // the typed solve, against the erased one
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/transported/shooting.hpp"
 #include "general/general_cases.hpp"  // paper cases, WithoutFastPath

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "cartan/general/shooting.hpp"
+#include "cartan/general/solution.hpp"
 #include "cartan/transported/solution.hpp"
 #include "model_table.hpp"
 #include "problem_spec.hpp"

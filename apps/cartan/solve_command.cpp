@@ -1,6 +1,6 @@
 #include "solve_command.hpp"
 
-#include "cartan/transported/solve.hpp"
+#include "cartan/transported/compiled.hpp"
 #include "connection_command.hpp"
 #include "manifold_command.hpp"
 #include "model_table.hpp"

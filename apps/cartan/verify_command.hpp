@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cartan/verify/report.hpp"
+#include "cartan/verify/verdict.hpp"
 #include "result_reader.hpp"
 
 namespace cartan::cli {

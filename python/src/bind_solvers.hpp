@@ -21,7 +21,6 @@
 
 #include "bind_models.hpp"
 #include "report_dict.hpp"
-#include "cartan/transported/along.hpp"
 #include "cartan/transported/compiled.hpp"
 
 namespace cartan::python {

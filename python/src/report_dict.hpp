@@ -8,7 +8,7 @@
 #include "bindings.hpp"
 #include "cartan/mechanics/check_report.hpp"
 #include "cartan/transported/solution.hpp"
-#include "cartan/verify/report.hpp"
+#include "cartan/verify/verdict.hpp"
 
 namespace cartan::python {
 

@@ -1,5 +1,7 @@
 // The general solve and verify on SO(3) with a left-invariant connection for the erased Lagrangian, compiled once
 // (compiled.hpp).
-#include "cartan/general/compiled.hpp"
+#include "cartan/general/shooting.hpp"
+#include "cartan/general/solve.hpp"
+#include "cartan/general/verify.hpp"
 
 CARTAN_GENERAL_COMPILED(template, ::cartan::manifolds::GroupManifold<::cartan::groups::SO3>)

@@ -1,4 +1,6 @@
-// The transported solve and verify on SO(3) for the erased Lagrangian, compiled once (compiled.hpp).
-#include "cartan/transported/compiled.hpp"
+// What the library compiles for the erased Lagrangian on SO(3) (transported/compiled.hpp).
+#include "cartan/transported/along.hpp"
+#include "cartan/transported/solve.hpp"
+#include "cartan/verify/report.hpp"
 
-CARTAN_TRANSPORTED_COMPILED(template, ::cartan::groups::SO3)
+CARTAN_TRANSPORTED_COMPILED_ERASED(template, ::cartan::groups::SO3)

@@ -1,7 +1,4 @@
-// solve for the Heisenberg oscillator, compiled once (transported/solve.hpp).
+// solve and validate for the Heisenberg oscillator, compiled once (transported/compiled.hpp).
 #include "cartan/transported/solve.hpp"
 
-namespace cartan::transported {
-template TransportedSolution<groups::Heisenberg> solve(const TransportedProblem<groups::Heisenberg, mechanics::H3Oscillator>&,
-                                               const SolveOptions&, const SolveGuess<groups::Heisenberg>&);
-}  // namespace cartan::transported
+CARTAN_TRANSPORTED_COMPILED_MODEL(template, ::cartan::groups::Heisenberg, ::cartan::mechanics::H3Oscillator)

@@ -1,7 +1,4 @@
-// solve for the SO(3) oscillator, compiled once (transported/solve.hpp).
+// solve and validate for the oscillator on SO(3), compiled once (transported/compiled.hpp).
 #include "cartan/transported/solve.hpp"
 
-namespace cartan::transported {
-template TransportedSolution<groups::SO3> solve(const TransportedProblem<groups::SO3, mechanics::SO3Oscillator>&, const SolveOptions&,
-                                        const SolveGuess<groups::SO3>&);
-}  // namespace cartan::transported
+CARTAN_TRANSPORTED_COMPILED_MODEL(template, ::cartan::groups::SO3, ::cartan::mechanics::SO3Oscillator)

@@ -9,7 +9,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "cartan/general/compiled.hpp"  // solve, verify, and the erased Lagrangian's compiled instantiations
+#include "cartan/general/action.hpp"
+#include "cartan/general/compiled.hpp"  // the erased Lagrangian's compiled instantiations
+#include "cartan/general/solve.hpp"     // detail::continue_in_T
 #include "cartan/manifolds/euclidean.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "cartan/transported/compiled.hpp"
+#include "cartan/verify/report.hpp"  // verify_trajectory typed, to compare with the erased one
 #include "paper_cases.hpp"
 #include "test_support.hpp"
 

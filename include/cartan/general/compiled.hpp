@@ -1,16 +1,19 @@
 #pragma once
-// The general solve, shooting and verify (solve.hpp, shooting.hpp, verify.hpp) compiled once in the
-// library for the erased Lagrangian (erased_lagrangian.hpp; `erased(problem)` wraps any problem's)
-// on every shipped manifold: the sphere, the hyperbolic plane, R^2 and R^3 with constant
-// Christoffel symbols, charts of dimension 2 and 3, and SO(3), H3, SE(2), SE(3) with any
-// left-invariant connection. Including this header instead of instantiating them costs a unit
-// seconds rather than tens of seconds per manifold (bench/README.md, "Build time"); the
-// definitions are in src/general/, one file per manifold, compiled in unity groups (CMakeLists.txt).
-// Any other (manifold, Lagrangian) pair is instantiated where it is used, as before.
+// The general solver's entry points as declarations, and the list of what the library compiles of
+// them: what a unit needs to call the library without parsing a solver. Compiled in the library
+// (src/general/, one file per manifold, in unity groups: CMakeLists.txt) for the erased Lagrangian
+// (erased_lagrangian.hpp; `erased(problem)` wraps any problem's) on every shipped manifold: the
+// sphere, the hyperbolic plane, R^2 and R^3 with constant Christoffel symbols, charts of dimension
+// 2 and 3, and SO(3), H3, SE(2), SE(3) with any left-invariant connection. Including this header
+// costs a unit seconds; instantiating the solve costs it tens of seconds per manifold
+// (bench/README.md, "Build time"). A call with any other (manifold, Lagrangian) pair through this
+// header alone does not link: call it as `solve(erased(problem))`, or include the definitions
+// (solve.hpp, shooting.hpp, verify.hpp) for the fully typed instantiation. The definition headers
+// include this one, so the declarations (with the default arguments) are written once.
 
 #include "cartan/general/erased_lagrangian.hpp"
-#include "cartan/general/solve.hpp"
-#include "cartan/general/verify.hpp"
+#include "cartan/general/problem.hpp"
+#include "cartan/general/solution.hpp"
 #include "cartan/groups/heisenberg.hpp"
 #include "cartan/groups/se2.hpp"
 #include "cartan/groups/se3.hpp"
@@ -19,6 +22,35 @@
 #include "cartan/manifolds/euclidean.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"
+#include "cartan/status.hpp"
+#include "cartan/transported/solve_options.hpp"
+#include "cartan/verify/verdict.hpp"
+
+namespace cartan::general {
+
+/// Solves the general problem as `options` say (solve.hpp). Throws std::invalid_argument for an
+/// invalid problem or options, or a method this problem family does not have; numerical failure is
+/// a status.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options = {},
+                         const GeneralGuess<M>& guess = {});
+
+/// Single shooting of the general scheme from (v0_guess, Xi0_guess), or from the geodesic guess
+/// (shooting.hpp).
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, const GeneralShootingOptions& options,
+                                          const manifolds::ComponentsOf<M>& v0_guess,
+                                          const manifolds::ComponentMatrixOf<M>& Xi0_guess);
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, const GeneralShootingOptions& options = {});
+
+/// Every check on `x` as a solution of `problem` to `tol` by a method of the given order
+/// (verify.hpp); a `status` other than converged adds a failing `converged` check.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+verify::Report verify_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x, int order, double tol,
+                              Status status = Status::Converged);
+
+}  // namespace cartan::general
 
 /// The shipped manifolds, one X(M) each (the list of the header comment).
 #define CARTAN_GENERAL_SHIPPED_MANIFOLDS(X)                                                              \

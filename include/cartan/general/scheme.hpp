@@ -20,41 +20,13 @@
 #include <vector>
 
 #include "cartan/general/problem.hpp"
+#include "cartan/general/solution.hpp"
 #include "cartan/mechanics/lagrangian.hpp"
 #include "cartan/transported/scheme.hpp"
 
 namespace cartan::general {
 
 using ::cartan::SchemeOrder;  // scheme_order.hpp: the vocabulary of both stacks
-
-template <manifolds::ManifoldWithConnection M>
-struct GeneralNode {
-  double t = 0;
-  manifolds::PointOf<M> q;
-  manifolds::FrameOf<M> frame;
-  manifolds::ComponentsOf<M> mu;
-  manifolds::ComponentMatrixOf<M> Xi;
-  manifolds::ComponentsOf<M> v;
-};
-
-/// Every node k = 0..N of a discrete solution.
-template <manifolds::ManifoldWithConnection M>
-struct GeneralTrajectory {
-  std::vector<double> t;
-  std::vector<manifolds::PointOf<M>> q;
-  std::vector<manifolds::FrameOf<M>> frame;
-  std::vector<manifolds::ComponentsOf<M>> v, mu;
-  std::vector<manifolds::ComponentMatrixOf<M>> Xi;
-
-  void push(const GeneralNode<M>& node) {
-    t.push_back(node.t), q.push_back(node.q), frame.push_back(node.frame), v.push_back(node.v);
-    mu.push_back(node.mu), Xi.push_back(node.Xi);
-  }
-  /// Empties the trajectory and keeps its storage (a sweep that records reuses it).
-  void clear() { t.clear(), q.clear(), frame.clear(), v.clear(), mu.clear(), Xi.clear(); }
-  /// The last node.
-  GeneralNode<M> back() const { return {t.back(), q.back(), frame.back(), mu.back(), Xi.back(), v.back()}; }
-};
 
 /// Throws std::invalid_argument naming `what` unless x has times from 0 to the problem's T
 /// (strictly increasing), as many q, frame, v, mu and Xi as times, all finite.

@@ -15,7 +15,9 @@
 #include <optional>
 #include <sstream>
 
+#include "cartan/general/compiled.hpp"
 #include "cartan/general/scheme.hpp"
+#include "cartan/general/solution.hpp"
 #include "cartan/general/tangent.hpp"
 #include "cartan/numerics/nonlinear_solve.hpp"
 #include "cartan/numerics/shooting_driver.hpp"
@@ -25,33 +27,6 @@
 #include "cartan/transported/solution.hpp"
 
 namespace cartan::general {
-
-template <manifolds::ManifoldWithConnection M>
-struct GeneralSolution {
-  Status status = Status::NotConverged;
-  std::string message;
-  transported::Method method = transported::Method::Shooting;
-  std::string branch;
-  int order = 1;
-  /// Every node of the requested problem's discrete solution (at a failure: of the best iterate).
-  GeneralTrajectory<M> trajectory;
-  manifolds::ComponentsOf<M> v0 = manifolds::ComponentsOf<M>::Zero();
-  manifolds::ComponentMatrixOf<M> Xi0 = manifolds::ComponentMatrixOf<M>::Zero();
-  double terminal_error = 0;  ///< separation(qT, q_N): |difference(qT, q_N)| where it is a logarithm
-  double xi_terminal = 0;     ///< |Xi_N|
-  int iterations = 0;
-  int sweeps = 0;
-  std::vector<double> residual_history;
-  double solve_time_s = 0;
-  std::optional<transported::CollocationReport> collocation;  ///< method collocation: mesh and residual
-
-  bool converged() const { return status == Status::Converged; }
-};
-
-/// The Lie-group shooting's options (order, tolerance, max_iterations, analytic_jacobian: the
-/// tangent-linear sweep of tangent.hpp, no_progress_window, monitor), so that the continuation
-/// path (transported/continuation.hpp) drives both problem families.
-using GeneralShootingOptions = transported::ShootingOptions;
 
 /// The geodesic guess: difference(q0, qT) / T in the components of the initial frame.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
@@ -221,7 +196,7 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
 }
 
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, const GeneralShootingOptions& options = {}) {
+GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, const GeneralShootingOptions& options) {
   problem.validate();
   return solve_general_shooting(problem, options, geodesic_guess(problem), manifolds::ComponentMatrixOf<M>::Zero());
 }

@@ -16,7 +16,7 @@
 // Multiple shooting, two-level and continuation in lambda are the Lie-group kernel's capabilities:
 // on a Lie group whose connection is Cartan–Schouten given by its lambda with frame0 the identity
 // they run as transported::solve runs them (on the kernel's problem behind the erased reduced
-// Lagrangian, whose solve the library compiles for SO(3), H3, SE(2) and SE(3): erased_solve.hpp),
+// Lagrangian, whose solve the library compiles for SO(3), H3, SE(2) and SE(3): transported/compiled.hpp),
 // with general's status rule and the result converted (their trajectories are the scheme's, so the
 // frame and Xi rebuild exactly); anywhere else (another group included) asking for them is an error
 // naming them. The variational method stays the Lie-group solve's: its node velocities are means
@@ -34,24 +34,12 @@
 #include <sstream>
 
 #include "cartan/general/collocation.hpp"
+#include "cartan/general/compiled.hpp"
 #include "cartan/general/lie_kernel.hpp"
 #include "cartan/general/shooting.hpp"
 #include "cartan/transported/continuation.hpp"
-#include "cartan/transported/erased_solve.hpp"
+#include "cartan/transported/compiled.hpp"
 #include "cartan/transported/solve_options.hpp"
-
-namespace cartan::general {
-
-template <manifolds::ManifoldWithConnection M>
-struct GeneralGuess {
-  std::optional<manifolds::ComponentsOf<M>> v0;
-  std::optional<manifolds::ComponentMatrixOf<M>> Xi0;
-  /// A whole trajectory from 0 to T (e.g. an earlier solution): the start of collocation, and its
-  /// first node the (v0, Xi0) of shooting.
-  std::optional<GeneralTrajectory<M>> trajectory;
-};
-
-}  // namespace cartan::general
 
 namespace cartan::transported {
 
@@ -223,7 +211,7 @@ GeneralSolution<manifolds::GroupManifold<G>> run_lie_method(const GeneralProblem
     for (const auto& Xi : x.Xi) path.xi.push_back(aux_to_xi<G>(Xi));
     lie_guess.trajectory = std::move(path);
   }
-  transported::TransportedSolution<G> s = transported::solve_erased<G>(transported::erased(kernel), options, lie_guess);
+  transported::TransportedSolution<G> s = transported::solve(transported::erased(kernel), options, lie_guess);
   apply_general_status_rule(kernel, s, options.tol);
   return general_solution_from_lie(kernel, std::move(s));
 }
@@ -236,8 +224,8 @@ GeneralSolution<manifolds::GroupManifold<G>> run_lie_method(const GeneralProblem
 /// where lie_kernel_applies, and the kernel's own methods where it is available (header comment),
 /// the message then starting "Lie-group kernel".
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options = {},
-                         const GeneralGuess<M>& guess = {}) {
+GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options,
+                         const GeneralGuess<M>& guess) {
   problem.validate();
   options.validate();
   using transported::Continuation;

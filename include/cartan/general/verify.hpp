@@ -19,9 +19,11 @@
 #include <random>
 
 #include "cartan/general/action.hpp"
+#include "cartan/general/compiled.hpp"
 #include "cartan/general/shooting.hpp"
 #include "cartan/numerics/spectrum.hpp"
-#include "cartan/verify/report.hpp"
+#include "cartan/verify/figures.hpp"
+#include "cartan/verify/verdict.hpp"
 
 namespace cartan::general {
 
@@ -177,7 +179,7 @@ class GeneralChecks {
 /// mismatched sizes, too few or non-uniform samples, a bad order or tol.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 verify::Report verify_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x, int order, double tol,
-                              Status status = Status::Converged) {
+                              Status status) {
   problem.validate();
   constexpr std::string_view where = "verify_general";
   require_result_order(order, where);

@@ -18,6 +18,7 @@
 #include "cartan/mechanics/lagrangian.hpp"
 #include "cartan/transport/disc_exp.hpp"
 #include "cartan/transported/action.hpp"
+#include "cartan/transported/compiled.hpp"
 #include "cartan/transported/scheme.hpp"
 
 namespace cartan::transported {
@@ -35,15 +36,6 @@ std::vector<groups::ElementOf<G>> transport_elements(double lambda, const std::v
   }
   return h;
 }
-
-/// What a solution carries besides its samples, one entry per node.
-template <groups::LieGroup G>
-struct AlongSolution {
-  std::vector<groups::AlgebraMatrixOf<G>> P;  ///< Ad(h_k); P_0 = I
-  std::vector<groups::TangentOf<G>> u;        ///< P_k v_k, the left-trivialised body velocity g^{-1} g'
-  std::vector<double> energy;                 ///< dl/dv(v_k).v_k - l(t_k, g_k, v_k) (lagrangian_energy; = mu_k.v_k by disc-Legendre)
-  std::vector<double> action;                 ///< S_h over steps 0..k-1: action[0] = 0, action.back() = S_h
-};
 
 namespace detail {
 

@@ -81,15 +81,6 @@ TransportedSolution<G> collocation_solution(const TransportedProblem<G, L>& prob
   return s;
 }
 
-/// Seconds spent in f().
-template <class F>
-auto timed(double& seconds, F&& f) {
-  const auto start = std::chrono::steady_clock::now();
-  auto out = f();
-  seconds = detail::seconds_since(start);  // transported/shooting.hpp
-  return out;
-}
-
 /// H3 by the closed-form system (solve_heisenberg_collocation), xi by exact quadrature. `raw`,
 /// when given, receives the collocation result itself (mesh, residuals).
 template <mechanics::Potential<groups::Heisenberg> V>

@@ -22,31 +22,10 @@
 #include "cartan/numerics/nonlinear_solve.hpp"
 #include "cartan/numerics/shooting_driver.hpp"
 #include "cartan/transported/solution.hpp"
+#include "cartan/transported/solve_options.hpp"
 #include "cartan/transported/sweep.hpp"
 
 namespace cartan::transported {
-
-struct ShootingOptions {
-  SchemeOrder order = SchemeOrder::First;
-  double tolerance = 1e-10;     ///< on |(log(gT^{-1} g_N), xi_N / xi_scale)| (dimensionless)
-  int max_iterations = 100;     ///< Levenberg–Marquardt iterations
-  bool analytic_jacobian = true;
-  int no_progress_window = 0;   ///< > 0: abandon when |r| has not halved in this many iterations
-  /// Abandon at once when the scaled |r| of the guess exceeds this (continuation stages).
-  double max_initial_residual = std::numeric_limits<double>::infinity();
-  const SolveMonitor* monitor = nullptr;  ///< progress and stop requests; may be null
-
-  void validate() const {
-    require_finite(tolerance, "ShootingOptions", "tolerance");
-    if (!(tolerance > 0)) throw_invalid("ShootingOptions", "tolerance", format_value(tolerance), "must be positive");
-    if (max_iterations < 1) {
-      throw_invalid("ShootingOptions", "max_iterations", std::to_string(max_iterations), "must be at least 1");
-    }
-    if (!(max_initial_residual > 0)) {
-      throw_invalid("ShootingOptions", "max_initial_residual", format_value(max_initial_residual), "must be positive");
-    }
-  }
-};
 
 /// The paper's initial guess: the body velocity of the geodesic from g0 to gT, log(g0^{-1} gT)/T.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
@@ -65,10 +44,6 @@ double xi_scale(const TransportedProblem<G, L>& problem) {
 }
 
 namespace detail {
-
-inline double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 /// Final recorded sweep shared by the solvers: fills trajectory and terminal figures. With
 /// `recorded` (the trajectory of a sweep from the same v0 and xi0), takes it instead of sweeping.

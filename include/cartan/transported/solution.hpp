@@ -9,7 +9,7 @@
 
 #include "cartan/status.hpp"
 #include "cartan/transported/method.hpp"
-#include "cartan/transported/scheme.hpp"
+#include "cartan/transported/trajectory.hpp"
 
 namespace cartan::transported {
 
@@ -60,6 +60,15 @@ struct TransportedSolution {
   std::optional<VariationalReport<G>> variational;  ///< set by the variational integrator only
 
   bool converged() const { return status == Status::Converged; }
+};
+
+/// What a solution carries besides its samples, one entry per node.
+template <groups::LieGroup G>
+struct AlongSolution {
+  std::vector<groups::AlgebraMatrixOf<G>> P;  ///< Ad(h_k); P_0 = I
+  std::vector<groups::TangentOf<G>> u;        ///< P_k v_k, the left-trivialised body velocity g^{-1} g'
+  std::vector<double> energy;                 ///< dl/dv(v_k).v_k - l(t_k, g_k, v_k) (lagrangian_energy; = mu_k.v_k by disc-Legendre)
+  std::vector<double> action;                 ///< S_h over steps 0..k-1: action[0] = 0, action.back() = S_h
 };
 
 }  // namespace cartan::transported

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "cartan/transported/collocation_solution.hpp"
+#include "cartan/transported/compiled.hpp"
 #include "cartan/mechanics/free_body.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
 #include "cartan/mechanics/natural_system.hpp"
@@ -313,7 +314,7 @@ TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const S
 /// Throws std::invalid_argument for every problem, options and guess that solve() rejects, and
 /// does no other work (a sweep checks all its problems before it solves any).
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-void validate(const TransportedProblem<G, L>& problem, const SolveOptions& options = {}, const SolveGuess<G>& guess = {}) {
+void validate(const TransportedProblem<G, L>& problem, const SolveOptions& options, const SolveGuess<G>& guess) {
   problem.validate();
   options.validate();
   guess.validate(problem.T);
@@ -324,8 +325,8 @@ void validate(const TransportedProblem<G, L>& problem, const SolveOptions& optio
 /// Solves `problem` as `options` say (header comment). Throws std::invalid_argument for a bad
 /// problem, options or guess (validate), before any work; numerical failures are statuses.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const SolveOptions& requested = {},
-                             const SolveGuess<G>& guess = {}) {
+TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const SolveOptions& requested,
+                             const SolveGuess<G>& guess) {
   validate(problem, requested, guess);
   const auto start = std::chrono::steady_clock::now();
   const SolveOptions options = with_deadline(requested, start);
@@ -374,17 +375,10 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
   return s;
 }
 
-// The built-in models' solve is compiled once, in the library (src/transported/solve_*.cpp), not
-// again in every translation unit that calls it: each instance is the heaviest code in cartan.
-extern template TransportedSolution<groups::SO3> solve(const TransportedProblem<groups::SO3, mechanics::RigidBody>&, const SolveOptions&,
-                                               const SolveGuess<groups::SO3>&);
-extern template TransportedSolution<groups::SO3> solve(const TransportedProblem<groups::SO3, mechanics::SO3Oscillator>&, const SolveOptions&,
-                                               const SolveGuess<groups::SO3>&);
-extern template TransportedSolution<groups::Heisenberg> solve(const TransportedProblem<groups::Heisenberg, mechanics::H3Oscillator>&,
-                                                      const SolveOptions&, const SolveGuess<groups::Heisenberg>&);
-extern template TransportedSolution<groups::SE2> solve(const TransportedProblem<groups::SE2, mechanics::SE2FreeBody>&, const SolveOptions&,
-                                               const SolveGuess<groups::SE2>&);
-extern template TransportedSolution<groups::SE3> solve(const TransportedProblem<groups::SE3, mechanics::SE3FreeBody>&, const SolveOptions&,
-                                               const SolveGuess<groups::SE3>&);
-
 }  // namespace cartan::transported
+
+// The built-in models' solve and validate are compiled once, in the library (compiled.hpp), not
+// again in every unit that calls them: each instance is the heaviest code in cartan.
+#define CARTAN_TRANSPORTED_EXTERN_MODEL(G, L) CARTAN_TRANSPORTED_COMPILED_MODEL(extern template, G, L)
+CARTAN_TRANSPORTED_BUILTIN_MODELS(CARTAN_TRANSPORTED_EXTERN_MODEL)
+#undef CARTAN_TRANSPORTED_EXTERN_MODEL

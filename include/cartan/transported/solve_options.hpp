@@ -14,9 +14,35 @@
 #include "cartan/monitor.hpp"
 #include "cartan/status.hpp"
 #include "cartan/transported/method.hpp"
-#include "cartan/transported/scheme.hpp"
+#include "cartan/scheme_order.hpp"
+#include "cartan/transported/trajectory.hpp"
 
 namespace cartan::transported {
+
+using ::cartan::SchemeOrder;  // scheme_order.hpp: the vocabulary of both stacks
+
+/// The single-shooting solver's options (shooting.hpp; also the general shooting's).
+struct ShootingOptions {
+  SchemeOrder order = SchemeOrder::First;
+  double tolerance = 1e-10;     ///< on |(log(gT^{-1} g_N), xi_N / xi_scale)| (dimensionless)
+  int max_iterations = 100;     ///< Levenberg–Marquardt iterations
+  bool analytic_jacobian = true;
+  int no_progress_window = 0;   ///< > 0: abandon when |r| has not halved in this many iterations
+  /// Abandon at once when the scaled |r| of the guess exceeds this (continuation stages).
+  double max_initial_residual = std::numeric_limits<double>::infinity();
+  const SolveMonitor* monitor = nullptr;  ///< progress and stop requests; may be null
+
+  void validate() const {
+    require_finite(tolerance, "ShootingOptions", "tolerance");
+    if (!(tolerance > 0)) throw_invalid("ShootingOptions", "tolerance", format_value(tolerance), "must be positive");
+    if (max_iterations < 1) {
+      throw_invalid("ShootingOptions", "max_iterations", std::to_string(max_iterations), "must be at least 1");
+    }
+    if (!(max_initial_residual > 0)) {
+      throw_invalid("ShootingOptions", "max_initial_residual", format_value(max_initial_residual), "must be positive");
+    }
+  }
+};
 
 struct SolveOptions {
   Method method = Method::Auto;
@@ -124,5 +150,23 @@ struct SolveGuess {
     trajectory->validate(T, where, false, 1e-12);
   }
 };
+
+namespace detail {
+
+/// Seconds since `start` (steady clock).
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace detail
+
+/// Seconds spent in f().
+template <class F>
+auto timed(double& seconds, F&& f) {
+  const auto start = std::chrono::steady_clock::now();
+  auto out = f();
+  seconds = detail::seconds_since(start);
+  return out;
+}
 
 }  // namespace cartan::transported

@@ -1,0 +1,84 @@
+#pragma once
+// The general problem's results and guesses: its nodes, its discrete trajectory, the solution a
+// solver returns, a guess, and the shooting's options. What a unit that calls the compiled solve
+// (general/compiled.hpp) or reads its result needs, without the solvers.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cartan/manifolds/manifold.hpp"
+#include "cartan/scheme_order.hpp"
+#include "cartan/status.hpp"
+#include "cartan/transported/method.hpp"
+#include "cartan/transported/solution.hpp"
+#include "cartan/transported/solve_options.hpp"
+
+namespace cartan::general {
+
+template <manifolds::ManifoldWithConnection M>
+struct GeneralNode {
+  double t = 0;
+  manifolds::PointOf<M> q;
+  manifolds::FrameOf<M> frame;
+  manifolds::ComponentsOf<M> mu;
+  manifolds::ComponentMatrixOf<M> Xi;
+  manifolds::ComponentsOf<M> v;
+};
+
+/// Every node k = 0..N of a discrete solution.
+template <manifolds::ManifoldWithConnection M>
+struct GeneralTrajectory {
+  std::vector<double> t;
+  std::vector<manifolds::PointOf<M>> q;
+  std::vector<manifolds::FrameOf<M>> frame;
+  std::vector<manifolds::ComponentsOf<M>> v, mu;
+  std::vector<manifolds::ComponentMatrixOf<M>> Xi;
+
+  void push(const GeneralNode<M>& node) {
+    t.push_back(node.t), q.push_back(node.q), frame.push_back(node.frame), v.push_back(node.v);
+    mu.push_back(node.mu), Xi.push_back(node.Xi);
+  }
+  /// Empties the trajectory and keeps its storage (a sweep that records reuses it).
+  void clear() { t.clear(), q.clear(), frame.clear(), v.clear(), mu.clear(), Xi.clear(); }
+  /// The last node.
+  GeneralNode<M> back() const { return {t.back(), q.back(), frame.back(), mu.back(), Xi.back(), v.back()}; }
+};
+
+template <manifolds::ManifoldWithConnection M>
+struct GeneralSolution {
+  Status status = Status::NotConverged;
+  std::string message;
+  transported::Method method = transported::Method::Shooting;
+  std::string branch;
+  int order = 1;
+  /// Every node of the requested problem's discrete solution (at a failure: of the best iterate).
+  GeneralTrajectory<M> trajectory;
+  manifolds::ComponentsOf<M> v0 = manifolds::ComponentsOf<M>::Zero();
+  manifolds::ComponentMatrixOf<M> Xi0 = manifolds::ComponentMatrixOf<M>::Zero();
+  double terminal_error = 0;  ///< separation(qT, q_N): |difference(qT, q_N)| where it is a logarithm
+  double xi_terminal = 0;     ///< |Xi_N|
+  int iterations = 0;
+  int sweeps = 0;
+  std::vector<double> residual_history;
+  double solve_time_s = 0;
+  std::optional<transported::CollocationReport> collocation;  ///< method collocation: mesh and residual
+
+  bool converged() const { return status == Status::Converged; }
+};
+
+/// The Lie-group shooting's options (order, tolerance, max_iterations, analytic_jacobian: the
+/// tangent-linear sweep of tangent.hpp, no_progress_window, monitor), so that the continuation
+/// path (transported/continuation.hpp) drives both problem families.
+using GeneralShootingOptions = transported::ShootingOptions;
+
+template <manifolds::ManifoldWithConnection M>
+struct GeneralGuess {
+  std::optional<manifolds::ComponentsOf<M>> v0;
+  std::optional<manifolds::ComponentMatrixOf<M>> Xi0;
+  /// A whole trajectory from 0 to T (e.g. an earlier solution): the start of collocation, and its
+  /// first node the (v0, Xi0) of shooting.
+  std::optional<GeneralTrajectory<M>> trajectory;
+};
+
+}  // namespace cartan::general
