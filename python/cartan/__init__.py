@@ -37,7 +37,8 @@ Manifolds with a connection (docs/general-connections.md)
     difference, transport_along_step, tangent_basis, metric, torsion_components,
     curvature_components, has_parallel_torsion_and_curvature, validate``.
 The transported-velocity problem on any of them (general/solve.hpp)
-    :func:`solve_general` with l = 1/2 v.A v - V(q) or a Python Lagrangian; returns a
+    :func:`solve` with a manifold as its first argument and l = 1/2 v.A v - V(q), or
+    :func:`solve_general` (which also takes a Python Lagrangian of the manifold); returns a
     :class:`GeneralSolveResult`.
 General two-point boundary-value problems
     :func:`solve_bvp`: scipy.integrate.solve_bvp's signature, arguments, result and behaviour
@@ -90,7 +91,7 @@ GROUPS = (SO3, Heisenberg, SE3, SE2)
 METHODS = tuple(SO3.methods)
 #: Every status word a solver reports (the same as the CLI's JSON).
 STATUSES = tuple(_cartan.statuses)
-#: The manifold classes :func:`solve_general` accepts.
+#: The manifold classes :func:`solve` (and :func:`solve_general`) accept.
 MANIFOLDS = (Sphere, HyperbolicPlane, Euclidean, GroupManifold, Chart)
 
 __all__ = [
@@ -278,16 +279,29 @@ class SolveResult:
                 f"branch={self.branch!r}, solve_time={self.solve_time:.4f})")
 
 
-def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="none", order=1,
+def solve(lagrangian, *, lam=None, T, N, gT=None, g0=None, method="auto", continuation="none", order=1,
           tol=_cartan.defaults["tol"], max_iterations=_cartan.defaults["max_iterations"],
           segments: Optional[int] = None, lambda_start: Optional[float] = None, v0=None, xi0=None, guess=None,
           group=None, samples: Optional[int] = None, max_nodes: Optional[int] = None,
-          time_limit: Optional[float] = None, progress=None):
-    """Solves the transported-velocity boundary-value problem of the Cartan-Schouten connection
-    of parameter `lam` (eq:reduced-system; paper §6-7) on [0, T] with N steps, g(0) = g0
-    (default: the identity), g(T) = gT, with the discrete scheme of order 1 (the paper's) or 2.
-    The library's solve (include/cartan/transported/solve.hpp) does the work; methods, options and
-    behaviour are those of `cartan solve`.
+          time_limit: Optional[float] = None, progress=None, q0=None, qT=None, inertia=None, potential=None,
+          potential_gradient=None, gravity=None, frame0=None, Xi0=None):
+    """Solves the transported-velocity boundary-value problem. One entry point for both kinds of
+    problem, decided by the first argument:
+
+    * a group model (below): the Cartan-Schouten connection of parameter `lam` (eq:reduced-system;
+      paper §6-7) on [0, T] with N steps, g(0) = g0 (default: the identity), g(T) = gT (`lam` and
+      `gT` required), returning a :class:`SolveResult`;
+    * a manifold (any of :data:`MANIFOLDS`, its connection included): the problem of
+      :func:`solve_general` with q0, qT and the Lagrangian given by `inertia`, `potential`,
+      `potential_gradient`, `gravity` (and `frame0`, `Xi0`), returning a :class:`GeneralSolveResult`.
+      A :class:`GroupManifold` with connection "cartan-schouten" reaches the Lie-group kernel by
+      itself. A Lagrangian object of the manifold goes through ``solve_general(manifold,
+      lagrangian=...)``.
+
+    The keywords of the other kind raise ValueError naming them. With the discrete scheme of order 1
+    (the paper's) or 2. The library's solve (include/cartan/transported/compiled.hpp) does the work;
+    methods, options and behaviour are those of `cartan solve`. What follows is the group model's
+    problem; the manifold's is :func:`solve_general`'s.
 
     `lagrangian` is a built-in left-reduced model (RigidBody, SO3Oscillator, H3Oscillator) or any
     object with methods value(t, g, v), momentum(t, g, v) (= dl/dv), group_gradient(t, g, v)
@@ -333,7 +347,10 @@ def solve(lagrangian, *, lam, T, N, gT, g0=None, method="auto", continuation="no
     any work. Solves of built-in models run without the GIL (so that threads solve in parallel).
     Many problems at once, on threads, processes or a cluster: :func:`sweep`.
     """
-    result = _transported("_solve", locals())
+    arguments = locals()
+    if isinstance(lagrangian, MANIFOLDS):
+        return _solve_on_manifold(lagrangian, arguments)
+    result = _transported("_solve", arguments)
     grp = _group_of(lagrangian, group, "solve")
     result["model"], result["inertia"] = _results.describe_model(lagrangian, grp)
     return SolveResult(**result)
@@ -360,10 +377,40 @@ def model_of(result):
     return _results.model_of(result)
 
 
+#: cartan.solve's keywords of each kind of problem (a group model's, a manifold's).
+_GROUP_KEYWORDS = ("lam", "gT", "g0", "xi0", "group")
+_MANIFOLD_KEYWORDS = ("q0", "qT", "inertia", "potential", "potential_gradient", "gravity", "frame0", "Xi0")
+
+
+def _refuse_other_kind(arguments, keywords, why):
+    """ValueError "cartan.solve: <key> = <value> <why>" for the first of `keywords` given (not None)."""
+    for name in keywords:
+        value = arguments.get(name)
+        if value is not None:
+            shown = " ".join(repr(value).split())  # an array on one line
+            raise ValueError(f"cartan.solve: {name} = {shown[:80]}{'...' if len(shown) > 80 else ''} {why}")
+
+
+def _solve_on_manifold(manifold, arguments):
+    """cartan.solve on a manifold: :func:`solve_general` with the manifold's keywords."""
+    _refuse_other_kind(arguments, _GROUP_KEYWORDS, f"applies to a group model's problem, not on the manifold "
+                       f"{type(manifold).__name__} (its connection is the manifold's)")
+    names = ("T", "N", "method", "continuation", "order", "tol", "max_iterations", "segments", "lambda_start", "v0",
+             "guess", "max_nodes", "time_limit", "progress") + _MANIFOLD_KEYWORDS
+    samples = arguments["samples"]
+    return solve_general(manifold, samples=0 if samples is None else samples, **{k: arguments[k] for k in names})
+
+
+
 def _transported(entry, arguments):
     """`<Group>.<entry>` ("_solve", or "_validate": every input error of _solve, no solve) on the
     keyword arguments of :func:`solve` given as a dict."""
     lagrangian = arguments["lagrangian"]
+    _refuse_other_kind(arguments, _MANIFOLD_KEYWORDS, "applies to a problem on a manifold (pass the manifold as the "
+                       f"first argument); lagrangian = {type(lagrangian).__name__} is a group model")
+    for name in ("lam", "gT"):
+        if arguments[name] is None:
+            raise TypeError(f"cartan.solve: missing a required argument: {name!r} (a group model's problem)")
     check_types("cartan.solve", arguments)
     if getattr(lagrangian, "side", "left") != "left":
         raise ValueError(f"cartan.solve: lagrangian = {type(lagrangian).__name__} is right-reduced; "
@@ -380,7 +427,8 @@ def _transported(entry, arguments):
 
 @dataclass
 class GeneralSolveResult:
-    """The result of :func:`solve_general`, with the vocabulary of :class:`SolveResult`.
+    """The result of :func:`solve` on a manifold (and of :func:`solve_general`), with the vocabulary of
+    :class:`SolveResult`.
 
     status: one of :data:`STATUSES`; success (also `converged`): status == "converged"; message,
     method ("shooting" or "collocation"; on the Lie-group kernel also "multiple-shooting" and

@@ -23,6 +23,15 @@ from ._arguments import check_types
 #: Keyword arguments of cartan.solve a sweep does not take: a progress callable would have to
 #: cross to the workers, and its calls from many solves at once would interleave.
 _NOT_IN_SWEEPS = ("progress",)
+
+
+def _not_in_sweeps():
+    """cartan.solve's arguments a sweep's problem does not take: progress, and a manifold's problem."""
+    from . import _MANIFOLD_KEYWORDS
+
+    return _NOT_IN_SWEEPS + _MANIFOLD_KEYWORDS
+
+
 #: The default number of tasks, at most (chunksize = ceil(len(problems) / _TASKS)).
 _TASKS = 1000
 
@@ -137,9 +146,14 @@ def _checked(i, problem, signature):
     where = f"cartan.sweep: problems[{i}]"
     if not isinstance(problem, Mapping):
         raise TypeError(f"{where} = {type(problem).__name__} is not a dict of cartan.solve's keyword arguments")
+    from . import MANIFOLDS
+
+    if isinstance(problem.get("lagrangian"), MANIFOLDS):
+        raise ValueError(f"{where}: lagrangian = {type(problem['lagrangian']).__name__} is a manifold; a sweep "
+                         "solves group models' problems (solve a manifold's with cartan.solve, one at a time)")
     for key in problem:
-        if key not in signature.parameters or key in _NOT_IN_SWEEPS:
-            takes = ", ".join(k for k in signature.parameters if k not in _NOT_IN_SWEEPS)
+        if key not in signature.parameters or key in _not_in_sweeps():
+            takes = ", ".join(k for k in signature.parameters if k not in _not_in_sweeps())
             raise TypeError(f"{where}: key {key!r} is not an argument of a sweep's problem (one of: {takes})")
     try:
         bound = signature.bind(**problem)
@@ -154,4 +168,6 @@ def _checked(i, problem, signature):
         _transported("_validate", arguments)
     except ValueError as e:
         raise ValueError(f"{where}: {e}") from e
+    except TypeError as e:  # a group model's required lam or gT
+        raise TypeError(f"{where}: {e.args[0].removeprefix('cartan.solve: ')}") from None
     return {key: value for key, value in arguments.items() if key in problem}

@@ -277,6 +277,38 @@ def test_verify_is_one_entry_point_for_both_kinds_of_result():
         cartan.verify(gen, manifold, group="SO3", inertia=[2.0, 3.0, 4.0])
 
 
+def test_solve_is_one_entry_point_for_both_kinds_of_problem():
+    """cartan.solve on a manifold is solve_general (the same call underneath: every array equal), on a
+    GroupManifold with Cartan-Schouten it reaches the Lie-group kernel by itself (the same nodes as the
+    group model's solve, to the tolerance both stop at), and each kind's keywords are refused by name
+    on the other, as cartan.verify does."""
+    sphere = cartan.solve(Sphere(), gravity=1.0, **SPHERE_ARGS)
+    same = cartan.solve_general(Sphere(), gravity=1.0, **SPHERE_ARGS)
+    assert isinstance(sphere, cartan.GeneralSolveResult) and sphere.converged
+    for name in ("t", "q", "frame", "v", "mu", "Xi"):
+        np.testing.assert_array_equal(getattr(sphere, name), getattr(same, name))
+    manifold = GroupManifold("so3", "cartan-schouten", lam=0.3)
+    gen = cartan.solve(manifold, T=3.0, N=100, q0=np.eye(3), qT=GT, inertia=[2.0, 3.0, 4.0], tol=1e-10)
+    lie = cartan.solve(cartan.RigidBody([2.0, 3.0, 4.0]), T=3.0, N=100, lam=0.3, gT=GT, tol=1e-10)
+    assert gen.converged and lie.converged and "Lie-group kernel" in gen.message
+    np.testing.assert_allclose(gen.q, lie.g, atol=1e-8)  # both stop at tol 1e-10 on the same equations
+    with pytest.raises(ValueError, match=r"^cartan\.solve: lam = 0\.3 applies to a group model's problem, not on "
+                                         r"the manifold Sphere"):
+        cartan.solve(Sphere(), lam=0.3, **SPHERE_ARGS)
+    with pytest.raises(ValueError, match=r"^cartan\.solve: gT = array\(\[\[1\., 0\., 0\.\], \[0\., 1\."):
+        cartan.solve(Sphere(), gT=np.eye(3), **SPHERE_ARGS)
+    with pytest.raises(ValueError, match=r"^cartan\.solve: gravity = 1\.0 applies to a problem on a manifold"):
+        cartan.solve(cartan.RigidBody([2.0, 3.0, 4.0]), T=3.0, N=100, lam=0.3, gT=GT, gravity=1.0)
+    with pytest.raises(TypeError, match=r"^cartan\.solve: missing a required argument: 'gT'"):
+        cartan.solve(cartan.RigidBody([2.0, 3.0, 4.0]), T=3.0, N=100, lam=0.3)
+    with pytest.raises(ValueError, match=r"^cartan\.sweep: problems\[0\]: lagrangian = Sphere is a manifold"):
+        cartan.sweep([dict(lagrangian=Sphere(), **SPHERE_ARGS)])
+    with pytest.raises(TypeError, match=r"^cartan\.sweep: problems\[0\]: key 'q0' is not an argument"):
+        cartan.sweep([dict(lagrangian=cartan.RigidBody([2.0, 3.0, 4.0]), T=3.0, N=100, lam=0.3, gT=GT, q0=np.eye(3))])
+    with pytest.raises(TypeError, match=r"^cartan\.sweep: problems\[0\]: missing a required argument: 'lam'"):
+        cartan.sweep([dict(lagrangian=cartan.RigidBody([2.0, 3.0, 4.0]), T=3.0, N=100, gT=GT)])
+
+
 def sphere_energy(r, A, G):
     return 0.5 * np.einsum("ki,ij,kj->k", r.v, A, r.v) + G * r.q[:, 2]
 
