@@ -43,8 +43,8 @@ nlohmann::json solve_with_connection(const ProblemSpec& spec, const SolveMonitor
     nlohmann::json out = result_header(spec, std::string(to_string(s.status)), s.message,
                                        std::string(to_string(s.method)), s.order, s.branch);
     out["connection"] = spec.connection;
-    if (spec.connection == "levi-civita") out["metric"] = spec.metric;
-    if (spec.connection == "coefficients") out["alpha"] = nested_alpha(spec.alpha_values, G::kDim);
+    if (connection_kind(spec) == connections::ConnectionKind::LeviCivita) out["metric"] = spec.metric;
+    if (connection_kind(spec) == connections::ConnectionKind::Coefficients) out["alpha"] = nested_alpha(spec.alpha_values, G::kDim);
     add_general_solution(out, s, "g");
     return out;
   });

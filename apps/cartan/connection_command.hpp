@@ -19,15 +19,10 @@ namespace cartan::cli {
 /// map of spec.alpha_values (alpha(e_i, e_j) = sum_k alpha[i][j][k] e_k).
 template <groups::LieGroup G>
 manifolds::GroupManifold<G> connection_manifold(const ProblemSpec& spec) {
-  constexpr int n = G::kDim;
-  if (spec.connection == "levi-civita") return manifolds::GroupManifold<G>::levi_civita(inertia_matrix<n>(spec.metric));
-  typename connections::InvariantConnection<G>::Coefficients c;
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      for (int k = 0; k < n; ++k) c[i](k, j) = spec.alpha_values[static_cast<std::size_t>((i * n + j) * n + k)];
-    }
+  if (connection_kind(spec) == connections::ConnectionKind::LeviCivita) {
+    return manifolds::GroupManifold<G>::levi_civita(inertia_matrix<G::kDim>(spec.metric));
   }
-  return manifolds::GroupManifold<G>(connections::InvariantConnection<G>(groups::Side::Left, c));
+  return manifolds::GroupManifold<G>::coefficients(spec.alpha_values);
 }
 
 /// The general problem of a validated group spec with a connection other than cartan-schouten,

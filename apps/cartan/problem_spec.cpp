@@ -114,9 +114,10 @@ std::vector<ProblemField> make_fields() {
        false, non_negative_finite, ProblemField::Scope::Any},
       {"output", &S::output, "output file (default stdout)", false, nullptr, ProblemField::Scope::Any},
       {"connection", &S::connection,
-       "groups: cartan-schouten (default, with --lambda) | levi-civita (of the left-invariant metric --metric) | "
-       "coefficients (the bilinear map of --alpha); the last two are solved by the general solver (methods auto, shooting, "
-       "collocation)",
+       "groups: " + enum_choices<connections::ConnectionKind>() +
+           " (cartan-schouten, the default, with --lambda; levi-civita of the left-invariant metric --metric; "
+           "coefficients, the bilinear map of --alpha); the last two are solved by the general solver (methods auto, "
+           "shooting, collocation)",
        false, nullptr, ProblemField::Scope::Group},
       {"metric", &S::metric, "levi-civita: the metric, n numbers (diagonal) or n*n (default: the inertia)", false, nullptr,
        ProblemField::Scope::Group},
@@ -298,23 +299,21 @@ void check_general_method(const ProblemSpec& spec, const std::string& problem) {
 /// --connection: its name, the options that belong to it, the general solver's methods, and the
 /// metric (levi-civita: symmetric positive definite, default the inertia) or the alpha file.
 void validate_connection(ProblemSpec& spec, std::size_t n) {
+  using connections::ConnectionKind;
   const std::string& c = spec.connection;
-  if (c != "cartan-schouten" && c != "levi-civita" && c != "coefficients") {
-    bad("connection", quote_input(c), "is not one of: cartan-schouten, levi-civita, coefficients");
+  const ConnectionKind kind = parse_enum<ConnectionKind>(c, kWhere);
+  const auto only = [&](ConnectionKind owner) {
+    return "is an option of --connection " + std::string(to_string(owner)) + " only";
+  };
+  if (kind != ConnectionKind::CartanSchouten && given(spec, "lambda")) {
+    bad("lambda", format_value(spec.lambda), only(ConnectionKind::CartanSchouten));
   }
-  if (c != "cartan-schouten" && given(spec, "lambda")) {
-    bad("lambda", format_value(spec.lambda), "is an option of --connection cartan-schouten only");
-  }
-  if (c != "levi-civita" && given(spec, "metric")) {
-    bad("metric", excerpt(spec.metric), "is an option of --connection levi-civita only");
-  }
-  if (c != "coefficients" && given(spec, "alpha")) {
-    bad("alpha", quote_input(spec.alpha), "is an option of --connection coefficients only");
-  }
-  if (c == "cartan-schouten") return;
+  if (kind != ConnectionKind::LeviCivita && given(spec, "metric")) bad("metric", excerpt(spec.metric), only(ConnectionKind::LeviCivita));
+  if (kind != ConnectionKind::Coefficients && given(spec, "alpha")) bad("alpha", quote_input(spec.alpha), only(ConnectionKind::Coefficients));
+  if (kind == ConnectionKind::CartanSchouten) return;
   check_general_method(spec, "--connection " + c);
   if (!spec.xi0.empty()) bad("xi0", excerpt(spec.xi0), "is a guess of the Cartan-Schouten solver's xi, not of --connection " + c);
-  if (c == "levi-civita") {
+  if (kind == ConnectionKind::LeviCivita) {
     if (spec.metric.empty()) spec.metric = spec.inertia;
     if (spec.metric.size() != n && spec.metric.size() != n * n) {
       bad("metric", excerpt(spec.metric), "must have " + std::to_string(n) + " or " + std::to_string(n * n) + " numbers");

@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "cartan/connections/connection_kind.hpp"
 #include "cartan/transported/method.hpp"
 
 namespace cartan::cli {
@@ -40,7 +41,7 @@ struct ProblemSpec {
   std::vector<double> mass;             ///< sphere: a1, a2 of l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1, 1)
   double gravity = 0;                   ///< sphere: G
   std::vector<double> q0, qT;           ///< sphere: endpoints (3 numbers each, normalised by validate)
-  std::string connection = "cartan-schouten";  ///< groups: cartan-schouten (with lambda) | levi-civita | coefficients
+  std::string connection{to_string(connections::ConnectionKind::CartanSchouten)};  ///< groups: a ConnectionKind word
   std::vector<double> metric;           ///< levi-civita: n or n^2 numbers (default: the inertia)
   std::string alpha;                    ///< coefficients: a JSON file alpha[i][j][k], alpha(e_i, e_j) = sum_k alpha[i][j][k] e_k
   std::vector<double> alpha_values;     ///< the file's n^3 numbers in (i, j, k) order (filled by validate)
@@ -94,7 +95,14 @@ inline constexpr double kBytesPerSegmentSquared = 4 * 144 * 8;
 void apply_json(ProblemSpec& spec, const nlohmann::json& file);
 
 /// True for a problem on a group with a connection other than Cartan–Schouten (the general solver).
-inline bool is_general_connection(const ProblemSpec& spec) { return spec.connection != "cartan-schouten"; }
+inline bool is_general_connection(const ProblemSpec& spec) {
+  return spec.connection != to_string(connections::ConnectionKind::CartanSchouten);
+}
+
+/// The connection of a validated group spec (validate checked the word).
+inline connections::ConnectionKind connection_kind(const ProblemSpec& spec) {
+  return parse_enum<connections::ConnectionKind>(spec.connection, "cartan solve");
+}
 
 /// True for a problem on a manifold (spec.manifold set) rather than on a group.
 inline bool is_manifold_problem(const ProblemSpec& spec) { return !spec.manifold.empty(); }

@@ -50,26 +50,37 @@ manifolds::GroupManifold<G> make_group_manifold(const py::object& connection, co
     takes("<Group>.Connection", "");
     return GM(connection.cast<const connections::InvariantConnection<G>&>());
   }
+  using connections::ConnectionKind;
   const std::string kind = py::isinstance<py::str>(connection) ? connection.cast<std::string>() : std::string();
-  if (kind == "cartan-schouten") {
-    takes(kind, "lam");
-    const double l = number_arg<double>(lam, where, "lam");
-    require_finite(l, where, "lam");
-    return GM::cartan_schouten(l);
+  ConnectionKind parsed{};
+  try {
+    parsed = parse_enum<ConnectionKind>(kind, where);
+  } catch (const std::invalid_argument&) {
+    throw_invalid(where, "connection", repr_of(connection),
+                  "is not one of: " + enum_choices<ConnectionKind>(", ") + " (or a left <Group>.Connection)");
   }
-  if (kind == "levi-civita") {
-    takes(kind, "metric");
-    return GM::levi_civita(matrix_or_diagonal<n>(metric, where, "metric"));
+  switch (parsed) {
+    case ConnectionKind::CartanSchouten: {
+      takes(kind, "lam");
+      const double l = number_arg<double>(lam, where, "lam");
+      require_finite(l, where, "lam");
+      return GM::cartan_schouten(l);
+    }
+    case ConnectionKind::LeviCivita:
+      takes(kind, "metric");
+      return GM::levi_civita(matrix_or_diagonal<n>(metric, where, "metric"));
+    case ConnectionKind::Coefficients: {
+      takes(kind, "alpha");
+      std::vector<double> numbers;  // alpha[i][j][k] in (i, j, k) order, as GroupManifold::coefficients reads them
+      for (const auto& plane : tensor_arg<n>(alpha, where, "alpha")) {  // plane(j, k) = alpha[i][j][k]
+        for (int j = 0; j < n; ++j) {
+          for (int k = 0; k < n; ++k) numbers.push_back(plane(j, k));
+        }
+      }
+      return GM::coefficients(numbers);
+    }
   }
-  if (kind == "coefficients") {
-    takes(kind, "alpha");
-    const auto a = tensor_arg<n>(alpha, where, "alpha");  // a[i](j, k) = alpha[i][j][k]
-    typename connections::InvariantConnection<G>::Coefficients c;  // c[i](k, j): column j is alpha(e_i, e_j)
-    for (int i = 0; i < n; ++i) c[i] = a[i].transpose();
-    return GM(connections::InvariantConnection<G>(groups::Side::Left, c));
-  }
-  throw_invalid(where, "connection", repr_of(connection),
-                "is not one of: cartan-schouten, levi-civita, coefficients (or a left <Group>.Connection)");
+  throw std::logic_error("make_group_manifold: unhandled ConnectionKind");
 }
 
 }  // namespace
@@ -86,7 +97,8 @@ void bind_group_manifold(py::module_& m) {
               return AnyGroupManifold{make_group_manifold<G>(connection, lam, metric, alpha)};
             });
           }),
-          py::arg("group"), py::arg("connection") = "cartan-schouten", py::kw_only(), py::arg("lam") = py::none(),
+          py::arg("group"), py::arg("connection") = std::string(to_string(connections::ConnectionKind::CartanSchouten)),
+          py::kw_only(), py::arg("lam") = py::none(),
           py::arg("metric") = py::none(), py::arg("alpha") = py::none(),
           "group: \"so3\", \"heisenberg\", \"se2\", \"se3\" or the group class. connection: \"cartan-schouten\" "
           "(with lam: alpha = lam ad), \"levi-civita\" (with metric, a symmetric positive-definite (n, n) matrix or "

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "cartan/groups/se3.hpp"
 #include "cartan/manifolds/derivatives.hpp"
 #include "cartan/manifolds/geometry.hpp"
 #include "manifold_instances.hpp"
@@ -286,6 +287,37 @@ TEST(GroupManifold, LeviCivitaOfTheBiInvariantMetricIsCartanSchoutenOneHalf) {
   const auto cs = manifolds::GroupManifold<groups::SO3>::cartan_schouten(0.5);
   for (int i = 0; i < 3; ++i) EXPECT_NEAR_MATRIX(lc.connection().coefficients()[i], cs.connection().coefficients()[i], 1e-15);
   EXPECT_TRUE(lc.has_parallel_torsion_and_curvature());
+}
+
+// GroupManifold::coefficients reads alpha(e_i, e_j) = sum_k alpha[(i n + j) n + k] e_k: the numbers of
+// lambda [e_i, e_j] on SE(3) (a non-compact group with a non-trivial bracket in every block) give the
+// Cartan–Schouten connection's Christoffel map (the same products, summed in another order: a few
+// roundings of terms of size 1).
+TEST(GroupManifold, CoefficientsInIJKOrderAreTheBilinearMap) {
+  using G = groups::SE3;
+  constexpr int n = G::kDim;
+  const double lambda = 0.3;
+  std::vector<double> alpha;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      const Eigen::Matrix<double, n, 1> value =
+          lambda * groups::bracket<G>(Eigen::Matrix<double, n, 1>::Unit(i), Eigen::Matrix<double, n, 1>::Unit(j));
+      for (int k = 0; k < n; ++k) alpha.push_back(value[k]);
+    }
+  }
+  const auto from_numbers = manifolds::GroupManifold<G>::coefficients(alpha);
+  const auto cs = manifolds::GroupManifold<G>::cartan_schouten(lambda);
+  std::mt19937 rng(kSeed);
+  for (int trial = 0; trial < 4; ++trial) {
+    const Eigen::Matrix<double, n, 1> x = random_vector<Eigen::Matrix<double, n, 1>>(rng, 1);
+    const Eigen::Matrix<double, n, 1> y = random_vector<Eigen::Matrix<double, n, 1>>(rng, 1);
+    EXPECT_NEAR_MATRIX(from_numbers.christoffel(G::identity(), x, y), cs.christoffel(G::identity(), x, y), 1e-14);
+  }
+  EXPECT_TRUE(from_numbers.has_parallel_torsion_and_curvature());
+  alpha.pop_back();
+  expect_invalid([&] { manifolds::GroupManifold<G>::coefficients(alpha); }, {"alpha", "215 numbers", "n^3 = 216"});
+  alpha.push_back(std::nan(""));
+  expect_invalid([&] { manifolds::GroupManifold<G>::coefficients(alpha); }, {"alpha", "finite"});
 }
 
 // The derivative of the matrix exponential (the transport derivative of constant connections) by

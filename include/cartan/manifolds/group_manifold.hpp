@@ -11,11 +11,14 @@
 // (Koszul: alpha(x, y) = 1/2 ([x, y] - I^{-1}(ad_x^T I y + ad_y^T I x)); not bi-invariant in
 // general, and then nabla R != 0), and any `InvariantConnection` with the left side.
 
+#include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "cartan/connections/cartan_schouten.hpp"
+#include "cartan/connections/connection_kind.hpp"
 #include "cartan/connections/invariant_connection.hpp"
 #include "cartan/groups/exp_jacobian.hpp"
 #include "cartan/manifolds/constant_connection.hpp"
@@ -70,6 +73,28 @@ class GroupManifold {
       return 0.5 * (groups::bracket<G>(x, y) - factor.solve(asym));
     };
     return GroupManifold(connections::InvariantConnection<G>::from_bilinear(groups::Side::Left, alpha), metric);
+  }
+
+  /// The connection alpha(e_i, e_j) = sum_k alpha[(i n + j) n + k] e_k of its n^3 coefficients
+  /// (the CLI's alpha file and Python's (n, n, n) array, in (i, j, k) order). Throws
+  /// std::invalid_argument naming them unless there are n^3 finite numbers.
+  static GroupManifold coefficients(std::span<const double> alpha) {
+    constexpr std::size_t n = kDim;
+    if (alpha.size() != n * n * n) {
+      throw_invalid("GroupManifold::coefficients", "alpha", "(" + std::to_string(alpha.size()) + " numbers)",
+                    "must have n^3 = " + std::to_string(n * n * n) + " numbers");
+    }
+    typename connections::InvariantConnection<G>::Coefficients c;  // c[i](k, j): column j is alpha(e_i, e_j)
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = 0; j < n; ++j) {
+        for (std::size_t k = 0; k < n; ++k) {
+          const double a = alpha[(i * n + j) * n + k];
+          require_finite(a, "GroupManifold::coefficients", "alpha");
+          c[i](static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(j)) = a;
+        }
+      }
+    }
+    return GroupManifold(connections::InvariantConnection<G>(groups::Side::Left, c));
   }
 
   static std::string_view name() { return G::name(); }
