@@ -78,4 +78,15 @@ void require_shape(const Eigen::Ref<const Eigen::MatrixXd>& x, Eigen::Index rows
   }
 }
 
+std::string excerpt(const std::vector<double>& values) {
+  constexpr std::size_t kMaxShown = 60;
+  std::string out;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) out += ',';
+    out += format_value(values[i]);
+    if (out.size() > kMaxShown) return out.substr(0, kMaxShown) + "... (" + std::to_string(values.size()) + " numbers)";
+  }
+  return out;
+}
+
 }  // namespace cartan

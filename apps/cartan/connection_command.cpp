@@ -1,7 +1,7 @@
 #include "connection_command.hpp"
 
 #include "cartan/general/compiled.hpp"
-#include "model_table.hpp"
+#include "cartan/models/catalogue.hpp"
 #include "solution_json.hpp"
 #include "solve_command.hpp"
 
@@ -28,10 +28,10 @@ nlohmann::json nested_alpha(const std::vector<double>& values, std::size_t n) {
 }  // namespace
 
 nlohmann::json solve_with_connection(const ProblemSpec& spec, const SolveMonitor& monitor) {
-  const ModelInfo& info = find_model(spec.group, spec.model, kConnectionWhere);
+  const models::ModelInfo& info = models::find_model(spec.group, spec.model, kConnectionWhere);
   info.check_element(spec.g0, kConnectionWhere, "g0");
   if (spec.a0.empty()) info.check_element(spec.gT, kConnectionWhere, "gT");
-  return visit_model(spec.group, spec.model, kConnectionWhere, [&]<class Entry>(const Entry&) {
+  return models::visit_model(spec.group, spec.model, kConnectionWhere, [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;
     using M = manifolds::GroupManifold<G>;
     const auto problem = connection_problem<Entry>(spec, kConnectionWhere);

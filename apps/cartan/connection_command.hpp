@@ -10,7 +10,7 @@
 
 #include "cartan/general/erased_lagrangian.hpp"
 #include "cartan/monitor.hpp"
-#include "model_table.hpp"
+#include "cartan/models/catalogue.hpp"
 #include "problem_spec.hpp"
 
 namespace cartan::cli {
@@ -20,13 +20,13 @@ namespace cartan::cli {
 template <groups::LieGroup G>
 manifolds::GroupManifold<G> connection_manifold(const ProblemSpec& spec) {
   if (connection_kind(spec) == connections::ConnectionKind::LeviCivita) {
-    return manifolds::GroupManifold<G>::levi_civita(inertia_matrix<G::kDim>(spec.metric));
+    return manifolds::GroupManifold<G>::levi_civita(models::inertia_matrix<G::kDim>(spec.metric));
   }
   return manifolds::GroupManifold<G>::coefficients(spec.alpha_values);
 }
 
 /// The general problem of a validated group spec with a connection other than cartan-schouten,
-/// for the model table's Entry (visit_model): the model behind the erased Lagrangian, whose solve
+/// for the model table's Entry (models::visit_model): the model behind the erased Lagrangian, whose solve
 /// and verify the library compiles once (general/compiled.hpp).
 template <class Entry>
 general::ErasedProblem<manifolds::GroupManifold<typename Entry::Table::Group>> connection_problem(
@@ -34,8 +34,8 @@ general::ErasedProblem<manifolds::GroupManifold<typename Entry::Table::Group>> c
   using G = typename Entry::Table::Group;
   using M = manifolds::GroupManifold<G>;
   using L = general::OnGroupManifold<G, typename Entry::Lagrangian>;
-  return {connection_manifold<G>(spec), general::ErasedLagrangian<M>(L{make_lagrangian<Entry>(spec.inertia, where)}),
-          spec.T, spec.N, element_of<G>(spec.g0), element_of<G>(final_element(spec)), std::nullopt};
+  return {connection_manifold<G>(spec), general::ErasedLagrangian<M>(L{models::make_lagrangian<Entry>(spec.inertia, where)}),
+          spec.T, spec.N, models::element_of<G>(spec.g0), models::element_of<G>(final_element(spec)), std::nullopt};
 }
 
 /// Solves a validated group problem whose connection is not cartan-schouten.

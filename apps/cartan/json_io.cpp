@@ -66,17 +66,6 @@ std::string describe(const nlohmann::json& value) {
   return std::string("(") + value.type_name() + ")";
 }
 
-std::string excerpt(const std::vector<double>& values) {
-  constexpr std::size_t kMaxShown = 60;
-  std::string out;
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (i > 0) out += ',';
-    out += format_value(values[i]);
-    if (out.size() > kMaxShown) return out.substr(0, kMaxShown) + "... (" + std::to_string(values.size()) + " numbers)";
-  }
-  return out;
-}
-
 std::vector<double> parse_list(const std::string& text, const std::string& name, std::string_view where) {
   std::vector<double> out;
   std::stringstream stream(text);

@@ -26,8 +26,6 @@ nlohmann::json read_json_file(const std::string& path, const std::string& what);
 /// with 2 keys)"), never dumped: a hostile document may be huge or deeply nested.
 std::string describe(const nlohmann::json& value);
 
-/// Numbers separated by commas (the fewest digits that read back exactly), cut after about 60 characters ("...").
-std::string excerpt(const std::vector<double>& values);
 
 /// Parses "x,y,z" into numbers; throws std::invalid_argument "<where>: <name> = ..." on a bad entry.
 std::vector<double> parse_list(const std::string& text, const std::string& name, std::string_view where = "cartan solve");

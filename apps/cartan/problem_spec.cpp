@@ -11,7 +11,7 @@
 #include "cartan/groups/so3.hpp"
 #include "cartan/transported/method.hpp"
 #include "json_io.hpp"
-#include "model_table.hpp"
+#include "cartan/models/catalogue.hpp"
 
 namespace cartan::cli {
 
@@ -56,13 +56,13 @@ const char* one_or_two(double x) { return is_scheme_order(x) ? nullptr : kScheme
 
 std::vector<ProblemField> make_fields() {
   using S = ProblemSpec;
-  const std::string groups = group_names();
+  const std::string groups = models::group_names();
   std::string models, inertias, elements;
-  for (const auto& m : model_infos()) {
+  for (const auto& m : models::model_infos()) {
     const std::string group = std::string(m.group);
     inertias += (inertias.empty() ? "" : "; ") + group + " " + std::string(m.model) + " " + excerpt(m.default_inertia);
     if (elements.find(group + ":") == std::string::npos) {  // once per group
-      models += (models.empty() ? "" : "; ") + group + ": " + model_names(m.group);
+      models += (models.empty() ? "" : "; ") + group + ": " + models::model_names(m.group);
       elements += (elements.empty() ? "" : "; ") + group + ": " + std::string(m.element_what);
     }
   }
@@ -198,7 +198,7 @@ void check_field(const ProblemSpec& spec, const ProblemField& field, std::string
 
 std::vector<double> final_element(const ProblemSpec& spec) {
   if (spec.a0.empty()) return spec.gT;
-  return element_numbers(groups::SO3::minimal_rotation(Eigen::Vector3d(spec.a0.data()), Eigen::Vector3d(spec.aT.data())));
+  return models::element_numbers(groups::SO3::minimal_rotation(Eigen::Vector3d(spec.a0.data()), Eigen::Vector3d(spec.aT.data())));
 }
 
 nlohmann::json result_header(const ProblemSpec& spec, const std::string& status, const std::string& message,
@@ -382,7 +382,7 @@ void check_connection(ProblemSpec& spec, std::size_t n) { validate_connection(sp
 void validate(ProblemSpec& spec) {
   if (is_manifold_problem(spec)) return validate_manifold_problem(spec);
   check_scope(spec, ProblemField::Scope::Group, "a problem on a group (it belongs to --manifold sphere)");
-  const ModelInfo& model = find_model(spec.group, spec.model, kWhere);
+  const models::ModelInfo& model = models::find_model(spec.group, spec.model, kWhere);
   spec.model = model.model;
   const std::size_t n = static_cast<std::size_t>(model.dim);
   const transported::Method method = parse_enum<transported::Method>(spec.method, "cartan solve");
@@ -422,7 +422,7 @@ void validate(ProblemSpec& spec) {
             " (the matrix, row-major) for group " + spec.group);
   }
   require_size("inertia", spec.inertia, spec.inertia.size(), "");
-  check_inertia(model, spec.inertia, kWhere);
+  models::check_inertia(model, spec.inertia, kWhere);
   validate_connection(spec, n);
   const std::string element_what = std::string(model.element_what);
   if (spec.g0.empty()) spec.g0 = model.identity;

@@ -19,13 +19,13 @@ struct ProblemSpec {
   /// Empty: a problem on a group (group, model, inertia, lambda, g0, gT); "sphere": the general
   /// problem on S^2 (manifold_command.hpp: model particle, mass, gravity, q0, qT).
   std::string manifold;
-  std::string group = "so3";            ///< a group of the model table (model_table.hpp)
+  std::string group = "so3";            ///< a group of the model table (models/catalogue.hpp)
   std::string model;                    ///< a model of the group; empty: the group's first (validate fills it)
   std::vector<double> inertia;          ///< n numbers (diagonal) or n^2 (row-major); default: the model's
   double lambda = 0.5;
   double T = 1.0;
   int N = 100;
-  std::vector<double> g0;               ///< the element's numbers (model_table.hpp); default the identity
+  std::vector<double> g0;               ///< the element's numbers (models/catalogue.hpp); default the identity
   std::vector<double> gT;
   std::vector<double> a0, aT;           ///< so3 only: gT = minimal rotation taking a0 to aT
   std::string method = "auto";          ///< a Method word (transported/method.hpp): auto | shooting | multiple-shooting | two-level | collocation | variational

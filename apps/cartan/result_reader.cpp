@@ -10,7 +10,7 @@
 #include "cartan/status.hpp"
 #include "cartan/transported/method.hpp"
 #include "json_io.hpp"
-#include "model_table.hpp"
+#include "cartan/models/catalogue.hpp"
 
 namespace cartan::cli {
 
@@ -108,7 +108,7 @@ ResultFile read_sphere(const nlohmann::json& j, ResultFile& r) {
 }
 
 /// The echoed problem fields (problem_fields()), read and checked as a problem file's, then the
-/// model (model_table.hpp), its inertia (by the library's model) and the boundary elements.
+/// model (models/catalogue.hpp), its inertia (by the library's model) and the boundary elements.
 ProblemSpec problem_of(const nlohmann::json& j) {
   ProblemSpec p;
   for (const auto& field : problem_fields()) {
@@ -117,12 +117,12 @@ ProblemSpec problem_of(const nlohmann::json& j) {
     if (field.key == "group" || field.key == "model") continue;  // checked against the table below
     check_field(p, field, kResultWhere);
   }
-  const ModelInfo& model = find_model(p.group, p.model, kResultWhere);
+  const models::ModelInfo& model = models::find_model(p.group, p.model, kResultWhere);
   const auto n = static_cast<std::size_t>(model.dim);
   if (p.inertia.size() != n && p.inertia.size() != n * n) {
     bad_result("inertia", excerpt(p.inertia), "must have " + std::to_string(n) + " or " + std::to_string(n * n) + " numbers");
   }
-  check_inertia(model, p.inertia, kResultWhere);
+  models::check_inertia(model, p.inertia, kResultWhere);
   if (j.contains("side") && json_text(j["side"], kResultWhere, "side") != "left") {
     bad_result("side", describe(j["side"]), "must be \"left\" (the transported velocity is left-trivialised)");
   }
@@ -154,7 +154,7 @@ ResultFile read(const nlohmann::json& j) {
     return read_sphere(j, r);
   }
   r.problem = problem_of(j);
-  const ModelInfo& model = find_model(r.problem.group, r.problem.model, kResultWhere);
+  const models::ModelInfo& model = models::find_model(r.problem.group, r.problem.model, kResultWhere);
   read_method_and_order();
   r.t = times(require_key(j, "t", kResultWhere, kResultFile), r.problem.T);
   const auto rows = static_cast<std::size_t>(r.t.size());

@@ -21,7 +21,7 @@ struct ResultFile {
   ProblemSpec problem;
   int order = 0;
   Eigen::VectorXd t;           ///< M >= 2 strictly increasing times, t[0] = 0, t[M-1] = T
-  /// M rows: g has the element's numbers (model_table.hpp; the sphere: q, 3 numbers), v and mu n,
+  /// M rows: g has the element's numbers (models/catalogue.hpp; the sphere: q, 3 numbers), v and mu n,
   /// xi n (Cartan–Schouten) or Xi n^2 (the general solver: sphere or another connection).
   Eigen::MatrixXd g, v, mu, xi, Xi;
 

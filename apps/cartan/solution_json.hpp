@@ -10,16 +10,16 @@
 
 #include "cartan/general/solution.hpp"
 #include "cartan/transported/solution.hpp"
-#include "model_table.hpp"
+#include "cartan/models/catalogue.hpp"
 #include "problem_spec.hpp"
 
 namespace cartan::cli {
 
-/// One row per element: its numbers (element_numbers: a matrix row-major, a vector as it is).
+/// One row per element: its numbers (models::element_numbers: a matrix row-major, a vector as it is).
 template <class Value>
 nlohmann::json rows(const std::vector<Value>& values) {
   nlohmann::json out = nlohmann::json::array();
-  for (const auto& x : values) out.push_back(element_numbers(x));
+  for (const auto& x : values) out.push_back(models::element_numbers(x));
   return out;
 }
 

@@ -3,7 +3,7 @@
 #include "cartan/transported/compiled.hpp"
 #include "connection_command.hpp"
 #include "manifold_command.hpp"
-#include "model_table.hpp"
+#include "cartan/models/catalogue.hpp"
 #include "solution_json.hpp"
 
 namespace cartan::cli {
@@ -21,9 +21,9 @@ transported::SolveGuess<G> guess_of(const ProblemSpec& spec) {
 }
 
 /// Throws std::invalid_argument ("cartan solve: g0 = ... is not ...") unless g0 and gT are
-/// elements of the spec's group (ModelInfo::check_element).
+/// elements of the spec's group (models::ModelInfo::check_element).
 void check_endpoints(const ProblemSpec& spec) {
-  const ModelInfo& model = find_model(spec.group, spec.model, kSolveCommandWhere);
+  const models::ModelInfo& model = models::find_model(spec.group, spec.model, kSolveCommandWhere);
   model.check_element(spec.g0, kSolveCommandWhere, "g0");
   if (spec.a0.empty()) model.check_element(spec.gT, kSolveCommandWhere, "gT");
 }
@@ -45,18 +45,18 @@ transported::SolveOptions solve_options(const ProblemSpec& spec) {
 
 SO3Endpoints so3_endpoints(const ProblemSpec& spec) {
   check_endpoints(spec);
-  return {element_of<groups::SO3>(spec.g0), element_of<groups::SO3>(final_element(spec))};
+  return {models::element_of<groups::SO3>(spec.g0), models::element_of<groups::SO3>(final_element(spec))};
 }
 
 nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor) {
   if (is_manifold_problem(spec)) return solve_manifold(spec, monitor);
   if (is_general_connection(spec)) return solve_with_connection(spec, monitor);
   check_endpoints(spec);
-  return visit_model(spec.group, spec.model, kSolveCommandWhere, [&]<class Entry>(const Entry&) {
+  return models::visit_model(spec.group, spec.model, kSolveCommandWhere, [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;
     const transported::TransportedProblem<G, typename Entry::Lagrangian> problem{
-        make_lagrangian<Entry>(spec.inertia, kSolveCommandWhere), spec.lambda, spec.T, spec.N, element_of<G>(spec.g0),
-        element_of<G>(final_element(spec))};
+        models::make_lagrangian<Entry>(spec.inertia, kSolveCommandWhere), spec.lambda, spec.T, spec.N, models::element_of<G>(spec.g0),
+        models::element_of<G>(final_element(spec))};
     transported::SolveOptions options = solve_options(spec);
     options.monitor = monitor;
     return solution_json(spec, transported::solve(problem, options, guess_of<G>(spec)));

@@ -12,7 +12,7 @@
 namespace cartan::cli {
 
 /// The boundary data of a validated so3 spec: g0 and gT as rotations (the 9 numbers projected
-/// onto SO(3), element_of in model_table.hpp), gT the minimal rotation taking a0 to aT when those
+/// onto SO(3), models::element_of in models/catalogue.hpp), gT the minimal rotation taking a0 to aT when those
 /// are given. Cheap; throws std::invalid_argument naming g0/gT when a matrix is not a rotation.
 struct SO3Endpoints {
   groups::SO3::Element g0, gT;
@@ -23,7 +23,7 @@ SO3Endpoints so3_endpoints(const ProblemSpec& spec);
 transported::SolveOptions solve_options(const ProblemSpec& spec);
 
 /// Solves a validated spec with the library's solve (transported/solve.hpp) for the spec's model
-/// (visit_model, model_table.hpp). The JSON has status, message, group, model, lambda, T, N,
+/// (models::visit_model, models/catalogue.hpp). The JSON has status, message, group, model, lambda, T, N,
 /// method, order, branch, t, g, v, mu, xi, terminal_error, xi_terminal, action, iterations
 /// {outer, inner, sweeps}, solve_time_s, and for collocation mesh_size, max_residual (and
 /// group_defect for the matrix groups). Throws std::invalid_argument for boundary data that are

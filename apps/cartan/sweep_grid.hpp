@@ -16,7 +16,7 @@ struct GridFlags {
   std::string lambdas;       ///< "0,0.5,1"
   std::string lambda_range;  ///< "START:STOP:COUNT", COUNT evenly spaced values including both ends
   std::string aT_list;       ///< so3 directions "x,y,z;x,y,z"
-  std::string gT_list;       ///< final elements separated by ";", each as --gT (model_table.hpp)
+  std::string gT_list;       ///< final elements separated by ";", each as --gT (models/catalogue.hpp)
   std::string grid_file;     ///< JSON array of objects of problem keys
 };
 

@@ -4,7 +4,7 @@
 #include "cartan/transported/compiled.hpp"
 #include "connection_command.hpp"
 #include "manifold_command.hpp"
-#include "model_table.hpp"
+#include "cartan/models/catalogue.hpp"
 
 namespace cartan::cli {
 
@@ -68,7 +68,7 @@ verify::Report verify_general_result(const ResultFile& r) {
     const auto x = general_trajectory<manifolds::Sphere>(r, [](const Eigen::VectorXd& q) { return Eigen::Vector3d(q); });
     return general::verify_general(sphere_problem(p), x, r.order, p.tol, status);
   }
-  return visit_model(p.group, p.model, kVerifyCommandWhere, [&]<class Entry>(const Entry&) {
+  return models::visit_model(p.group, p.model, kVerifyCommandWhere, [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;
     const auto x = general_trajectory<manifolds::GroupManifold<G>>(r, [](const Eigen::VectorXd& g) { return element<G>(g); });
     return general::verify_general(connection_problem<Entry>(p, kVerifyCommandWhere), x, r.order, p.tol, status);
@@ -90,10 +90,10 @@ nlohmann::json report_json(const verify::Report& report) {
 verify::Report verify(const ResultFile& r) {
   if (r.general()) return verify_general_result(r);
   const ProblemSpec& p = r.problem;
-  return visit_model(p.group, p.model, kVerifyCommandWhere, [&]<class Entry>(const Entry&) {
+  return models::visit_model(p.group, p.model, kVerifyCommandWhere, [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;
     const transported::TransportedProblem<G, typename Entry::Lagrangian> problem{
-        make_lagrangian<Entry>(p.inertia, kVerifyCommandWhere), p.lambda, p.T, p.N, element<G>(p.g0), element<G>(p.gT)};
+        models::make_lagrangian<Entry>(p.inertia, kVerifyCommandWhere), p.lambda, p.T, p.N, element<G>(p.g0), element<G>(p.gT)};
     // Behind the erased Lagrangian, whose verify the library compiles: the model's own members
     // evaluated, so the figures of the typed verify (tests/transported/test_erased.cpp).
     return verify::verify_trajectory(transported::erased(problem), trajectory<G>(r), r.order, p.tol,

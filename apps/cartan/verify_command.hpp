@@ -9,8 +9,8 @@
 
 namespace cartan::cli {
 
-/// Runs every check on a validated result for its model (visit_model, model_table.hpp); a status
-/// other than converged adds the failing `converged` check. Throws std::invalid_argument when the
+/// Runs every check on a validated result for its model (models::visit_model,
+/// models/catalogue.hpp); a status other than converged adds the failing `converged` check. Throws std::invalid_argument when the
 /// file's boundary data or inertia are rejected by the models.
 verify::Report verify(const ResultFile& result);
 

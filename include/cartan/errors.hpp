@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace cartan {
 
@@ -33,6 +34,9 @@ std::string format_value(double x);
 /// `\xNN`, cut to 60 characters (then "..." follows), so that hostile input cannot flood or
 /// corrupt a terminal.
 std::string quote_input(std::string_view text);
+
+/// Numbers separated by commas (the fewest digits that read back exactly), cut after about 60 characters ("...").
+std::string excerpt(const std::vector<double>& values);
 
 /// Throws std::invalid_argument("<where>: <name> = <value> <problem>").
 [[noreturn]] void throw_invalid(std::string_view where, std::string_view name,

@@ -23,6 +23,8 @@ statuses: list[str]
 
 defaults: dict[str, Any]
 
+models: list[dict[str, Any]]
+
 class _CancelToken(metaclass=type):
     """Solves started inside `with token:` on this thread stop (status interrupted) at their next iteration once token.cancel() is called, from any thread."""
     def __init__(self) -> None: ...

@@ -16,15 +16,9 @@ import numpy as np
 
 from . import _cartan
 
-#: The built-in models the CLI knows, by Python class name: (CLI group, CLI model), as in
-#: apps/cartan/model_table.hpp.
-BUILTIN_MODELS = {
-    "RigidBody": ("so3", "free-rigid-body"),
-    "SO3Oscillator": ("so3", "oscillator"),
-    "H3Oscillator": ("heisenberg", "oscillator"),
-    "SE2FreeBody": ("se2", "free-body"),
-    "SE3FreeBody": ("se3", "free-body"),
-}
+#: The built-in models, by Python class name: (CLI group, CLI model), from the library's catalogue
+#: (include/cartan/models/catalogue.hpp).
+BUILTIN_MODELS = {m["type"]: (m["group"], m["model"]) for m in _cartan.models}
 #: The prefix of the model name of a Lagrangian defined in Python (not reconstructible from a file).
 PYTHON_MODEL = "python:"
 _GROUPS = {g.name: g for g in (_cartan.SO3, _cartan.Heisenberg, _cartan.SE3, _cartan.SE2)}

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bind_all.hpp"
+#include "cartan/models/catalogue.hpp"
 #include "bindings.hpp"
 
 namespace cartan::python {
@@ -144,6 +145,16 @@ PYBIND11_MODULE(_cartan, m) {
   // The library's defaults (transported/method.hpp), which cartan.solve and solve_general take.
   m.attr("defaults") = pybind11::dict(pybind11::arg("tol") = cartan::transported::kDefaultTol,
                                       pybind11::arg("max_iterations") = cartan::transported::kDefaultMaxIterations);
+  // The library's catalogue of built-in models (models/catalogue.hpp): what result files and the
+  // CLI call them, and which class each is (cartan._results.BUILTIN_MODELS).
+  pybind11::list models;
+  for (const auto& info : cartan::models::model_infos()) {
+    models.append(pybind11::dict(pybind11::arg("group") = std::string(info.group),
+                                 pybind11::arg("model") = std::string(info.model),
+                                 pybind11::arg("type") = std::string(info.type_name),
+                                 pybind11::arg("default_inertia") = info.default_inertia));
+  }
+  m.attr("models") = models;
   using cartan::python::CancelToken;
   pybind11::class_<CancelToken>(m, "_CancelToken",
                                 "Solves started inside `with token:` on this thread stop (status interrupted) at "

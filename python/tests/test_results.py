@@ -95,6 +95,28 @@ def test_a_result_names_its_model_inertia_and_connection(name):
     assert type(rebuilt) is type(model) and np.array_equal(rebuilt.inertia, model.inertia)
 
 
+def test_the_models_are_the_library_catalogue():
+    """The module reads the built-in models from the library's catalogue (models/catalogue.hpp), the
+    one the CLI reads: every entry is a class of cartan on its group whose model at the default
+    inertia builds, the CLI's help lists the same (group, model) pairs, and the tests' CASES cover
+    them all."""
+    from cartan import _cartan, _results
+
+    pairs = [(m["group"], m["model"]) for m in _cartan.models]
+    assert sorted(pairs) == sorted(tuple(name.split("/")) for name in CASES)
+    assert _results.BUILTIN_MODELS == {m["type"]: (m["group"], m["model"]) for m in _cartan.models}
+    for m in _cartan.models:
+        cls = getattr(cartan, m["type"])
+        assert cls.group.name == m["group"]
+        n = cls.group.dim
+        inertia = np.array(m["default_inertia"], dtype=float)
+        expected = np.diag(inertia) if inertia.size == n else inertia.reshape(n, n)
+        assert np.array_equal(cls(m["default_inertia"]).inertia, expected)
+    help_text = run_cli("solve", "--help").stdout
+    for group, model in pairs:
+        assert group in help_text and model in help_text
+
+
 def test_a_python_lagrangian_is_named_but_not_reconstructible(tmp_path):
     r = cartan.solve(PyRigidBody(INERTIA), lam=0.5, T=1, N=50, gT=GT_SO3)
     assert r.model == "python:PyRigidBody" and np.array_equal(r.inertia, np.diag(INERTIA))

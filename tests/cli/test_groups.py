@@ -1,4 +1,4 @@
-"""Every group of the CLI's model table (apps/cartan/model_table.hpp) through `cartan solve`,
+"""Every group of the CLI's model table (include/cartan/models/catalogue.hpp) through `cartan solve`,
 `cartan sweep` and `cartan verify`: se2 and se3 results converge, reach the endpoint and pass
 verify; a full symmetric inertia on so3 is checked against an independent symmetry (conjugating
 the problem by a rotation Q conjugates the solution); hostile input exits 2 with one short line.

@@ -1,5 +1,5 @@
 // libFuzzer target: the bytes of a `cartan solve --problem` file through the CLI's own path,
-// parse_json -> apply_json -> validate -> the model and the boundary data (visit_model,
+// parse_json -> apply_json -> validate -> the model and the boundary data (models::visit_model,
 // so3_endpoints), without the solver.
 // Expected rejections are std::invalid_argument; any other exception escapes and is reported by
 // libFuzzer as a crash, as are sanitizer findings, leaks, timeouts and huge allocations.
@@ -12,7 +12,7 @@
 #include <string>
 
 #include "json_io.hpp"
-#include "model_table.hpp"
+#include "cartan/models/catalogue.hpp"
 #include "problem_spec.hpp"
 #include "solve_command.hpp"
 
@@ -28,7 +28,7 @@ void require(bool condition, const char* what) {
 /// What validate() promises and the boundary data must deliver for a spec it accepted.
 void check_accepted(cartan::cli::ProblemSpec& spec) {
   require(spec.N >= 1 && std::isfinite(spec.T) && spec.T > 0 && spec.tol > 0, "validated sizes");
-  const cartan::cli::ModelInfo& model = cartan::cli::find_model(spec.group, spec.model, "fuzz");
+  const cartan::models::ModelInfo& model = cartan::models::find_model(spec.group, spec.model, "fuzz");
   const auto n = static_cast<std::size_t>(model.dim);
   require(spec.inertia.size() == n || spec.inertia.size() == n * n, "inertia has n or n^2 entries");
   require(spec.g0.size() == model.element_size, "g0 has the element's size");
@@ -37,11 +37,11 @@ void check_accepted(cartan::cli::ProblemSpec& spec) {
   // model accepts the validated inertia and the elements are finite.
   model.check_element(spec.g0, "fuzz", "g0");
   model.check_element(cartan::cli::final_element(spec), "fuzz", "gT");
-  cartan::cli::visit_model(spec.group, spec.model, "fuzz", [&]<class Entry>(const Entry&) {
+  cartan::models::visit_model(spec.group, spec.model, "fuzz", [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;
-    (void)cartan::cli::make_lagrangian<Entry>(spec.inertia, "fuzz");
+    (void)cartan::models::make_lagrangian<Entry>(spec.inertia, "fuzz");
     for (const auto& x : {spec.g0, cartan::cli::final_element(spec)}) {
-      require(cartan::cli::element_of<G>(x).allFinite(), "element is finite");
+      require(cartan::models::element_of<G>(x).allFinite(), "element is finite");
     }
     return 0;
   });

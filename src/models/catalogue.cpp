@@ -1,13 +1,12 @@
-#include "model_table.hpp"
+#include "cartan/models/catalogue.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>
 #include <utility>
 
 #include "cartan/errors.hpp"
-#include "json_io.hpp"
 
-namespace cartan::cli {
+namespace cartan::models {
 
 namespace {
 
@@ -61,6 +60,7 @@ ModelInfo info_of(const ModelEntry<Table, L>& entry) {
   using G = typename Table::Group;
   return {Table::name,
           entry.name,
+          entry.type_name,
           G::kDim,
           static_cast<std::size_t>(G::Element::SizeAtCompileTime),
           Table::element_what,
@@ -158,4 +158,4 @@ template groups::ElementOf<groups::Heisenberg> element_of<groups::Heisenberg>(co
 template groups::ElementOf<groups::SE2> element_of<groups::SE2>(const std::vector<double>&);
 template groups::ElementOf<groups::SE3> element_of<groups::SE3>(const std::vector<double>&);
 
-}  // namespace cartan::cli
+}  // namespace cartan::models

@@ -1,14 +1,15 @@
 #pragma once
-// The one table of the groups and models the CLI knows (`cartan solve`, `cartan sweep`,
-// `cartan verify`): per group its name, how an element is written (numbers in JSON and on the
-// command line) and its models, each with its name, Lagrangian type and default inertia. The
-// first model of a group is its default. Everything that depends on the group or model goes
-// through this table: names and choices (runtime, ModelInfo), and the typed dispatch
-// (visit_model) that builds a problem for the library's solve and verify.
+// The one catalogue of the built-in groups and models, the library's (the CLI's `cartan solve`,
+// `sweep`, `verify` and the Python module read it): per group its name, how an element is written
+// (numbers in JSON and on the command line) and its models, each with its name, Lagrangian type,
+// the type's name (the Python class) and default inertia. The first model of a group is its
+// default. Everything that depends on the group or model goes through this table: names and
+// choices (runtime, ModelInfo), and the typed dispatch (visit_model) that builds a problem for the
+// library's solve and verify.
 //
-// Adding a model: a Lagrangian whose solve is compiled once in the library (an explicit
-// instantiation in src/transported/ and an `extern template` in transported/solve.hpp), and one
-// entry in kModels below.
+// Adding a model: a Lagrangian whose solve is compiled once in the library (its entry in
+// CARTAN_TRANSPORTED_BUILTIN_MODELS, transported/compiled.hpp, and src/transported/solve_*.cpp),
+// its Python class (python/src/bind_<group>.cpp), and one entry in kModels below.
 
 #include <Eigen/Core>
 #include <cstddef>
@@ -27,7 +28,7 @@
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
 #include "cartan/mechanics/rigid_body.hpp"
 
-namespace cartan::cli {
+namespace cartan::models {
 
 /// Input rotation blocks are accepted within this tolerance and projected onto SO(3), so that
 /// matrices printed with 7 or more digits can be passed back in; the bottom row of a rigid
@@ -74,6 +75,7 @@ struct ModelEntry {
   using Table = TableT;
   using Lagrangian = L;
   std::string_view name;
+  std::string_view type_name;  ///< the Lagrangian type's name, also its Python class's
   std::vector<double> default_inertia;
 };
 
@@ -83,17 +85,18 @@ struct ModelEntry {
 inline const std::tuple<ModelEntry<SO3Entry, mechanics::RigidBody>, ModelEntry<SO3Entry, mechanics::SO3Oscillator>,
                         ModelEntry<HeisenbergEntry, mechanics::H3Oscillator>, ModelEntry<SE2Entry, mechanics::SE2FreeBody>,
                         ModelEntry<SE3Entry, mechanics::SE3FreeBody>>
-    kModels{{"free-rigid-body", {2, 3, 4}},
-            {"oscillator", {2, 3, 4}},
-            {"oscillator", {1, 1, 1}},
-            {"free-body", {1, 1, 0.5}},
-            {"free-body", {1, 1, 1, 2, 3, 4}}};
+    kModels{{"free-rigid-body", "RigidBody", {2, 3, 4}},
+            {"oscillator", "SO3Oscillator", {2, 3, 4}},
+            {"oscillator", "H3Oscillator", {1, 1, 1}},
+            {"free-body", "SE2FreeBody", {1, 1, 0.5}},
+            {"free-body", "SE3FreeBody", {1, 1, 1, 2, 3, 4}}};
 
 // ---- Runtime view of the table ------------------------------------------------------------------
 
 /// One model as data: what the parsers and messages need.
 struct ModelInfo {
   std::string_view group, model;
+  std::string_view type_name;         ///< the Lagrangian type's (and Python class's) name
   int dim = 0;                        ///< algebra dimension: inertia n or n x n, v0/xi0 n numbers
   std::size_t element_size = 0;       ///< numbers of an element (9, 3, 9, 16)
   std::string_view element_what;
@@ -136,7 +139,7 @@ template <groups::LieGroup G>
 groups::ElementOf<G> element_of(const std::vector<double>& numbers);
 
 /// The inertia as a matrix: n numbers are its diagonal, n^2 numbers the full matrix row-major.
-/// Sizes are checked by validate (problem_spec.hpp) and read_result; the library's model checks
+/// Sizes are checked by the CLI (validate, read_result: apps/cartan/problem_spec.hpp) and Python; the library's model checks
 /// symmetry, finiteness and definiteness when it is built.
 template <int n>
 Eigen::Matrix<double, n, n> inertia_matrix(const std::vector<double>& numbers) {
@@ -192,4 +195,4 @@ auto visit_model(std::string_view group, std::string_view model, std::string_vie
       kModels);
 }
 
-}  // namespace cartan::cli
+}  // namespace cartan::models
