@@ -71,12 +71,8 @@ class CMakeBuildExt(build_ext):
 
     def _cmake_build(self):
         tree = Path(self.build_temp).resolve() / "cmake"
-        # Ninja where it is installed (scripts/install-deps.sh installs it): it compiles the module's
-        # units while the library's last ones finish, where Make waits for the library to be
-        # archived (bench/README.md, "Build time"); Make otherwise.
-        generator = ["-G", "Ninja"] if shutil.which("ninja") and not (tree / "CMakeCache.txt").exists() else []
         configure = [
-            "cmake", "-S", str(ROOT), "-B", str(tree), *generator, "-DCMAKE_BUILD_TYPE=Release",
+            "cmake", "-S", str(ROOT), "-B", str(tree), "-DCMAKE_BUILD_TYPE=Release",
             f"-DPython3_EXECUTABLE={sys.executable}", "-DCARTAN_BUILD_PYTHON=ON",
             "-DCARTAN_BUILD_TESTS=OFF", "-DCARTAN_BUILD_EXAMPLES=OFF", "-DCARTAN_BUILD_BENCH=OFF",
             # The project's own trees treat warnings as errors; a user's compiler may warn where ours does not.

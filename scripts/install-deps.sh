@@ -16,7 +16,7 @@ packages=(
   python3-numpy python3-scipy python3-matplotlib python3-pytest
   python3-distributed
   # `pip install --no-build-isolation .` (setup.py) into a venv; mypy and its stubtest for the stubs
-  python3-venv python3-pip python3-setuptools python3-wheel python3-mypy ninja-build
+  python3-venv python3-pip python3-setuptools python3-wheel python3-mypy
   clang libclang-rt-14-dev
 )
 # The documentation site (docs/site, scripts/build-docs.sh): Sphinx with MyST for the Markdown,
