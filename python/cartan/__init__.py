@@ -102,7 +102,7 @@ __all__ = [
     "Trajectory", "SolveResult", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve", "sweep",
     "VerifyReport", "verify", "load", "model_of", "CheckReport", "check_lagrangian",
     "BvpResult", "solve_bvp",
-    "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "Chart", "MANIFOLDS", "GeneralSolveResult", "solve_general",
+    "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "Chart", "MANIFOLDS", "Result", "GeneralSolveResult", "solve_general",
     "verify_general",
 ]
 
@@ -150,7 +150,48 @@ def lagrangian_hessian(lagrangian, t, g, v, group=None):
 
 
 @dataclass
-class SolveResult:
+class Result:
+    """What every solve returns, whichever the problem: :func:`solve` gives a :class:`SolveResult`
+    for a group model and a :class:`GeneralSolveResult` on a manifold, both of this type, with these
+    fields in common (each kind adds the fields its problem has: the group's g and xi, or the
+    manifold's q, frame and Xi).
+
+    status: one of :data:`STATUSES`; success (also `converged`): status == "converged"; message:
+    diagnostics; method: the method that produced the result (one of :data:`METHODS`, never "auto");
+    order: the scheme's (1, 2) or 4 for collocation; branch: how it was reached. T, N, tol: the
+    problem's horizon and steps and the requested tolerance. t (N+1,): the times; v, mu (N+1, dim):
+    the transported velocity and the momentum (a failed result: its best iterate of the requested
+    problem, or no rows at all). v0: the initial velocity; terminal_error: how far the end point is
+    from the requested one; xi_terminal: the size of the auxiliary at T; sweeps: runs of the scheme
+    (collocation: Jacobian evaluations); residual_history; solve_time: seconds in the solver.
+    """
+    status: str
+    message: str
+    success: bool
+    method: str
+    order: int
+    branch: str
+    T: float
+    N: int
+    tol: float
+    t: np.ndarray
+    v: np.ndarray
+    mu: np.ndarray
+    v0: np.ndarray
+    terminal_error: float
+    xi_terminal: float
+    sweeps: int
+    residual_history: np.ndarray = field(repr=False)
+    solve_time: float
+
+    @property
+    def converged(self):
+        """The same as `success` (the C++ result's converged())."""
+        return self.success
+
+
+@dataclass
+class SolveResult(Result):
     """The result of :func:`solve`, in the spirit of scipy.integrate.solve_bvp's.
 
     status: one of :data:`STATUSES` ("converged", or what failed: "max-iterations", "stalled",
@@ -195,34 +236,16 @@ class SolveResult:
     was there to save (:func:`load` of its :meth:`to_json` file computes them).
     Dense output :meth:`sol`, the CLI's JSON :meth:`to_json` and :func:`load`, a figure :meth:`plot`.
     """
-    status: str
-    message: str
-    success: bool
-    method: str
-    order: int
-    branch: str
     group: str
     lam: float
-    T: float
-    N: int
     g0: np.ndarray = field(repr=False)
     gT: np.ndarray = field(repr=False)
-    tol: float
-    t: np.ndarray
     g: np.ndarray
-    v: np.ndarray
-    mu: np.ndarray
     xi: np.ndarray
-    v0: np.ndarray
     xi0: np.ndarray
-    terminal_error: float
-    xi_terminal: float
     action: float
     outer_iterations: int
     inner_iterations: int
-    sweeps: int
-    residual_history: np.ndarray = field(repr=False)
-    solve_time: float
     mesh_size: Optional[int] = None
     max_residual: Optional[float] = None
     group_defect: Optional[float] = None
@@ -234,11 +257,6 @@ class SolveResult:
     P: Optional[np.ndarray] = field(default=None, repr=False)
     energy: Optional[np.ndarray] = field(default=None, repr=False)
     cumulative_action: Optional[np.ndarray] = field(default=None, repr=False)
-
-    @property
-    def converged(self):
-        """The same as `success` (the C++ result's converged())."""
-        return self.success
 
     def sol(self, t):
         """Dense output: the solution at the time or times `t` in [t_0, t_N] = [0, T] (outside:
@@ -426,7 +444,7 @@ def _transported(entry, arguments):
 
 
 @dataclass
-class GeneralSolveResult:
+class GeneralSolveResult(Result):
     """The result of :func:`solve` on a manifold (and of :func:`solve_general`), with the vocabulary of
     :class:`SolveResult`.
 
@@ -447,39 +465,16 @@ class GeneralSolveResult:
     collocation: Jacobian evaluations); residual_history; solve_time: seconds in the solver; mesh_size,
     max_residual: collocation only (else None; order is then 4).
     """
-    status: str
-    message: str
-    success: bool
-    method: str
-    order: int
-    branch: str
     manifold: str
-    T: float
-    N: int
     q0: np.ndarray = field(repr=False)
     qT: np.ndarray = field(repr=False)
-    tol: float
-    t: np.ndarray
     q: np.ndarray
     frame: np.ndarray
-    v: np.ndarray
-    mu: np.ndarray
     Xi: np.ndarray
-    v0: np.ndarray
     Xi0: np.ndarray
-    terminal_error: float
-    xi_terminal: float
     iterations: int
-    sweeps: int
-    residual_history: np.ndarray = field(repr=False)
-    solve_time: float
     mesh_size: Optional[int] = None
     max_residual: Optional[float] = None
-
-    @property
-    def converged(self):
-        """The same as `success` (the C++ result's converged())."""
-        return self.success
 
     def __repr__(self):
         return (f"GeneralSolveResult(status={self.status!r}, success={self.success}, manifold={self.manifold!r}, "

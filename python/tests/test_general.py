@@ -285,12 +285,14 @@ def test_solve_is_one_entry_point_for_both_kinds_of_problem():
     sphere = cartan.solve(Sphere(), gravity=1.0, **SPHERE_ARGS)
     same = cartan.solve_general(Sphere(), gravity=1.0, **SPHERE_ARGS)
     assert isinstance(sphere, cartan.GeneralSolveResult) and sphere.converged
+    assert isinstance(sphere, cartan.Result)  # one result type: the fields every solve returns
     for name in ("t", "q", "frame", "v", "mu", "Xi"):
         np.testing.assert_array_equal(getattr(sphere, name), getattr(same, name))
     manifold = GroupManifold("so3", "cartan-schouten", lam=0.3)
     gen = cartan.solve(manifold, T=3.0, N=100, q0=np.eye(3), qT=GT, inertia=[2.0, 3.0, 4.0], tol=1e-10)
     lie = cartan.solve(cartan.RigidBody([2.0, 3.0, 4.0]), T=3.0, N=100, lam=0.3, gT=GT, tol=1e-10)
     assert gen.converged and lie.converged and "Lie-group kernel" in gen.message
+    assert isinstance(lie, cartan.Result) and np.array_equal(gen.t, lie.t) and gen.N == lie.N
     np.testing.assert_allclose(gen.q, lie.g, atol=1e-8)  # both stop at tol 1e-10 on the same equations
     with pytest.raises(ValueError, match=r"^cartan\.solve: lam = 0\.3 applies to a group model's problem, not on "
                                          r"the manifold Sphere"):

@@ -412,11 +412,12 @@ LONG = dict(lagrangian=cartan.SO3Oscillator(INERTIA), lam=0.5, T=12, gT=cartan.S
 ])
 def test_time_limit_stops_every_method(method, N, extra):
     """time_limit bounds the whole call: the result says time-limit (a failure, with the best iterate
-    so far), and solve_time is about the limit: the solver stops early by its estimate of the work
-    that remains after a stop (a recording sweep where it did not record), so it may end a little
-    before it, or after it by that work or one iteration (asserted: between half the limit and the
-    limit plus 5 s, i.e. it neither gave up at once nor ran to the end; the figures are in
-    bench/README.md, "Interruption"). The Python call itself adds no pass over the trajectory: a
+    so far), after some work (at least one sweep: it did not give up at once) and before the end
+    (the call returns within the limit plus 5 s). The solver stops early by its estimate of the work
+    that remains after a stop (a recording sweep where it did not record), so on a loaded machine,
+    where sweeps are slow, it may stop well before the limit: how close to the limit it ends is a
+    wall-clock figure, measured by bench/interruption.py on an idle machine (bench/README.md,
+    "Interruption"), not asserted here. The Python call itself adds no pass over the trajectory: a
     stopped result has no action and none of P, u, energy, cumulative_action (they cost about two
     sweeps over N + 1 nodes), so the call's wall time is bounded the same way."""
     limit = 0.4
@@ -425,7 +426,7 @@ def test_time_limit_stops_every_method(method, N, extra):
     spent = time.perf_counter() - start
     assert r.status == "time-limit" and not r.success, (r.status, r.message)
     assert "time limit of 0.4 s reached" in r.message
-    assert 0.5 * limit <= r.solve_time <= spent < limit + 5
+    assert r.sweeps >= 1 and r.solve_time <= spent < limit + 5
     assert np.isnan(r.action)
     assert r.P is None and r.u is None and r.energy is None and r.cumulative_action is None
     assert len(r.t) == len(r.g) == len(r.v) == len(r.mu) == len(r.xi)  # the best iterate, or no rows

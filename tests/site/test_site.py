@@ -83,7 +83,7 @@ def test_site(browser):
                  "verify", "equations", "paper-notes", "benchmarks", "gallery", "api-python", "api-cpp"):
         assert f"{name}.html" in pages
     layers = ("core", "groups", "connections", "transport", "mechanics", "numerics", "transported",
-              "verify", "manifolds", "general")
+              "verify", "manifolds", "general", "models")
     for layer in layers:
         assert f"cpp/{layer}.html" in pages
     # The gallery shows the five figures of `make run`.
@@ -92,7 +92,7 @@ def test_site(browser):
                                       "fig_sphere_particle.png", "fig_so3_connections.png"]), figures
     # The references document the API: Python from the docstrings, C++ from the headers.
     for name in ("cartan.solve", "cartan.solve_general", "cartan.solve_bvp", "cartan.verify", "cartan.SO3.exp",
-                 "cartan.SolveResult", "cartan.Sphere"):
+                 "cartan.SolveResult", "cartan.Result", "cartan.Sphere"):
         assert name in report.ids["api-python.html"], name
     cpp = {path: " ".join(ids) for path, ids in report.ids.items() if path.startswith("cpp/")}
     assert "transported5solve" in cpp["cpp/transported.html"]   # Sphinx's id of cartan::transported::solve
