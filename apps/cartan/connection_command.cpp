@@ -43,8 +43,9 @@ nlohmann::json solve_with_connection(const ProblemSpec& spec, const SolveMonitor
     nlohmann::json out = result_header(spec, std::string(to_string(s.status)), s.message,
                                        std::string(to_string(s.method)), s.order, s.branch);
     out["connection"] = spec.connection;
-    if (connection_kind(spec) == connections::ConnectionKind::LeviCivita) out["metric"] = spec.metric;
-    if (connection_kind(spec) == connections::ConnectionKind::Coefficients) out["alpha"] = nested_alpha(spec.alpha_values, G::kDim);
+    const connections::ConnectionKind kind = connection_kind(spec);
+    if (kind == connections::ConnectionKind::LeviCivita) out["metric"] = spec.metric;
+    if (kind == connections::ConnectionKind::Coefficients) out["alpha"] = nested_alpha(spec.alpha_values, G::kDim);
     add_general_solution(out, s, "g");
     return out;
   });

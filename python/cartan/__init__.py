@@ -102,8 +102,8 @@ __all__ = [
     "Trajectory", "SolveResult", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve", "sweep",
     "VerifyReport", "verify", "load", "model_of", "CheckReport", "check_lagrangian",
     "BvpResult", "solve_bvp",
-    "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "Chart", "MANIFOLDS", "Result", "GeneralSolveResult", "solve_general",
-    "verify_general",
+    "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "Chart", "MANIFOLDS", "Result", "GeneralSolveResult",
+    "solve_general", "verify_general",
 ]
 
 
@@ -400,19 +400,21 @@ _GROUP_KEYWORDS = ("lam", "gT", "g0", "xi0", "group")
 _MANIFOLD_KEYWORDS = ("q0", "qT", "inertia", "potential", "potential_gradient", "gravity", "frame0", "Xi0")
 
 
-def _refuse_other_kind(arguments, keywords, why):
-    """ValueError "cartan.solve: <key> = <value> <why>" for the first of `keywords` given (not None)."""
+def _refuse_other_kind(where, arguments, keywords, why):
+    """ValueError "<where>: <key> = <value> <why>" for the first of `keywords` given (not None) in
+    `arguments`: cartan.solve's and cartan.verify's refusal of the other kind of problem's keywords."""
     for name in keywords:
         value = arguments.get(name)
         if value is not None:
             shown = " ".join(repr(value).split())  # an array on one line
-            raise ValueError(f"cartan.solve: {name} = {shown[:80]}{'...' if len(shown) > 80 else ''} {why}")
+            raise ValueError(f"{where}: {name} = {shown[:80]}{'...' if len(shown) > 80 else ''} {why}")
 
 
 def _solve_on_manifold(manifold, arguments):
     """cartan.solve on a manifold: :func:`solve_general` with the manifold's keywords."""
-    _refuse_other_kind(arguments, _GROUP_KEYWORDS, f"applies to a group model's problem, not on the manifold "
-                       f"{type(manifold).__name__} (its connection is the manifold's)")
+    _refuse_other_kind("cartan.solve", arguments, _GROUP_KEYWORDS,
+                       f"applies to a group model's problem, not on the manifold {type(manifold).__name__} (its "
+                       "connection is the manifold's)")
     names = ("T", "N", "method", "continuation", "order", "tol", "max_iterations", "segments", "lambda_start", "v0",
              "guess", "max_nodes", "time_limit", "progress") + _MANIFOLD_KEYWORDS
     samples = arguments["samples"]
@@ -424,8 +426,9 @@ def _transported(entry, arguments):
     """`<Group>.<entry>` ("_solve", or "_validate": every input error of _solve, no solve) on the
     keyword arguments of :func:`solve` given as a dict."""
     lagrangian = arguments["lagrangian"]
-    _refuse_other_kind(arguments, _MANIFOLD_KEYWORDS, "applies to a problem on a manifold (pass the manifold as the "
-                       f"first argument); lagrangian = {type(lagrangian).__name__} is a group model")
+    _refuse_other_kind("cartan.solve", arguments, _MANIFOLD_KEYWORDS,
+                       "applies to a problem on a manifold (pass the manifold as the first argument); lagrangian = "
+                       f"{type(lagrangian).__name__} is a group model")
     for name in ("lam", "gT"):
         if arguments[name] is None:
             raise TypeError(f"cartan.solve: missing a required argument: {name!r} (a group model's problem)")
@@ -609,18 +612,14 @@ def verify(result, lagrangian, *, group=None, inertia=None, potential=None, pote
     keywords of the other kind raise ValueError naming them."""
     terms = dict(inertia=inertia, potential=potential, potential_gradient=potential_gradient, gravity=gravity)
     if isinstance(lagrangian, MANIFOLDS):
-        if group is not None:
-            raise ValueError(f"cartan.verify: group = {group!r} applies to a group model's SolveResult, "
-                             f"not on the manifold {type(lagrangian).__name__}")
+        _refuse_other_kind("cartan.verify", dict(group=group), ("group",), "applies to a group model's SolveResult, "
+                           f"not on the manifold {type(lagrangian).__name__}")
         return verify_general(result, lagrangian, **terms)
     if isinstance(result, GeneralSolveResult):
         raise ValueError(f"cartan.verify: lagrangian = {type(lagrangian).__name__} is not a manifold; a "
                          "GeneralSolveResult is checked on its manifold: cartan.verify(result, manifold, ...)")
-    given = [name for name, value in terms.items() if value is not None]
-    if given:
-        raise ValueError(f"cartan.verify: {given[0]} = {terms[given[0]]!r} applies to a manifold's "
-                         "GeneralSolveResult (pass the manifold as the second argument); a group model "
-                         "carries its own Lagrangian")
+    _refuse_other_kind("cartan.verify", terms, terms, "applies to a manifold's GeneralSolveResult (pass the "
+                       "manifold as the second argument); a group model carries its own Lagrangian")
     grp = _group_of(lagrangian, group, "verify")
     d = grp._verify(lagrangian, result, result.lam, result.T, result.g0, result.gT, result.order, result.tol,
                     result.status)

@@ -151,9 +151,10 @@ def _checked(i, problem, signature):
     if isinstance(problem.get("lagrangian"), MANIFOLDS):
         raise ValueError(f"{where}: lagrangian = {type(problem['lagrangian']).__name__} is a manifold; a sweep "
                          "solves group models' problems (solve a manifold's with cartan.solve, one at a time)")
+    excluded = _not_in_sweeps()
     for key in problem:
-        if key not in signature.parameters or key in _not_in_sweeps():
-            takes = ", ".join(k for k in signature.parameters if k not in _not_in_sweeps())
+        if key not in signature.parameters or key in excluded:
+            takes = ", ".join(k for k in signature.parameters if k not in excluded)
             raise TypeError(f"{where}: key {key!r} is not an argument of a sweep's problem (one of: {takes})")
     try:
         bound = signature.bind(**problem)
