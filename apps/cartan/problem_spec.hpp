@@ -17,7 +17,7 @@ namespace cartan::cli {
 
 struct ProblemSpec {
   /// Empty: a problem on a group (group, model, inertia, lambda, g0, gT); "sphere": the general
-  /// problem on S^2 (manifold_command.hpp: model particle, mass, gravity, q0, qT).
+  /// problem on S^2 (api::SphereProblem: model particle, mass, gravity, q0, qT).
   std::string manifold;
   std::string group = "so3";            ///< a group of the model table (models/catalogue.hpp)
   std::string model;                    ///< a model of the group; empty: the group's first (validate fills it)

@@ -126,7 +126,7 @@ ProblemSpec problem_of(const nlohmann::json& j) {
   if (j.contains("side") && json_text(j["side"], kResultWhere, "side") != "left") {
     bad_result("side", describe(j["side"]), "must be \"left\" (the transported velocity is left-trivialised)");
   }
-  if (j.contains("connection")) {  // cartan-schouten, or the general solver's on a group (connection_command.hpp)
+  if (j.contains("connection")) {  // cartan-schouten, or the general solver's on a group (api::GroupProblem)
     p.connection = json_text(j["connection"], kResultWhere, "connection");
     if (j.contains("metric")) p.metric = json_numbers(j["metric"], kResultWhere, "metric");
     if (j.contains("alpha")) p.alpha_values = nested_numbers(j["alpha"], "alpha", n);

@@ -1,10 +1,8 @@
 #include "solve_command.hpp"
 
-#include "cartan/transported/compiled.hpp"
-#include "connection_command.hpp"
-#include "manifold_command.hpp"
+#include <cmath>
+
 #include "cartan/models/catalogue.hpp"
-#include "solution_json.hpp"
 
 namespace cartan::cli {
 
@@ -12,20 +10,49 @@ namespace {
 
 constexpr std::string_view kSolveCommandWhere = "cartan solve";
 
-template <groups::LieGroup G>
-transported::SolveGuess<G> guess_of(const ProblemSpec& spec) {
-  transported::SolveGuess<G> guess;
-  if (!spec.v0.empty()) guess.v0 = groups::TangentOf<G>(spec.v0.data());
-  if (!spec.xi0.empty()) guess.xi0 = groups::CovectorOf<G>(spec.xi0.data());
-  return guess;
+/// Rows of numbers as a JSON array of arrays.
+nlohmann::json json_rows(const Eigen::MatrixXd& x) {
+  nlohmann::json out = nlohmann::json::array();
+  for (Eigen::Index k = 0; k < x.rows(); ++k) {
+    const Eigen::RowVectorXd row = x.row(k);
+    out.push_back(std::vector<double>(row.data(), row.data() + row.size()));
+  }
+  return out;
 }
 
-/// Throws std::invalid_argument ("cartan solve: g0 = ... is not ...") unless g0 and gT are
-/// elements of the spec's group (models::ModelInfo::check_element).
-void check_endpoints(const ProblemSpec& spec) {
-  const models::ModelInfo& model = models::find_model(spec.group, spec.model, kSolveCommandWhere);
-  model.check_element(spec.g0, kSolveCommandWhere, "g0");
-  if (spec.a0.empty()) model.check_element(spec.gT, kSolveCommandWhere, "gT");
+/// A number for JSON: NaN and infinities (which JSON lacks) become null.
+nlohmann::json number_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
+
+/// alpha_values as the nested array alpha[i][j][k].
+nlohmann::json nested_alpha(const std::vector<double>& values, std::size_t n) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t i = 0; i < n; ++i) {
+    nlohmann::json plane = nlohmann::json::array();
+    for (std::size_t j = 0; j < n; ++j) {
+      plane.push_back(std::vector<double>(values.begin() + static_cast<std::ptrdiff_t>((i * n + j) * n),
+                                          values.begin() + static_cast<std::ptrdiff_t>((i * n + j + 1) * n)));
+    }
+    out.push_back(plane);
+  }
+  return out;
+}
+
+/// The connection keys of a group result: its name, and the metric (levi-civita) or alpha
+/// (coefficients, as the nested array) echoed; Cartan–Schouten's side of the trivialisation of v.
+void add_connection(nlohmann::json& out, const ProblemSpec& spec) {
+  out["connection"] = spec.connection;
+  switch (connection_kind(spec)) {
+    case connections::ConnectionKind::CartanSchouten:
+      out["side"] = "left";
+      break;
+    case connections::ConnectionKind::LeviCivita:
+      out["metric"] = spec.metric;
+      break;
+    case connections::ConnectionKind::Coefficients:
+      out["alpha"] = nested_alpha(spec.alpha_values,
+                                  static_cast<std::size_t>(models::find_model(spec.group, spec.model, kSolveCommandWhere).dim));
+      break;
+  }
 }
 
 }  // namespace
@@ -44,23 +71,63 @@ transported::SolveOptions solve_options(const ProblemSpec& spec) {
 }
 
 SO3Endpoints so3_endpoints(const ProblemSpec& spec) {
-  check_endpoints(spec);
+  const models::ModelInfo& model = models::find_model(spec.group, spec.model, kSolveCommandWhere);
+  model.check_element(spec.g0, kSolveCommandWhere, "g0");
+  if (spec.a0.empty()) model.check_element(spec.gT, kSolveCommandWhere, "gT");
   return {models::element_of<groups::SO3>(spec.g0), models::element_of<groups::SO3>(final_element(spec))};
 }
 
+api::GroupProblem group_problem(const ProblemSpec& spec) {
+  api::GroupProblem p;
+  p.group = spec.group;
+  p.model = spec.model;
+  p.inertia = spec.inertia;
+  p.connection = connection_kind(spec);
+  p.lambda = spec.lambda;
+  if (p.connection == connections::ConnectionKind::LeviCivita) p.metric = spec.metric;
+  if (p.connection == connections::ConnectionKind::Coefficients) p.alpha = spec.alpha_values;
+  p.T = spec.T;
+  p.N = spec.N;
+  p.g0 = spec.g0;
+  p.gT = final_element(spec);
+  return p;
+}
+
+api::SphereProblem sphere_problem(const ProblemSpec& spec) {
+  return {spec.mass, spec.gravity, spec.q0, spec.qT, spec.T, spec.N};
+}
+
 nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor) {
-  if (is_manifold_problem(spec)) return solve_manifold(spec, monitor);
-  if (is_general_connection(spec)) return solve_with_connection(spec, monitor);
-  check_endpoints(spec);
-  return models::visit_model(spec.group, spec.model, kSolveCommandWhere, [&]<class Entry>(const Entry&) {
-    using G = typename Entry::Table::Group;
-    const transported::TransportedProblem<G, typename Entry::Lagrangian> problem{
-        models::make_lagrangian<Entry>(spec.inertia, kSolveCommandWhere), spec.lambda, spec.T, spec.N, models::element_of<G>(spec.g0),
-        models::element_of<G>(final_element(spec))};
-    transported::SolveOptions options = solve_options(spec);
-    options.monitor = monitor;
-    return solution_json(spec, transported::solve(problem, options, guess_of<G>(spec)));
-  });
+  transported::SolveOptions options = solve_options(spec);
+  options.monitor = monitor;
+  const api::Guess guess{spec.v0, spec.xi0};
+  return result_json(spec, is_manifold_problem(spec) ? api::solve(sphere_problem(spec), options, guess, kSolveCommandWhere)
+                                                     : api::solve(group_problem(spec), options, guess, kSolveCommandWhere));
+}
+
+nlohmann::json result_json(const ProblemSpec& spec, const api::Result& r) {
+  nlohmann::json out = result_header(spec, std::string(to_string(r.status)), r.message, std::string(to_string(r.method)),
+                                     r.order, r.branch);
+  if (r.status == Status::Interrupted) return out;  // never written (exit 130): no trajectory to format
+  if (!is_manifold_problem(spec)) add_connection(out, spec);
+  const api::Samples& x = r.samples;
+  out["t"] = std::vector<double>(x.t.data(), x.t.data() + x.t.size());
+  out[is_manifold_problem(spec) ? "q" : "g"] = json_rows(x.points);
+  out["v"] = json_rows(x.v);
+  out["mu"] = json_rows(x.mu);
+  out[r.lie_kernel ? "xi" : "Xi"] = json_rows(x.aux);
+  if (r.frame0) out["frame0"] = json_rows(*r.frame0);
+  out["terminal_error"] = r.terminal_error;
+  out["xi_terminal"] = r.xi_terminal;
+  out["iterations"] = {{"outer", r.outer_iterations}, {"inner", r.inner_iterations}, {"sweeps", r.sweeps}};
+  if (r.action) out["action"] = number_or_null(*r.action);
+  out["solve_time_s"] = r.solve_time_s;
+  if (r.collocation) {
+    out["mesh_size"] = r.collocation->mesh_size;
+    out["max_residual"] = r.collocation->max_residual;
+    if (std::isfinite(r.collocation->group_defect)) out["group_defect"] = r.collocation->group_defect;
+  }
+  return out;
 }
 
 }  // namespace cartan::cli

@@ -1,12 +1,13 @@
 #pragma once
-// `cartan solve`: builds the TransportedProblem a ProblemSpec describes, runs the chosen solver
-// and reports the result as JSON (the CLI contract in docs/reference.md).
+// `cartan solve`: a validated ProblemSpec translated into the library's problem description
+// (cartan/api/solve.hpp), solved by the library, which decides what runs, and its Result as the
+// JSON of the CLI contract (docs/reference.md). Nothing here names a solver, a group type or a model type.
 
 #include <nlohmann/json.hpp>
 
-#include "cartan/monitor.hpp"
+#include "cartan/api/solve.hpp"
 #include "cartan/groups/so3.hpp"
-#include "cartan/transported/solve_options.hpp"
+#include "cartan/monitor.hpp"
 #include "problem_spec.hpp"
 
 namespace cartan::cli {
@@ -22,12 +23,22 @@ SO3Endpoints so3_endpoints(const ProblemSpec& spec);
 /// The library's SolveOptions of a validated spec (method, continuation, order, tol, ...).
 transported::SolveOptions solve_options(const ProblemSpec& spec);
 
-/// Solves a validated spec with the library's solve (transported/solve.hpp) for the spec's model
-/// (models::visit_model, models/catalogue.hpp). The JSON has status, message, group, model, lambda, T, N,
-/// method, order, branch, t, g, v, mu, xi, terminal_error, xi_terminal, action, iterations
-/// {outer, inner, sweeps}, solve_time_s, and for collocation mesh_size, max_residual (and
-/// group_defect for the matrix groups). Throws std::invalid_argument for boundary data that are
-/// not elements of the group (e.g. a gT that is not a rotation).
+/// The library's description of a validated spec on a group (gT: final_element) or on the sphere.
+api::GroupProblem group_problem(const ProblemSpec& spec);
+api::SphereProblem sphere_problem(const ProblemSpec& spec);
+
+/// Solves a validated spec with the library's api::solve. The JSON (result_json) has status,
+/// message, the echoed problem, method, order, branch, connection, t, g (q on the sphere), v, mu,
+/// xi (the Lie-group kernel) or Xi (n^2 numbers a row, the general solver), terminal_error,
+/// xi_terminal, action (the Lie-group kernel), iterations {outer, inner, sweeps}, solve_time_s,
+/// for collocation mesh_size, max_residual (and group_defect for the matrix groups), and frame0 on
+/// the sphere. Throws std::invalid_argument for boundary data that are not elements of the group
+/// (e.g. a gT that is not a rotation).
 nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor = {});
+
+/// A Result as the JSON of the CLI contract (above): the one writer of result files in C++
+/// (python/cartan/_results.py writes and reads the same keys). An interrupted result has the
+/// header alone (it is never written: exit 130).
+nlohmann::json result_json(const ProblemSpec& spec, const api::Result& result);
 
 }  // namespace cartan::cli

@@ -35,7 +35,7 @@ bool solve_into(std::size_t index, const GridPoint& point, bool trajectories, nl
   if (interrupted()) return true;
   try {
     const nlohmann::json result = solve(point.spec, interruptible(SolveMonitor()));
-    if (interrupted()) return true;  // an interrupted result has no trajectory (solution_json.hpp)
+    if (interrupted()) return true;  // an interrupted result has no trajectory (result_json in solve_command.hpp)
     row = result_row(index, point, result, trajectories);
   } catch (const std::invalid_argument& e) {  // boundary data solve() rejects, e.g. a gT that is no rotation
     row = error_row(index, point, retitled(e, "cartan sweep: grid point " + std::to_string(index)).what());

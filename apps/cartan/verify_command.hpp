@@ -9,9 +9,10 @@
 
 namespace cartan::cli {
 
-/// Runs every check on a validated result for its model (models::visit_model,
-/// models/catalogue.hpp); a status other than converged adds the failing `converged` check. Throws std::invalid_argument when the
-/// file's boundary data or inertia are rejected by the models.
+/// Runs every check on a validated result through the library (api::verify, cartan/api/solve.hpp,
+/// which picks the checks of the kernel the connection allows); a status other than converged adds
+/// the failing `converged` check. Throws std::invalid_argument when the file's boundary data or
+/// inertia are rejected by the models.
 verify::Report verify(const ResultFile& result);
 
 /// {"verdict", "resolution", "order", "amplification", "checks": [{name, figure, threshold,

@@ -3,7 +3,7 @@
 (``sol``) and a plot (``plot``).
 
 The JSON is exactly what ``cartan solve --output`` writes for a problem on a group
-(apps/cartan/solution_json.hpp): the keys, the element rows (a matrix row-major, a Heisenberg
+(apps/cartan/solve_command.cpp, result_json): the keys, the element rows (a matrix row-major, a Heisenberg
 element as (a, b, c)), NaN and infinities as null. What the file lacks (v0, xi0: the first rows;
 residual_history: empty) and what is derived from it (u, P, energy, cumulative_action) is
 rebuilt on loading, by the same library code as after a solve.

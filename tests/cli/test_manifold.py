@@ -1,4 +1,4 @@
-"""`cartan solve --manifold sphere` (apps/cartan/manifold_command.hpp): the general
+"""`cartan solve --manifold sphere` (cartan::api::SphereProblem, include/cartan/api/solve.hpp): the general
 transported-velocity problem on S^2 with its Levi-Civita connection and the particle
 l = 1/2 (a1 v1^2 + a2 v2^2) - G z. Checked against things the solver does not use: the classical
 spherical pendulum integrated by SciPy (a metric connection and an isotropic mass give back

@@ -1,0 +1,114 @@
+#pragma once
+// The library's entry point for a problem described by names and numbers (DESIGN.md, layer
+// "api"): a built-in model of the catalogue (models/catalogue.hpp) on its group with a
+// left-invariant connection, or the particle on the sphere. The library decides what runs:
+//   - a Cartan–Schouten connection: the Lie-group kernel, the model's own compiled solve
+//     (transported/compiled.hpp: xi in g*, the paper's eq:reduced-system);
+//   - Levi-Civita of a left-invariant metric, or any bilinear map alpha: the general solve on
+//     GroupManifold<G> (general/compiled.hpp: the frame and Xi of eq:int-diff-EL);
+//   - the sphere: the general solve on S^2 with its Levi-Civita connection;
+// and returns one Result in numbers and words, whichever ran. The CLI translates its flags and
+// files to these types and the Result to JSON; it names no solver, group type or model type.
+// Compiled once in the library target cartan::api (src/api/); this header declares only.
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cartan/connections/connection_kind.hpp"
+#include "cartan/status.hpp"
+#include "cartan/transported/method.hpp"
+#include "cartan/transported/solution.hpp"
+#include "cartan/transported/solve_options.hpp"
+#include "cartan/verify/verdict.hpp"
+
+namespace cartan::api {
+
+/// A built-in model (models/catalogue.hpp) on its group with a left-invariant connection.
+struct GroupProblem {
+  std::string group = "so3";        ///< a group of the catalogue
+  std::string model;                ///< a model of the group; empty: the group's first
+  std::vector<double> inertia;      ///< n numbers (the diagonal) or n^2 (row-major); empty: the model's default
+  connections::ConnectionKind connection = connections::ConnectionKind::CartanSchouten;
+  double lambda = 0.5;              ///< cartan-schouten: the parameter of CS-conn
+  std::vector<double> metric;       ///< levi-civita: n or n^2 numbers; empty: the inertia
+  std::vector<double> alpha;        ///< coefficients: alpha(e_i, e_j) = sum_k alpha[i][j][k] e_k, n^3 numbers in (i, j, k) order
+  double T = 1;
+  int N = 100;
+  std::vector<double> g0, gT;       ///< the elements' numbers (ModelInfo::element_what); g0 empty: the identity
+};
+
+/// The particle l = 1/2 (a1 v1^2 + a2 v2^2) - G z on the unit sphere with its Levi-Civita
+/// connection; v in the frame of T_{q0}S^2 with e1 the unit tangent at q0 along the minimal great
+/// circle towards qT and e2 = q0 x e1 (so q0 and qT may be neither equal nor antipodal).
+struct SphereProblem {
+  std::vector<double> mass{1, 1};   ///< a1, a2 > 0
+  double gravity = 0;               ///< G
+  std::vector<double> q0, qT;       ///< 3 numbers each, normalised onto the sphere
+  double T = 1;
+  int N = 100;
+};
+
+/// Guesses of v(0) and xi(0), n numbers each (xi0: the Lie-group kernel only); empty: none.
+struct Guess {
+  std::vector<double> v0, xi0;
+};
+
+/// A trajectory as numbers, one row per time t_k.
+struct Samples {
+  Eigen::VectorXd t;
+  Eigen::MatrixXd points;  ///< a group element's numbers (models::element_numbers) or the point on the manifold
+  Eigen::MatrixXd v, mu;   ///< n numbers each
+  /// The auxiliary variable: xi in g* (n numbers) where the Lie-group kernel ran, else the
+  /// general Xi (n^2 numbers, row-major).
+  Eigen::MatrixXd aux;
+};
+
+/// What every solve returns, whichever kernel ran.
+struct Result {
+  Status status = Status::NotConverged;
+  std::string message;
+  transported::Method method = transported::Method::Shooting;
+  int order = 1;
+  std::string branch;
+  bool lie_kernel = false;   ///< the auxiliary is xi (n numbers a row); else Xi (n^2)
+  Samples samples;           ///< empty when the solve was interrupted
+  std::optional<Eigen::MatrixXd> frame0;  ///< the sphere: the rows e1, e2 of its frame at q0
+  double terminal_error = 0;
+  double xi_terminal = 0;
+  std::optional<double> action;  ///< the Lie-group kernel's discrete action S_h (NaN where it has none)
+  int outer_iterations = 0;
+  int inner_iterations = 0;
+  int sweeps = 0;
+  double solve_time_s = 0;
+  std::optional<transported::CollocationReport> collocation;
+
+  bool converged() const { return status == Status::Converged; }
+};
+
+/// Whether the Lie-group kernel (xi in g*) solves `problem`: a Cartan–Schouten connection.
+inline bool lie_kernel(const GroupProblem& problem) {
+  return problem.connection == connections::ConnectionKind::CartanSchouten;
+}
+
+/// Solves `problem` as `options` say. Throws std::invalid_argument "<where>: <name> = <value>
+/// <problem>" for unknown names, wrong sizes, an inertia the model refuses, boundary data that are
+/// not elements of the group or points of the sphere, and whatever the solver's validation
+/// refuses; numerical failure is a status.
+Result solve(const GroupProblem& problem, const transported::SolveOptions& options = {}, const Guess& guess = {},
+             std::string_view where = "cartan::api::solve");
+Result solve(const SphereProblem& problem, const transported::SolveOptions& options = {}, const Guess& guess = {},
+             std::string_view where = "cartan::api::solve");
+
+/// Every check of verify/ on `samples` as a solution of `problem` by a method of the given order
+/// to `tol` (the Lie-group kernel's checks for a Cartan–Schouten connection, the general ones
+/// otherwise); a `status` other than converged adds a failing `converged` check. The samples' points
+/// are read as they are (not projected onto the group): the checks see the data.
+verify::Report verify(const GroupProblem& problem, const Samples& samples, int order, double tol,
+                      Status status = Status::Converged, std::string_view where = "cartan::api::verify");
+verify::Report verify(const SphereProblem& problem, const Samples& samples, int order, double tol,
+                      Status status = Status::Converged, std::string_view where = "cartan::api::verify");
+
+}  // namespace cartan::api

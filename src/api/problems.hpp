@@ -1,0 +1,82 @@
+#pragma once
+// What the api's solve and verify (solve.cpp, verify.cpp) share: a GroupProblem or SphereProblem
+// checked and turned into the problem a compiled solver takes, and samples as rows of numbers.
+// Private to src/api/.
+
+#include <Eigen/Core>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cartan/api/solve.hpp"
+#include "cartan/general/compiled.hpp"
+#include "cartan/models/catalogue.hpp"
+#include "cartan/transported/compiled.hpp"
+
+namespace cartan::api::detail {
+
+/// A group problem's numbers once checked: the model's entry, the inertia (the model's default
+/// when none was given) and g0 (the identity when none was given). Throws std::invalid_argument
+/// "<where>: <name> = <value> <problem>" for unknown names, wrong sizes, a connection's data that
+/// belong to another connection, and boundary data that are not elements of the group.
+struct CheckedGroupProblem {
+  const models::ModelInfo* model = nullptr;
+  std::vector<double> inertia, g0;
+};
+CheckedGroupProblem check(const GroupProblem& problem, std::string_view where);
+
+/// The sphere problem's checked, normalised data and its frame at q0 (rows e1, e2).
+general::ErasedProblem<manifolds::Sphere> sphere_problem(const SphereProblem& problem, std::string_view where);
+
+/// Checks that `guess` has n numbers in each of v0 and xi0 that are given (xi0: the Lie-group kernel only).
+void check_guess(const Guess& guess, int n, bool lie_kernel, std::string_view where);
+
+/// The connection of a checked non-Cartan–Schouten group problem on G: Levi-Civita of the metric
+/// (the inertia when none is given), or the bilinear map alpha.
+template <groups::LieGroup G>
+manifolds::GroupManifold<G> group_manifold(const GroupProblem& problem, const CheckedGroupProblem& checked) {
+  if (problem.connection == connections::ConnectionKind::LeviCivita) {
+    return manifolds::GroupManifold<G>::levi_civita(
+        models::inertia_matrix<G::kDim>(problem.metric.empty() ? checked.inertia : problem.metric));
+  }
+  return manifolds::GroupManifold<G>::coefficients(problem.alpha);
+}
+
+/// The general problem of a checked group problem for the catalogue's Entry: the model behind the
+/// erased Lagrangian on GroupManifold<G> (general/compiled.hpp), with the given boundary elements.
+template <class Entry>
+general::ErasedProblem<manifolds::GroupManifold<typename Entry::Table::Group>> connection_problem(
+    const GroupProblem& problem, const CheckedGroupProblem& checked, const groups::ElementOf<typename Entry::Table::Group>& g0,
+    const groups::ElementOf<typename Entry::Table::Group>& gT, std::string_view where) {
+  using G = typename Entry::Table::Group;
+  using M = manifolds::GroupManifold<G>;
+  using L = general::OnGroupManifold<G, typename Entry::Lagrangian>;
+  return {group_manifold<G>(problem, checked), general::ErasedLagrangian<M>(L{models::make_lagrangian<Entry>(checked.inertia, where)}),
+          problem.T, problem.N, g0, gT, std::nullopt};
+}
+
+/// One row per value: its numbers (models::element_numbers: a matrix row-major, a vector as it is).
+template <class Value>
+Eigen::MatrixXd rows(const std::vector<Value>& values) {
+  if (values.empty()) return {};
+  const Eigen::Index rows = values.front().rows(), cols = values.front().cols();
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(values.size()), rows * cols);
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    for (Eigen::Index i = 0; i < rows; ++i) {
+      for (Eigen::Index j = 0; j < cols; ++j) out(static_cast<Eigen::Index>(k), i * cols + j) = values[k](i, j);
+    }
+  }
+  return out;
+}
+
+/// Row k of `rows` as a Value of the given shape (read row-major, as rows() writes it).
+template <class Value>
+Value value_of_row(const Eigen::MatrixXd& rows, Eigen::Index k) {
+  Value x;
+  for (Eigen::Index i = 0; i < x.rows(); ++i) {
+    for (Eigen::Index j = 0; j < x.cols(); ++j) x(i, j) = rows(k, i * x.cols() + j);
+  }
+  return x;
+}
+
+}  // namespace cartan::api::detail

@@ -1,0 +1,90 @@
+// api::solve: the catalogue's model on its group through the kernel the connection allows, or the
+// sphere's particle (solve.hpp); every solve is the library's compiled one (transported/ and
+// general/compiled.hpp), so this unit instantiates only the conversions to numbers.
+#include "problems.hpp"
+
+namespace cartan::api {
+
+namespace {
+
+using detail::rows;
+
+/// What both kernels' solutions have, in numbers: status and words, the samples (points, v, mu and
+/// the auxiliary as rows), terminal errors, sweeps, time and collocation's report.
+template <class Solution, class Points, class Auxiliary>
+Result common_fields(Solution& s, const Points& points, const Auxiliary& aux, bool lie_kernel) {
+  Result r;
+  r.status = s.status;
+  r.message = std::move(s.message);
+  r.method = s.method;
+  r.order = s.order;
+  r.branch = std::move(s.branch);
+  r.lie_kernel = lie_kernel;
+  const auto& x = s.trajectory;
+  r.samples = {Eigen::Map<const Eigen::VectorXd>(x.t.data(), static_cast<Eigen::Index>(x.t.size())), rows(points), rows(x.v),
+               rows(x.mu), rows(aux)};
+  r.terminal_error = s.terminal_error;
+  r.xi_terminal = s.xi_terminal;
+  r.sweeps = s.sweeps;
+  r.solve_time_s = s.solve_time_s;
+  r.collocation = s.collocation;
+  return r;
+}
+
+/// The Lie-group kernel's solution in numbers (the auxiliary is xi; its action and iterations).
+template <groups::LieGroup G>
+Result result_of(transported::TransportedSolution<G>&& s) {
+  Result r = common_fields(s, s.trajectory.g, s.trajectory.xi, true);
+  r.action = s.action;
+  r.outer_iterations = s.outer_iterations;
+  r.inner_iterations = s.inner_iterations;
+  return r;
+}
+
+/// The general solver's solution in numbers (the auxiliary is Xi, row-major).
+template <manifolds::ManifoldWithConnection M>
+Result result_of(general::GeneralSolution<M>&& s) {
+  Result r = common_fields(s, s.trajectory.q, s.trajectory.Xi, false);
+  r.inner_iterations = s.iterations;
+  return r;
+}
+
+template <class Vector>
+Vector vector_of(const std::vector<double>& x) {
+  return Eigen::Map<const Vector>(x.data());
+}
+
+}  // namespace
+
+Result solve(const GroupProblem& problem, const transported::SolveOptions& options, const Guess& guess, std::string_view where) {
+  const detail::CheckedGroupProblem checked = detail::check(problem, where);
+  detail::check_guess(guess, checked.model->dim, lie_kernel(problem), where);
+  return models::visit_model(problem.group, problem.model, where, [&]<class Entry>(const Entry&) {
+    using G = typename Entry::Table::Group;
+    const groups::ElementOf<G> g0 = models::element_of<G>(checked.g0), gT = models::element_of<G>(problem.gT);
+    if (lie_kernel(problem)) {  // the model's own compiled solve (CARTAN_TRANSPORTED_BUILTIN_MODELS)
+      const transported::TransportedProblem<G, typename Entry::Lagrangian> typed{
+          models::make_lagrangian<Entry>(checked.inertia, where), problem.lambda, problem.T, problem.N, g0, gT};
+      transported::SolveGuess<G> start;
+      if (!guess.v0.empty()) start.v0 = vector_of<groups::TangentOf<G>>(guess.v0);
+      if (!guess.xi0.empty()) start.xi0 = vector_of<groups::CovectorOf<G>>(guess.xi0);
+      return result_of<G>(transported::solve(typed, options, start));
+    }
+    using M = manifolds::GroupManifold<G>;
+    general::GeneralGuess<M> start;
+    if (!guess.v0.empty()) start.v0 = vector_of<groups::TangentOf<G>>(guess.v0);
+    return result_of<M>(general::solve(detail::connection_problem<Entry>(problem, checked, g0, gT, where), options, start));
+  });
+}
+
+Result solve(const SphereProblem& problem, const transported::SolveOptions& options, const Guess& guess, std::string_view where) {
+  const general::ErasedProblem<manifolds::Sphere> sphere = detail::sphere_problem(problem, where);
+  detail::check_guess(guess, manifolds::Sphere::kDim, false, where);
+  general::GeneralGuess<manifolds::Sphere> start;
+  if (!guess.v0.empty()) start.v0 = vector_of<Eigen::Vector2d>(guess.v0);
+  Result r = result_of<manifolds::Sphere>(general::solve(sphere, options, start));
+  r.frame0 = sphere.frame0->transpose();  // the rows e1, e2
+  return r;
+}
+
+}  // namespace cartan::api
