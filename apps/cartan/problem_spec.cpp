@@ -312,39 +312,18 @@ void validate_connection(ProblemSpec& spec, std::size_t n) {
   if (kind != ConnectionKind::Coefficients && given(spec, "alpha")) bad("alpha", quote_input(spec.alpha), only(ConnectionKind::Coefficients));
   if (kind == ConnectionKind::CartanSchouten) return;
   check_general_method(spec, "--connection " + c);
-  if (!spec.xi0.empty()) bad("xi0", excerpt(spec.xi0), "is a guess of the Cartan-Schouten solver's xi, not of --connection " + c);
-  if (kind == ConnectionKind::LeviCivita) {
-    if (spec.metric.empty()) spec.metric = spec.inertia;
-    if (spec.metric.size() != n && spec.metric.size() != n * n) {
-      bad("metric", excerpt(spec.metric), "must have " + std::to_string(n) + " or " + std::to_string(n * n) + " numbers");
-    }
-    require_size("metric", spec.metric, spec.metric.size(), "");
-    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-    for (std::size_t i = 0; i < n; ++i) {
-      for (std::size_t j = 0; j < n; ++j) {
-        if (spec.metric.size() == n * n) m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = spec.metric[i * n + j];
-      }
-      if (spec.metric.size() == n) m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i)) = spec.metric[i];
-    }
-    const double scale = m.cwiseAbs().maxCoeff();
-    if (!((m - m.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale) || Eigen::LLT<Eigen::MatrixXd>(m).info() != Eigen::Success) {
-      bad("metric", excerpt(spec.metric), "must be symmetric positive definite");
-    }
-  } else if (spec.alpha_values.empty()) {  // else given as numbers (a result file's echo)
+  // The metric's and alpha's sizes and values are the library's to check (api::check, in validate).
+  if (kind == ConnectionKind::LeviCivita && spec.metric.empty()) spec.metric = spec.inertia;
+  if (kind == ConnectionKind::Coefficients && spec.alpha_values.empty()) {  // else given as numbers (a result file's echo)
     if (spec.alpha.empty()) bad("alpha", "(missing)", "is required by --connection coefficients");
     spec.alpha_values = read_alpha(spec.alpha, n);
-  } else if (spec.alpha_values.size() != n * n * n) {
-    bad("alpha", excerpt(spec.alpha_values), "must have " + std::to_string(n * n * n) + " numbers");
   }
 }
 
-/// A point of S^2 from 3 numbers: finite, nonzero, normalised.
-std::vector<double> sphere_point(const std::vector<double>& x, const std::string& name) {
-  require_size(name, x, 3, "a point x,y,z of the sphere, normalised");
-  const Eigen::Vector3d p(x.data());
-  if (!(p.stableNorm() > 0)) bad(name, excerpt(x), "has zero length");
-  const Eigen::Vector3d unit = p.stableNormalized();
-  return {unit[0], unit[1], unit[2]};
+/// A checked point of S^2 (3 finite numbers, not 0), normalised.
+std::vector<double> unit(const std::vector<double>& x) {
+  const Eigen::Vector3d p = Eigen::Vector3d(x.data()).stableNormalized();
+  return {p[0], p[1], p[2]};
 }
 
 /// --manifold sphere: model particle, mass (2 positive numbers), gravity, q0 and qT (normalised,
@@ -358,21 +337,11 @@ void validate_manifold_problem(ProblemSpec& spec) {
   for (const auto& field : problem_fields()) check_field(spec, field, kWhere);
   require_memory("N", spec.N, kBytesPerNode * spec.N, "the trajectory and its JSON output, ~1 KiB per step");
   if (spec.mass.empty()) spec.mass = {1, 1};
-  require_size("mass", spec.mass, 2, "a1,a2");
-  for (double a : spec.mass) {
-    if (!(a > 0)) bad("mass", excerpt(spec.mass), "must be positive");
-  }
   if (spec.q0.empty()) bad("q0", "(missing)", "is required for --manifold sphere");
   if (spec.qT.empty()) bad("qT", "(missing)", "is required for --manifold sphere");
-  spec.q0 = sphere_point(spec.q0, "q0");
-  spec.qT = sphere_point(spec.qT, "qT");
-  const Eigen::Vector3d a(spec.q0.data()), b(spec.qT.data());
-  if (a.cross(b).norm() < 1e-12) {
-    bad("q0/qT", excerpt(spec.q0) + " / " + excerpt(spec.qT),
-        a.dot(b) > 0 ? "are equal: the frame's e1 (towards qT along the minimal great circle) is undefined"
-                     : "are antipodal: the minimal great circle is not unique");
-  }
-  if (!spec.v0.empty()) require_size("v0", spec.v0, 2, "a guess of v(0) in the frame (e1, e2)");
+  api::check(sphere_problem(spec), {spec.v0, spec.xi0}, kWhere);  // mass, q0, qT, v0: the library's checks
+  spec.q0 = unit(spec.q0);  // echoed normalised
+  spec.qT = unit(spec.qT);
 }
 
 }  // namespace
@@ -390,9 +359,6 @@ void validate(ProblemSpec& spec) {
   if (continuation != transported::Continuation::None && method != transported::Method::Shooting && method != transported::Method::Collocation) {
     bad("continuation", quote_input(spec.continuation), "is an option of --method shooting and collocation only");
   }
-  const std::string vector_what = std::to_string(n) + " for group " + spec.group;
-  if (!spec.v0.empty()) require_size("v0", spec.v0, n, "a guess of v(0), " + vector_what);
-  if (!spec.xi0.empty()) require_size("xi0", spec.xi0, n, "a guess of xi(0), " + vector_what);
   if ((!spec.v0.empty() || !spec.xi0.empty()) &&
       (method == transported::Method::Collocation || method == transported::Method::Variational)) {
     bad(spec.v0.empty() ? "xi0" : "v0", excerpt(spec.v0.empty() ? spec.xi0 : spec.v0),
@@ -416,17 +382,8 @@ void validate(ProblemSpec& spec) {
     bad("segments", std::to_string(spec.segments), "is an option of --method multiple-shooting only");
   }
   if (spec.inertia.empty()) spec.inertia = model.default_inertia;
-  if (spec.inertia.size() != n && spec.inertia.size() != n * n) {
-    bad("inertia", excerpt(spec.inertia),
-        "must have " + std::to_string(n) + " numbers (the diagonal) or " + std::to_string(n * n) +
-            " (the matrix, row-major) for group " + spec.group);
-  }
-  require_size("inertia", spec.inertia, spec.inertia.size(), "");
-  models::check_inertia(model, spec.inertia, kWhere);
   validate_connection(spec, n);
-  const std::string element_what = std::string(model.element_what);
   if (spec.g0.empty()) spec.g0 = model.identity;
-  require_size("g0", spec.g0, model.element_size, element_what);  // group membership: solve (solve_command.hpp)
   const bool directions = !spec.a0.empty() || !spec.aT.empty();
   if (directions) {
     if (!model.directions) bad("a0/aT", excerpt(spec.a0) + " / " + excerpt(spec.aT), "are only for --group so3");
@@ -442,10 +399,32 @@ void validate(ProblemSpec& spec) {
       bad("a0/aT", excerpt(spec.a0) + " / " + excerpt(spec.aT),
           "are antiparallel: the minimal rotation is not unique (give --gT instead)");
     }
-  } else {
-    if (spec.gT.empty()) bad("gT", "(missing)", std::string("is required") + (model.directions ? " (or a0 and aT)" : ""));
-    require_size("gT", spec.gT, model.element_size, element_what);
+  } else if (spec.gT.empty()) {
+    bad("gT", "(missing)", std::string("is required") + (model.directions ? " (or a0 and aT)" : ""));
   }
+  // The inertia, the connection's data, g0, gT and the guesses' sizes: the library's checks; that g0
+  // and gT are elements of the group is checked by solve, so that a sweep reports it as that point's row.
+  api::check(group_problem(spec), {spec.v0, spec.xi0}, kWhere);
+}
+
+api::GroupProblem group_problem(const ProblemSpec& spec) {
+  api::GroupProblem p;
+  p.group = spec.group;
+  p.model = spec.model;
+  p.inertia = spec.inertia;
+  p.connection = connection_kind(spec);
+  p.lambda = spec.lambda;
+  if (p.connection == connections::ConnectionKind::LeviCivita) p.metric = spec.metric;
+  if (p.connection == connections::ConnectionKind::Coefficients) p.alpha = spec.alpha_values;
+  p.T = spec.T;
+  p.N = spec.N;
+  p.g0 = spec.g0;
+  p.gT = final_element(spec);
+  return p;
+}
+
+api::SphereProblem sphere_problem(const ProblemSpec& spec) {
+  return {spec.mass, spec.gravity, spec.q0, spec.qT, spec.T, spec.N};
 }
 
 }  // namespace cartan::cli

@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "cartan/api/solve.hpp"
 #include "cartan/connections/connection_kind.hpp"
 #include "cartan/transported/method.hpp"
 
@@ -117,6 +118,11 @@ void validate(ProblemSpec& spec);
 /// options that belong to it, the metric (levi-civita) and alpha (coefficients: alpha_values if set,
 /// else read from the file alpha). Throws std::invalid_argument naming the first bad value.
 void check_connection(ProblemSpec& spec, std::size_t n);
+
+/// The library's description of a spec on a group (gT: final_element) or on the sphere
+/// (cartan/api/solve.hpp): what validate checks through api::check and solve solves.
+api::GroupProblem group_problem(const ProblemSpec& spec);
+api::SphereProblem sphere_problem(const ProblemSpec& spec);
 
 /// The final element of a validated spec as its numbers (so3: row-major): gT, or for so3 with
 /// a0/aT the minimal rotation taking a0 to aT.

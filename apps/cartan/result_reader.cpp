@@ -119,10 +119,6 @@ ProblemSpec problem_of(const nlohmann::json& j) {
   }
   const models::ModelInfo& model = models::find_model(p.group, p.model, kResultWhere);
   const auto n = static_cast<std::size_t>(model.dim);
-  if (p.inertia.size() != n && p.inertia.size() != n * n) {
-    bad_result("inertia", excerpt(p.inertia), "must have " + std::to_string(n) + " or " + std::to_string(n * n) + " numbers");
-  }
-  models::check_inertia(model, p.inertia, kResultWhere);
   if (j.contains("side") && json_text(j["side"], kResultWhere, "side") != "left") {
     bad_result("side", describe(j["side"]), "must be \"left\" (the transported velocity is left-trivialised)");
   }
@@ -137,6 +133,7 @@ ProblemSpec problem_of(const nlohmann::json& j) {
     (key == std::string("g0") ? p.g0 : p.gT) = std::vector<double>(x.data(), x.data() + x.size());
     model.check_element(key == std::string("g0") ? p.g0 : p.gT, kResultWhere, key);
   }
+  api::check(group_problem(p), {}, kResultWhere);  // the inertia and the connection's numbers: the library's checks
   return p;
 }
 

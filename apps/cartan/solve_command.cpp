@@ -77,26 +77,6 @@ SO3Endpoints so3_endpoints(const ProblemSpec& spec) {
   return {models::element_of<groups::SO3>(spec.g0), models::element_of<groups::SO3>(final_element(spec))};
 }
 
-api::GroupProblem group_problem(const ProblemSpec& spec) {
-  api::GroupProblem p;
-  p.group = spec.group;
-  p.model = spec.model;
-  p.inertia = spec.inertia;
-  p.connection = connection_kind(spec);
-  p.lambda = spec.lambda;
-  if (p.connection == connections::ConnectionKind::LeviCivita) p.metric = spec.metric;
-  if (p.connection == connections::ConnectionKind::Coefficients) p.alpha = spec.alpha_values;
-  p.T = spec.T;
-  p.N = spec.N;
-  p.g0 = spec.g0;
-  p.gT = final_element(spec);
-  return p;
-}
-
-api::SphereProblem sphere_problem(const ProblemSpec& spec) {
-  return {spec.mass, spec.gravity, spec.q0, spec.qT, spec.T, spec.N};
-}
-
 nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor) {
   transported::SolveOptions options = solve_options(spec);
   options.monitor = monitor;

@@ -23,10 +23,6 @@ SO3Endpoints so3_endpoints(const ProblemSpec& spec);
 /// The library's SolveOptions of a validated spec (method, continuation, order, tol, ...).
 transported::SolveOptions solve_options(const ProblemSpec& spec);
 
-/// The library's description of a validated spec on a group (gT: final_element) or on the sphere.
-api::GroupProblem group_problem(const ProblemSpec& spec);
-api::SphereProblem sphere_problem(const ProblemSpec& spec);
-
 /// Solves a validated spec with the library's api::solve. The JSON (result_json) has status,
 /// message, the echoed problem, method, order, branch, connection, t, g (q on the sphere), v, mu,
 /// xi (the Lie-group kernel) or Xi (n^2 numbers a row, the general solver), terminal_error,

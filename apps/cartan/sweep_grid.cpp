@@ -112,7 +112,10 @@ std::vector<GridPoint> flag_points(const ProblemSpec& base, const GridFlags& fla
   for (std::size_t i = 0; i < n_lambda; ++i) {
     for (std::size_t j = 0; j < n_end; ++j) {
       GridPoint point{base};
-      if (!lambdas.empty()) point.spec.lambda = lambdas[i];
+      if (!lambdas.empty()) {
+        point.spec.lambda = lambdas[i];
+        point.spec.given.emplace_back("lambda");  // so that validate refuses it on another connection
+      }
       if (!endpoints.empty()) (directions ? point.spec.aT : point.spec.gT) = endpoints[j];
       points.push_back(std::move(point));
     }
@@ -167,10 +170,6 @@ std::vector<GridPoint> build_grid(const ProblemSpec& base, const GridFlags& flag
     if (is_manifold_problem(points[i].spec)) {
       throw_invalid(kGridWhere, "manifold", quote_input(points[i].spec.manifold),
                     "problems are solved one at a time (cartan solve --manifold); sweeps cover problems on a group");
-    }
-    if (is_general_connection(points[i].spec)) {
-      throw_invalid(kGridWhere, "connection", quote_input(points[i].spec.connection),
-                    "problems are solved one at a time (cartan solve); sweeps cover Cartan-Schouten connections");
     }
     try {
       validate(points[i].spec);

@@ -1,5 +1,6 @@
 #include "sweep_table.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "cartan/errors.hpp"
@@ -11,7 +12,9 @@ namespace {
 /// The row's identity: which point it is.
 nlohmann::json row_head(std::size_t index, const GridPoint& point) {
   const ProblemSpec& s = point.spec;
-  nlohmann::json row = {{"index", index}, {"lambda", s.lambda}};
+  // lambda is Cartan–Schouten's parameter: null under another connection, which the row names.
+  nlohmann::json row = {{"index", index}, {"lambda", is_general_connection(s) ? nlohmann::json() : nlohmann::json(s.lambda)}};
+  if (is_general_connection(s)) row["connection"] = s.connection;
   if (s.aT.empty()) row["gT"] = s.gT;
   else row["aT"] = s.aT;
   if (!point.overrides.empty()) row["overrides"] = point.overrides;
@@ -92,9 +95,17 @@ nlohmann::json shard_json(const Shard& shard, std::size_t grid_points) {
 }
 
 std::string table_csv(const std::vector<nlohmann::json>& rows) {
+  // v0 has the algebra's dimension (6 on se3): as many columns as the longest v0 of the rows, the
+  // shorter ones (other groups of a --grid, error rows) padded with empty fields.
+  std::size_t width = 3;
+  for (const auto& row : rows) {
+    if (row.at("v0").is_array()) width = std::max(width, row.at("v0").size());
+  }
   std::ostringstream out;
   out << "index,lambda,endpoint_key,endpoint,status,message,method,branch,terminal_error,iterations_outer,"
-         "iterations_inner,iterations_sweeps,solve_time_s,v0_1,v0_2,v0_3\n";
+         "iterations_inner,iterations_sweeps,solve_time_s";
+  for (std::size_t i = 1; i <= width; ++i) out << ",v0_" << i;
+  out << '\n';
   for (const auto& row : rows) {
     const char* endpoint = row.contains("aT") ? "aT" : "gT";
     const auto& iterations = row.at("iterations");
@@ -104,8 +115,9 @@ std::string table_csv(const std::vector<nlohmann::json>& rows) {
         << ',' << csv_field(row.at("method")) << ',' << csv_field(row.at("branch")) << ','
         << csv_field(row.at("terminal_error")) << ',' << csv_member(iterations, "outer") << ','
         << csv_member(iterations, "inner") << ',' << csv_member(iterations, "sweeps") << ','
-        << csv_field(row.at("solve_time_s")) << ',' << csv_element(v0, 0) << ',' << csv_element(v0, 1) << ','
-        << csv_element(v0, 2) << '\n';
+        << csv_field(row.at("solve_time_s"));
+    for (std::size_t i = 0; i < width; ++i) out << ',' << (i < v0.size() ? csv_element(v0, i) : std::string());
+    out << '\n';
   }
   return out.str();
 }

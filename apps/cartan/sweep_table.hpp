@@ -28,8 +28,8 @@ nlohmann::json table_json(const std::vector<nlohmann::json>& rows, double wall_t
 /// (`cartan merge` checks with it that the parts make up the whole grid).
 nlohmann::json shard_json(const Shard& shard, std::size_t grid_points);
 
-/// A header line and one line per row with the scalar columns of the rows (v0 as v0_1..v0_3, the
-/// endpoint as its key and its numbers separated by spaces), numbers with the fewest digits that read back exactly;
+/// A header line and one line per row with the scalar columns of the rows (v0 as v0_1..v0_n, n
+/// the longest v0 of the rows and at least 3; the endpoint as its key and its numbers separated by spaces), numbers with the fewest digits that read back exactly;
 /// text fields are quoted as RFC 4180 requires.
 std::string table_csv(const std::vector<nlohmann::json>& rows);
 

@@ -1,5 +1,6 @@
 #include "problems.hpp"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 #include <cmath>
 
@@ -9,64 +10,108 @@ namespace cartan::api::detail {
 
 namespace {
 
-/// Throws "<where>: <name> = <value> must have <sizes>" unless x has one of the sizes.
-void require_sizes(std::string_view where, const char* name, const std::vector<double>& x, std::size_t size,
-                   std::size_t other, const std::string& what) {
-  if (x.size() == size || x.size() == other) return;
-  throw_invalid(where, name, excerpt(x),
-                "must have " + std::to_string(size) + (other == size ? "" : " or " + std::to_string(other)) + " numbers (" +
-                    what + ")");
+/// Throws "<where>: <name> = <value> must have <size> numbers (<what>)" unless x has that many,
+/// and "... contains a non-finite number" unless they are finite.
+void require_numbers(std::string_view where, const char* name, const std::vector<double>& x, std::size_t size,
+                     const std::string& what) {
+  if (x.size() != size) throw_invalid(where, name, excerpt(x), "must have " + std::to_string(size) + " numbers (" + what + ")");
+  for (double c : x) {
+    if (!std::isfinite(c)) throw_invalid(where, name, excerpt(x), "contains a non-finite number");
+  }
+}
+
+/// A symmetric matrix of the algebra given as n numbers (its diagonal) or n^2 (row-major): the
+/// sizes, then finiteness.
+void require_matrix_numbers(std::string_view where, const char* name, const std::vector<double>& x, std::size_t n,
+                            std::string_view group) {
+  if (x.size() != n && x.size() != n * n) {
+    throw_invalid(where, name, excerpt(x),
+                  "must have " + std::to_string(n) + " numbers (the diagonal) or " + std::to_string(n * n) +
+                      " (the matrix, row-major) for group " + std::string(group));
+  }
+  require_numbers(where, name, x, x.size(), "");
+}
+
+/// The metric of a Levi-Civita connection: symmetric (to 1e-12 of its largest entry) and positive definite.
+void require_metric(std::string_view where, const std::vector<double>& metric, Eigen::Index n) {
+  const bool diagonal = metric.size() == static_cast<std::size_t>(n);
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) {
+      if (!diagonal) m(i, j) = metric[static_cast<std::size_t>(i * n + j)];
+    }
+    if (diagonal) m(i, i) = metric[static_cast<std::size_t>(i)];
+  }
+  const double scale = m.cwiseAbs().maxCoeff();
+  if (!((m - m.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale) || Eigen::LLT<Eigen::MatrixXd>(m).info() != Eigen::Success) {
+    throw_invalid(where, "metric", excerpt(metric), "must be symmetric positive definite");
+  }
 }
 
 /// A point of S^2 from 3 finite numbers, not 0, normalised.
 Eigen::Vector3d sphere_point(const std::vector<double>& x, const char* name, std::string_view where) {
-  require_sizes(where, name, x, 3, 3, "a point x,y,z of the sphere");
-  for (double c : x) {
-    if (!std::isfinite(c)) throw_invalid(where, name, excerpt(x), "contains a non-finite number");
-  }
+  require_numbers(where, name, x, 3, "a point x,y,z of the sphere");
   const Eigen::Vector3d p(x.data());
   if (!(p.stableNorm() > 0)) throw_invalid(where, name, excerpt(x), "has zero length");
   return p.stableNormalized();
 }
 
+/// A guess of n numbers each (xi0: the Lie-group kernel only).
+void check_guess(const Guess& guess, int n, std::string_view group, bool lie_kernel, std::string_view where) {
+  const auto size = static_cast<std::size_t>(n);
+  const std::string of_group = std::to_string(n) + " for group " + std::string(group);
+  if (!guess.v0.empty()) require_numbers(where, "v0", guess.v0, size, "a guess of v(0), " + of_group);
+  if (guess.xi0.empty()) return;
+  if (!lie_kernel) {
+    throw_invalid(where, "xi0", excerpt(guess.xi0),
+                  "is a guess of the Lie-group kernel's xi (a Cartan-Schouten connection), not of the general solver's Xi");
+  }
+  require_numbers(where, "xi0", guess.xi0, size, "a guess of xi(0), " + of_group);
+}
+
 }  // namespace
 
-CheckedGroupProblem check(const GroupProblem& problem, std::string_view where) {
+CheckedGroupProblem checked(const GroupProblem& problem, const Guess& guess, bool elements, std::string_view where) {
   using connections::ConnectionKind;
   CheckedGroupProblem out;
   out.model = &models::find_model(problem.group, problem.model, where);
   const models::ModelInfo& model = *out.model;
   const auto n = static_cast<std::size_t>(model.dim);
-  const std::string of_group = "for group " + std::string(model.group);
   out.inertia = problem.inertia.empty() ? model.default_inertia : problem.inertia;
-  require_sizes(where, "inertia", out.inertia, n, n * n, "the diagonal or the matrix, row-major, " + of_group);
+  require_matrix_numbers(where, "inertia", out.inertia, n, model.group);
   models::check_inertia(model, out.inertia, where);
+  const auto only = [](ConnectionKind owner) { return "is an option of connection " + std::string(to_string(owner)) + " only"; };
   if (problem.connection != ConnectionKind::LeviCivita && !problem.metric.empty()) {
-    throw_invalid(where, "metric", excerpt(problem.metric), "is an option of connection levi-civita only");
+    throw_invalid(where, "metric", excerpt(problem.metric), only(ConnectionKind::LeviCivita));
   }
   if (problem.connection != ConnectionKind::Coefficients && !problem.alpha.empty()) {
-    throw_invalid(where, "alpha", excerpt(problem.alpha), "is an option of connection coefficients only");
+    throw_invalid(where, "alpha", excerpt(problem.alpha), only(ConnectionKind::Coefficients));
   }
   if (problem.connection == ConnectionKind::LeviCivita && !problem.metric.empty()) {
-    require_sizes(where, "metric", problem.metric, n, n * n, "the diagonal or the matrix, row-major, " + of_group);
+    require_matrix_numbers(where, "metric", problem.metric, n, model.group);
+    require_metric(where, problem.metric, model.dim);
   }
   if (problem.connection == ConnectionKind::Coefficients) {
-    require_sizes(where, "alpha", problem.alpha, n * n * n, n * n * n, "alpha[i][j][k] in (i, j, k) order, " + of_group);
+    require_numbers(where, "alpha", problem.alpha, n * n * n, "alpha[i][j][k] in (i, j, k) order");
   }
   out.g0 = problem.g0.empty() ? model.identity : problem.g0;
   const std::string element = std::string(model.element_what);
-  require_sizes(where, "g0", out.g0, model.element_size, model.element_size, element);
+  require_numbers(where, "g0", out.g0, model.element_size, element);
   if (problem.gT.empty()) throw_invalid(where, "gT", "(missing)", "is required");
-  require_sizes(where, "gT", problem.gT, model.element_size, model.element_size, element);
-  model.check_element(out.g0, where, "g0");
-  model.check_element(problem.gT, where, "gT");
+  require_numbers(where, "gT", problem.gT, model.element_size, element);
+  check_guess(guess, model.dim, model.group, lie_kernel(problem), where);
+  if (elements) {
+    model.check_element(out.g0, where, "g0");
+    model.check_element(problem.gT, where, "gT");
+  }
   return out;
 }
 
-general::ErasedProblem<manifolds::Sphere> sphere_problem(const SphereProblem& problem, std::string_view where) {
-  require_sizes(where, "mass", problem.mass, 2, 2, "a1,a2");
+general::ErasedProblem<manifolds::Sphere> sphere_problem(const SphereProblem& problem, const Guess& guess,
+                                                         std::string_view where) {
+  require_numbers(where, "mass", problem.mass, 2, "a1,a2");
   for (double a : problem.mass) {
-    if (!(std::isfinite(a) && a > 0)) throw_invalid(where, "mass", excerpt(problem.mass), "must be positive and finite");
+    if (!(a > 0)) throw_invalid(where, "mass", excerpt(problem.mass), "must be positive");
   }
   require_finite(problem.gravity, where, "gravity");
   const Eigen::Vector3d q0 = sphere_point(problem.q0, "q0", where), qT = sphere_point(problem.qT, "qT", where);
@@ -74,6 +119,10 @@ general::ErasedProblem<manifolds::Sphere> sphere_problem(const SphereProblem& pr
     throw_invalid(where, "q0/qT", excerpt(problem.q0) + " / " + excerpt(problem.qT),
                   q0.dot(qT) > 0 ? "are equal: the frame's e1 (towards qT along the minimal great circle) is undefined"
                                  : "are antipodal: the minimal great circle is not unique");
+  }
+  if (!guess.v0.empty()) require_numbers(where, "v0", guess.v0, 2, "a guess of v(0) in the frame (e1, e2)");
+  if (!guess.xi0.empty()) {
+    throw_invalid(where, "xi0", excerpt(guess.xi0), "is a guess of the Lie-group kernel's xi, not of the sphere's solver");
   }
   manifolds::Sphere::Frame frame;
   frame.col(0) = (qT - q0.dot(qT) * q0).normalized();  // along the minimal great circle
@@ -84,15 +133,16 @@ general::ErasedProblem<manifolds::Sphere> sphere_problem(const SphereProblem& pr
   return {manifolds::Sphere{}, general::ErasedLagrangian<manifolds::Sphere>(particle), problem.T, problem.N, q0, qT, frame};
 }
 
-void check_guess(const Guess& guess, int n, bool lie_kernel, std::string_view where) {
-  const auto size = static_cast<std::size_t>(n);
-  if (!guess.v0.empty()) require_sizes(where, "v0", guess.v0, size, size, "a guess of v(0)");
-  if (guess.xi0.empty()) return;
-  if (!lie_kernel) {
-    throw_invalid(where, "xi0", excerpt(guess.xi0),
-                  "is a guess of the Lie-group kernel's xi (a Cartan-Schouten connection), not of the general solver's Xi");
-  }
-  require_sizes(where, "xi0", guess.xi0, size, size, "a guess of xi(0)");
+}  // namespace cartan::api::detail
+
+namespace cartan::api {
+
+void check(const GroupProblem& problem, const Guess& guess, std::string_view where) {
+  (void)detail::checked(problem, guess, false, where);
 }
 
-}  // namespace cartan::api::detail
+void check(const SphereProblem& problem, const Guess& guess, std::string_view where) {
+  (void)detail::sphere_problem(problem, guess, where);
+}
+
+}  // namespace cartan::api

@@ -16,20 +16,18 @@
 namespace cartan::api::detail {
 
 /// A group problem's numbers once checked: the model's entry, the inertia (the model's default
-/// when none was given) and g0 (the identity when none was given). Throws std::invalid_argument
-/// "<where>: <name> = <value> <problem>" for unknown names, wrong sizes, a connection's data that
-/// belong to another connection, and boundary data that are not elements of the group.
+/// when none was given) and g0 (the identity when none was given).
 struct CheckedGroupProblem {
   const models::ModelInfo* model = nullptr;
   std::vector<double> inertia, g0;
 };
-CheckedGroupProblem check(const GroupProblem& problem, std::string_view where);
+/// api::check of the problem and guess, then (with `elements`) that g0 and gT are elements of the
+/// group (ModelInfo::check_element).
+CheckedGroupProblem checked(const GroupProblem& problem, const Guess& guess, bool elements, std::string_view where);
 
-/// The sphere problem's checked, normalised data and its frame at q0 (rows e1, e2).
-general::ErasedProblem<manifolds::Sphere> sphere_problem(const SphereProblem& problem, std::string_view where);
-
-/// Checks that `guess` has n numbers in each of v0 and xi0 that are given (xi0: the Lie-group kernel only).
-void check_guess(const Guess& guess, int n, bool lie_kernel, std::string_view where);
+/// The sphere problem checked (api::check), its points normalised, and its frame at q0 (e1, e2).
+general::ErasedProblem<manifolds::Sphere> sphere_problem(const SphereProblem& problem, const Guess& guess,
+                                                         std::string_view where);
 
 /// The connection of a checked non-Cartan–Schouten group problem on G: Levi-Civita of the metric
 /// (the inertia when none is given), or the bilinear map alpha.

@@ -57,8 +57,7 @@ Vector vector_of(const std::vector<double>& x) {
 }  // namespace
 
 Result solve(const GroupProblem& problem, const transported::SolveOptions& options, const Guess& guess, std::string_view where) {
-  const detail::CheckedGroupProblem checked = detail::check(problem, where);
-  detail::check_guess(guess, checked.model->dim, lie_kernel(problem), where);
+  const detail::CheckedGroupProblem checked = detail::checked(problem, guess, true, where);
   return models::visit_model(problem.group, problem.model, where, [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;
     const groups::ElementOf<G> g0 = models::element_of<G>(checked.g0), gT = models::element_of<G>(problem.gT);
@@ -78,8 +77,7 @@ Result solve(const GroupProblem& problem, const transported::SolveOptions& optio
 }
 
 Result solve(const SphereProblem& problem, const transported::SolveOptions& options, const Guess& guess, std::string_view where) {
-  const general::ErasedProblem<manifolds::Sphere> sphere = detail::sphere_problem(problem, where);
-  detail::check_guess(guess, manifolds::Sphere::kDim, false, where);
+  const general::ErasedProblem<manifolds::Sphere> sphere = detail::sphere_problem(problem, guess, where);
   general::GeneralGuess<manifolds::Sphere> start;
   if (!guess.v0.empty()) start.v0 = vector_of<Eigen::Vector2d>(guess.v0);
   Result r = result_of<manifolds::Sphere>(general::solve(sphere, options, start));

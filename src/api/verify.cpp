@@ -65,7 +65,7 @@ groups::ElementOf<G> element(const std::vector<double>& numbers) {
 
 verify::Report verify(const GroupProblem& problem, const Samples& samples, int order, double tol, Status status,
                       std::string_view where) {
-  const detail::CheckedGroupProblem checked = detail::check(problem, where);
+  const detail::CheckedGroupProblem checked = detail::checked(problem, {}, true, where);
   const Eigen::Index n = checked.model->dim;
   check_samples(samples, static_cast<Eigen::Index>(checked.model->element_size), n, lie_kernel(problem) ? n : n * n, where);
   return models::visit_model(problem.group, problem.model, where, [&]<class Entry>(const Entry&) {
@@ -85,7 +85,7 @@ verify::Report verify(const GroupProblem& problem, const Samples& samples, int o
 
 verify::Report verify(const SphereProblem& problem, const Samples& samples, int order, double tol, Status status,
                       std::string_view where) {
-  const general::ErasedProblem<manifolds::Sphere> sphere = detail::sphere_problem(problem, where);
+  const general::ErasedProblem<manifolds::Sphere> sphere = detail::sphere_problem(problem, {}, where);
   check_samples(samples, 3, 2, 4, where);
   return general::verify_general(sphere, general_trajectory<manifolds::Sphere>(samples), order, tol, status);
 }

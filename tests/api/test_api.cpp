@@ -104,6 +104,26 @@ TEST(Api, VerifyFailsSamplesThatAreNotASolution) {
   EXPECT_FALSE(verify(p, r.samples, r.order, transported::kDefaultTol, Status::NotConverged).passed());
 }
 
+TEST(Api, CheckRefusesWhatTheProblemTellsWrongButLeavesGroupMembershipToSolve) {
+  // check() is what the CLI validates a whole sweep with before solving any point; a gT off the
+  // group is refused by solve, so that the sweep reports it as that point's row.
+  GroupProblem off_group = free_body(connections::ConnectionKind::CartanSchouten);
+  off_group.gT[0] = 2;
+  EXPECT_NO_THROW(check(off_group));
+  testing::expect_invalid([&] { (void)solve(off_group); }, {"gT", "not orthogonal"});
+  GroupProblem lc = free_body(connections::ConnectionKind::LeviCivita);
+  lc.metric = {1, -2, 3};
+  testing::expect_invalid([&] { check(lc); }, {"metric = 1,-2,3", "symmetric positive definite"});
+  lc.metric = {1, 2};
+  testing::expect_invalid([&] { check(lc); }, {"metric = 1,2", "must have 3 numbers (the diagonal) or 9"});
+  lc.metric.clear();  // the inertia
+  EXPECT_NO_THROW(check(lc));
+  SphereProblem p;
+  p.q0 = {1, 0, 0};
+  p.qT = {std::nan(""), 1, 0};
+  testing::expect_invalid([&] { check(p); }, {"qT", "non-finite"});
+}
+
 TEST(Api, BadInputIsRefusedByName) {
   using testing::expect_invalid;
   using connections::ConnectionKind;
@@ -115,7 +135,7 @@ TEST(Api, BadInputIsRefusedByName) {
   };
   expect_invalid([&] { (void)solve(with([](GroupProblem& p) { p.group = "so4"; })); }, {"group", "so4"});
   expect_invalid([&] { (void)solve(with([](GroupProblem& p) { p.model = "pendulum"; })); }, {"model", "pendulum"});
-  expect_invalid([&] { (void)solve(with([](GroupProblem& p) { p.inertia = {1, 2}; })); }, {"inertia", "must have 3 or 9"});
+  expect_invalid([&] { (void)solve(with([](GroupProblem& p) { p.inertia = {1, 2}; })); }, {"inertia = 1,2", "must have 3 numbers (the diagonal) or 9"});
   expect_invalid([&] { (void)solve(with([](GroupProblem& p) { p.inertia = {1, -2, 3}; })); }, "inertia");
   expect_invalid([&] { (void)solve(with([](GroupProblem& p) { p.gT.clear(); })); }, {"gT", "required"});
   expect_invalid([&] { (void)solve(with([](GroupProblem& p) { p.gT[0] = 2; })); }, {"gT", "not orthogonal"});

@@ -242,7 +242,7 @@ def test_another_metric_gives_new_dynamics(tmp_path):
     (["--connection", "levi-civita", "--lambda", "0.2"], "lambda = 0.2"),
     (["--metric", "1,2,3"], "metric = 1,2,3 is an option of --connection levi-civita only"),
     (["--connection", "levi-civita", "--metric", "1,-2,3"], "must be symmetric positive definite"),
-    (["--connection", "levi-civita", "--metric", "1,2"], "metric = 1,2 must have 3 or 9 numbers"),
+    (["--connection", "levi-civita", "--metric", "1,2"], "metric = 1,2 must have 3 numbers (the diagonal) or 9"),
     (["--connection", "coefficients"], "alpha = (missing) is required"),
     (["--connection", "coefficients", "--alpha", "/nonexistent/alpha.json"], "alpha"),
     (["--alpha", "x.json"], "is an option of --connection coefficients only"),
@@ -277,6 +277,22 @@ def test_verify_passes_connection_results_and_fails_them_for_another_connection(
     assert r.returncode == 2 and "metric = 1,-2,3 must be symmetric positive definite" in r.stderr
 
 
-def test_sweep_says_it_does_not_take_general_connections():
+def test_sweep_solves_general_connections_as_cartan_solve_does():
+    # The library picks the kernel for every point (api::solve): a sweep of Levi-Civita problems
+    # runs the general solver, and each row is the `cartan solve` run of its point, bit for bit.
+    base = [*FREE_BODY[:4], "--T", "2", "--N", "100", "--connection", "levi-civita", "--metric", "1,2,3"]
+    r = run("sweep", *base, "--aT-list", "0.9,1,1;1,0.2,0.1", "--quiet")
+    assert r.returncode == 0, r.stderr
+    table = json.loads(r.stdout)
+    assert table["points"] == 2 and table["converged"] == 2
+    for row in table["rows"]:
+        assert row["lambda"] is None and row["connection"] == "levi-civita"
+        solved = json.loads(run("solve", *base, "--aT", ",".join(repr(x) for x in row["aT"])).stdout)
+        for key in ["status", "message", "method", "branch", "terminal_error", "iterations"]:
+            assert row[key] == solved[key], key
+        assert row["v0"] == solved["v"][0]
+
+
+def test_sweep_refuses_lambdas_on_another_connection():
     r = run("sweep", *FREE_BODY, "--connection", "levi-civita", "--lambdas", "0")
-    assert r.returncode == 2 and "connection" in r.stderr
+    assert r.returncode == 2 and "lambda = 0 is an option of --connection cartan-schouten only" in r.stderr, r.stderr

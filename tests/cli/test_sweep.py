@@ -131,6 +131,21 @@ def test_csv_matches_json():
         assert [float(line[f"v0_{k}"]) for k in (1, 2, 3)] == row["v0"]
 
 
+def test_csv_has_a_column_for_every_component_of_v0():
+    # se3's algebra has dimension 6: the CSV carries all six components of v0, as the JSON does
+    # (it once had three columns, whatever the group).
+    base = ["--group", "se3", "--T", "1", "--N", "20"]
+    grid = ["--gT-list", "1,0,0,0.5,0,1,0,0,0,0,1,0,0,0,0,1;1,0,0,0,0,1,0,0.3,0,0,1,0,0,0,0,1", "--lambdas", "0.5"]
+    table = sweep(*base, *grid, "--quiet")
+    result = run("sweep", *base, *grid, "--quiet", "--format", "csv")
+    assert result.returncode == 0, result.stderr
+    lines = list(csv.DictReader(io.StringIO(result.stdout)))
+    assert [f"v0_{k}" for k in range(1, 7)] == list(lines[0])[-6:]
+    for line, row in zip(lines, table["rows"]):
+        assert len(row["v0"]) == 6
+        assert [float(line[f"v0_{k}"]) for k in range(1, 7)] == row["v0"]
+
+
 def test_csv_error_row_has_empty_diagnostics():
     result = run("sweep", "--model", "oscillator", "--gT-list", "1,0,0,0,1,0,0,0,1;1,0,0,0,2,0,0,0,1",
                  "--lambdas", "0.5", "--quiet", "--format", "csv")

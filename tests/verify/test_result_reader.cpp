@@ -68,7 +68,7 @@ const BadCase kBadCases[] = {
     {"N zero", [] { return with("N", 0); }, "N = 0 must be at least 1"},
     {"N huge", [] { return with("N", 1e300); }, "is out of range"},
     {"tol zero", [] { return with("tol", 0); }, "tol = 0 must be positive"},
-    {"inertia short", [] { return with("inertia", {2, 3}); }, "inertia = 2,3 must have 3 or 9 numbers"},
+    {"inertia short", [] { return with("inertia", {2, 3}); }, "inertia = 2,3 must have 3 numbers (the diagonal) or 9"},
     {"inertia negative", [] { return with("inertia", {2, -3, 4}); }, "is not positive definite"},
     {"inertia ragged", [] { return with("inertia", {{2}, 3, 4}); }, "inertia[1] = 3 must be a row of 1 numbers"},
     {"inertia asymmetric", [] { return with("inertia", {{2, 0, 0}, {0.5, 3, 0}, {0, 0, 4}}); }, "is not symmetric"},

@@ -93,10 +93,18 @@ inline bool lie_kernel(const GroupProblem& problem) {
   return problem.connection == connections::ConnectionKind::CartanSchouten;
 }
 
+/// Throws std::invalid_argument "<where>: <name> = <value> <problem>" for what a problem and its
+/// guess tell wrong by themselves: unknown names, wrong sizes, non-finite numbers, an inertia the
+/// model refuses, a metric that is not symmetric positive definite, connection data of another
+/// connection, a guess of xi for the general solver; on the sphere, a mass that is not positive,
+/// points of zero length, and q0, qT equal or antipodal. Not that g0 and gT are elements of the
+/// group: solve checks that (so that a sweep reports such a point as its own row), nor the options.
+void check(const GroupProblem& problem, const Guess& guess = {}, std::string_view where = "cartan::api::check");
+void check(const SphereProblem& problem, const Guess& guess = {}, std::string_view where = "cartan::api::check");
+
 /// Solves `problem` as `options` say. Throws std::invalid_argument "<where>: <name> = <value>
-/// <problem>" for unknown names, wrong sizes, an inertia the model refuses, boundary data that are
-/// not elements of the group or points of the sphere, and whatever the solver's validation
-/// refuses; numerical failure is a status.
+/// <problem>" for what check() refuses, boundary data that are not elements of the group, and
+/// whatever the solver's validation refuses (options, T, N); numerical failure is a status.
 Result solve(const GroupProblem& problem, const transported::SolveOptions& options = {}, const Guess& guess = {},
              std::string_view where = "cartan::api::solve");
 Result solve(const SphereProblem& problem, const transported::SolveOptions& options = {}, const Guess& guess = {},
