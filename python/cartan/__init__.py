@@ -261,7 +261,8 @@ class SolveResult(Result):
     def sol(self, t):
         """Dense output: the solution at the time or times `t` in [t_0, t_N] = [0, T] (outside:
         ValueError), as a :class:`cartan._results.State` (g, v, mu, xi; a leading axis for an array
-        `t`). At a node it returns the sample itself.
+        `t`). At a node it returns the sample itself. The interpolants are the library's
+        (include/cartan/transported/dense.hpp), as follows.
 
         Discrete schemes (shooting, two-level, multiple-shooting, variational): on step k, g(t) =
         g_k exp(s log(g_k^-1 g_k+1)), s = (t - t_k)/h, the translated one-parameter subgroup through

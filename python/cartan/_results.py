@@ -228,68 +228,13 @@ class State(NamedTuple):
     xi: np.ndarray
 
 
-def _hermite(s, h, y0, y1, d0, d1):
-    """The cubic Hermite interpolant on [0, h] at s in [0, 1] with values y and derivatives d."""
-    s2, s3 = s * s, s * s * s
-    return ((2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * h * d0 + (-2 * s3 + 3 * s2) * y1
-            + (s3 - s2) * h * d1)
-
-
-def _chart_derivative(group, x, u):
-    """X' of g(t) = g_k exp(X(t)) with left-trivialised velocity u = g^{-1} g': the inverse of
-    (1 - exp(-ad_X)) / ad_X applied to u, by its series I + ad_X/2 + ad_X^2/12 (the next term,
-    ad_X^4/720, is O(h^4) on a step of length h and below the interpolant's error)."""
-    ad = np.asarray(group.ad(x))
-    return u + ad @ u / 2 + ad @ (ad @ u) / 12
-
-
 def dense(r, t):
-    """`r.sol(t)`: the interpolants of :meth:`cartan.SolveResult.sol`."""
-    if len(r.t) < 2:
-        raise ValueError(f"SolveResult.sol: the result has {len(r.t)} samples (status {r.status!r}): nothing to interpolate")
+    """`r.sol(t)`: the library's dense output (include/cartan/transported/dense.hpp) at the time or
+    times `t` (a leading axis for an array)."""
     times = np.asarray(t, dtype=float)
-    scalar = times.ndim == 0
-    times = np.atleast_1d(times)
-    lo, hi = r.t[0], r.t[-1]
-    outside = ~((times >= lo) & (times <= hi))
-    if outside.any():
-        raise ValueError(f"SolveResult.sol: t = {times[outside][0]!r} is outside [0, T] = [{lo!r}, {hi!r}]")
     group = _group_class(r.group, "SolveResult.sol")
-    k = np.clip(np.searchsorted(r.t, times, side="right") - 1, 0, len(r.t) - 2)
-    h = r.t[k + 1] - r.t[k]
-    s = (times - r.t[k]) / h
-    collocation = r.method == "collocation"
-    if collocation:
-        splines = _splines(r)
-        u = r.u if r.u is not None else group._along(None, r, r.lam)["u"]  # a stopped result has no u
-    g, v, mu, xi = [], [], [], []
-    for j, (i, sj, hj) in enumerate(zip(k, s, h)):
-        if sj in (0, 1):  # a node: its sample, exactly
-            node = i + int(sj)
-            for values, samples in ((g, r.g), (v, r.v), (mu, r.mu), (xi, r.xi)):
-                values.append(samples[node])
-            continue
-        step = np.asarray(group.log(group.compose(group.inverse(r.g[i]), r.g[i + 1])))
-        if collocation:
-            x = _hermite(sj, hj, 0 * step, step, u[i], _chart_derivative(group, step, u[i + 1]))
-            rates = [-np.asarray(group.ad(r.v[m])).T @ r.mu[m] for m in (i, i + 1)]  # xi' = -ad*_v mu (disc-aux)
-            xi.append(_hermite(sj, hj, r.xi[i], r.xi[i + 1], *rates))
-            v.append(splines[0](times[j]))
-            mu.append(splines[1](times[j]))
-        else:
-            x = sj * step
-            xi.append((1 - sj) * r.xi[i] + sj * r.xi[i + 1])
-            v.append((1 - sj) * r.v[i] + sj * r.v[i + 1])
-            mu.append((1 - sj) * r.mu[i] + sj * r.mu[i + 1])
-        g.append(group.compose(r.g[i], group.exp(x)))
-    out = [np.array(a) for a in (g, v, mu, xi)]
-    return State(*(a[0] if scalar else a for a in out))
-
-
-def _splines(r):
-    """Not-a-knot cubic splines of v and mu over the nodes (collocation's dense output)."""
-    from scipy.interpolate import CubicSpline
-    return CubicSpline(r.t, r.v, axis=0), CubicSpline(r.t, r.mu, axis=0)
+    out = group._dense(r, r.lam, r.method, np.atleast_1d(times).ravel())
+    return State(*(out[key][0] if times.ndim == 0 else out[key] for key in ("g", "v", "mu", "xi")))
 
 
 # ---- Plotting ------------------------------------------------------------------------------------

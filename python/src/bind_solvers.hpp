@@ -22,6 +22,7 @@
 #include "bind_models.hpp"
 #include "report_dict.hpp"
 #include "cartan/transported/compiled.hpp"
+#include "cartan/transported/dense.hpp"
 
 namespace cartan::python {
 
@@ -260,6 +261,21 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
                         !model.is_none());
     return d;
   }, py::arg("lagrangian"), py::arg("result"), py::arg("lam"));
+  // `<Group>._dense(result, lam, method, times)`: the library's dense output (transported/dense.hpp)
+  // at the 1-d array `times`, as a dict of g, v, mu, xi with one row per time (SolveResult.sol).
+  group.def_static("_dense", [a](const py::object& result, double lambda, const std::string& method, const py::object& times) {
+    const transported::TransportedTrajectory<G> x = trajectory_of<G>(result, a, "sol", "result", true);
+    const Array t = as_array(times, a.group + ".sol", "t");
+    transported::DenseSamples<G> d = transported::dense_output<G>(
+        x, lambda, parse_enum<transported::Method>(method, "SolveResult.sol"), std::vector<double>(t.data(), t.data() + t.size()),
+        "SolveResult.sol");
+    py::dict out;
+    out["g"] = to_numpy(std::move(d.g));
+    out["v"] = to_numpy(std::move(d.v));
+    out["mu"] = to_numpy(std::move(d.mu));
+    out["xi"] = to_numpy(std::move(d.xi));
+    return out;
+  }, py::arg("result"), py::arg("lam"), py::arg("method"), py::arg("times"));
 }
 
 }  // namespace cartan::python

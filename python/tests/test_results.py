@@ -260,6 +260,19 @@ def test_sol_reproduces_the_samples_at_the_nodes(method):
             r.sol(outside)
 
 
+def test_sol_of_collocation_has_scipys_not_a_knot_splines_for_v_and_mu():
+    # The library's spline (numerics/cubic_spline.hpp) against SciPy's CubicSpline (not-a-knot, its
+    # default) through the same nodes: the same piecewise cubic, to the rounding of two tridiagonal
+    # solves on entries of size |v| ~ 1 (1e-12).
+    from scipy.interpolate import CubicSpline
+    r = solve("so3/oscillator", method="collocation", N=40, tol=1e-8)
+    assert r.success, r.message
+    points = np.linspace(0, r.T, 301)
+    s = r.sol(points)
+    assert np.max(np.abs(s.v - CubicSpline(r.t, r.v, axis=0)(points))) < 1e-12
+    assert np.max(np.abs(s.mu - CubicSpline(r.t, r.mu, axis=0)(points))) < 1e-12
+
+
 def _between_node_errors(method, order, grids, reference):
     """For the solves on `grids`: max over the points t_k + s h, s = 1/4, 1/2, 3/4, of
     |log(g_ref^-1 g(t))| and of |v(t) - v_ref(t)|."""
