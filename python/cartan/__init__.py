@@ -51,7 +51,7 @@ a Python callback during a solve is re-raised unchanged when the solver returns.
 """
 from dataclasses import dataclass, field
 from types import SimpleNamespace
-from typing import Optional
+from typing import Any, Optional
 
 import numpy as np
 
@@ -479,6 +479,17 @@ class GeneralSolveResult(Result):
     iterations: int
     mesh_size: Optional[int] = None
     max_residual: Optional[float] = None
+    space: Any = field(default=None, repr=False, compare=False)
+
+    def sol(self, t):
+        """Dense output: the solution at the time or times `t` in [t_0, t_N] = [0, T] (outside:
+        ValueError) on the manifold it was solved on (`space`), as a :class:`cartan._results.GeneralState`
+        (q, frame, v, mu, Xi; a leading axis for an array `t`). At a node it returns the sample itself.
+        On a step, q(t) = step(q_k, s difference(q_k, q_k+1)) and the frame transported along that
+        piece (the one the schemes move along; O(h^2)); v, mu, Xi linear in s for the discrete
+        schemes, and for collocation v, mu by not-a-knot cubic splines and Xi by cubic Hermite with
+        Xi' = -v mu^T. The library's (include/cartan/general/dense.hpp)."""
+        return _results.general_dense(self, t)
 
     def __repr__(self):
         return (f"GeneralSolveResult(status={self.status!r}, success={self.success}, manifold={self.manifold!r}, "
@@ -551,7 +562,7 @@ def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, poten
     request.max_iterations, request.v0, request.Xi0, request.progress = max_iterations, v0, Xi0, progress
     request.guess, request.samples, request.max_nodes, request.time_limit = guess, samples, max_nodes, time_limit
     request.segments, request.lambda_start = segments, lambda_start
-    return GeneralSolveResult(**_cartan._solve_general(manifold, request))
+    return GeneralSolveResult(**_cartan._solve_general(manifold, request), space=manifold)
 
 
 class _Printed:

@@ -712,6 +712,7 @@ class Sphere(metaclass=type):
         """The x with step(a, x) = b (the local inverse of step)."""
     def transport_along_step(self, q: Any, x: Any) -> NDArray[numpy.float64]:
         """The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1]."""
+    def _dense(self, result: Any, method: str, times: Any) -> dict: ...
     def tangent_basis(self, q: Any) -> NDArray[numpy.float64]:
         """A (d, m) basis of T_qQ (orthonormal where there is a metric): the default frame0."""
     def metric(self, q: Any) -> Any:
@@ -758,6 +759,7 @@ class HyperbolicPlane(metaclass=type):
         """The x with step(a, x) = b (the local inverse of step)."""
     def transport_along_step(self, q: Any, x: Any) -> NDArray[numpy.float64]:
         """The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1]."""
+    def _dense(self, result: Any, method: str, times: Any) -> dict: ...
     def tangent_basis(self, q: Any) -> NDArray[numpy.float64]:
         """A (d, m) basis of T_qQ (orthonormal where there is a metric): the default frame0."""
     def metric(self, q: Any) -> Any:
@@ -805,6 +807,7 @@ class Euclidean(metaclass=type):
         """The x with step(a, x) = b (the local inverse of step)."""
     def transport_along_step(self, q: Any, x: Any) -> NDArray[numpy.float64]:
         """The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1]."""
+    def _dense(self, result: Any, method: str, times: Any) -> dict: ...
     def tangent_basis(self, q: Any) -> NDArray[numpy.float64]:
         """A (d, m) basis of T_qQ (orthonormal where there is a metric): the default frame0."""
     def metric(self, q: Any) -> Any:
@@ -852,6 +855,7 @@ class Chart(metaclass=type):
         """The x with step(a, x) = b (the local inverse of step)."""
     def transport_along_step(self, q: Any, x: Any) -> NDArray[numpy.float64]:
         """The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1]."""
+    def _dense(self, result: Any, method: str, times: Any) -> dict: ...
     def tangent_basis(self, q: Any) -> NDArray[numpy.float64]:
         """A (d, m) basis of T_qQ (orthonormal where there is a metric): the default frame0."""
     def metric(self, q: Any) -> Any:
@@ -896,6 +900,7 @@ class GroupManifold(metaclass=type):
         """The x with step(a, x) = b (the local inverse of step)."""
     def transport_along_step(self, q: Any, x: Any) -> NDArray[numpy.float64]:
         """The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1]."""
+    def _dense(self, result: Any, method: str, times: Any) -> dict: ...
     def tangent_basis(self, q: Any) -> NDArray[numpy.float64]:
         """A (d, m) basis of T_qQ (orthonormal where there is a metric): the default frame0."""
     def metric(self, q: Any) -> Any:

@@ -237,6 +237,27 @@ def dense(r, t):
     return State(*(out[key][0] if times.ndim == 0 else out[key] for key in ("g", "v", "mu", "xi")))
 
 
+class GeneralState(NamedTuple):
+    """The solution at the times of :meth:`cartan.GeneralSolveResult.sol`: q (``*point_shape``),
+    frame (d, m), v, mu (m,), Xi (m, m), each with a leading axis of the times' length for an array."""
+    q: np.ndarray
+    frame: np.ndarray
+    v: np.ndarray
+    mu: np.ndarray
+    Xi: np.ndarray
+
+
+def general_dense(r, t):
+    """`r.sol(t)` of a GeneralSolveResult: the library's dense output (include/cartan/general/dense.hpp)
+    on the manifold `r.space`."""
+    if r.space is None:
+        raise ValueError("GeneralSolveResult.sol: space = None: the result does not carry the manifold it was "
+                         "solved on (set `space` to it)")
+    times = np.asarray(t, dtype=float)
+    out = r.space._dense(r, r.method, np.atleast_1d(times).ravel())
+    return GeneralState(*(out[key][0] if times.ndim == 0 else out[key] for key in ("q", "frame", "v", "mu", "Xi")))
+
+
 # ---- Plotting ------------------------------------------------------------------------------------
 
 def plot(r, path=None):

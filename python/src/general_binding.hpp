@@ -17,6 +17,7 @@
 #include "bind_group.hpp"
 #include "bindings.hpp"
 #include "cartan/general/compiled.hpp"
+#include "cartan/general/dense.hpp"
 #include "python_models.hpp"
 #include "report_dict.hpp"
 
@@ -140,6 +141,9 @@ Square<N> matrix_or_diagonal(const py::handle& obj, const std::string& where, co
 
 // ---- the manifold classes ---------------------------------------------------------------------
 
+template <class M>
+general::GeneralTrajectory<M> trajectory_of(const M& manifold, const py::object& object, const char* where, const char* what);
+
 /// The geometry of manifolds/manifold.hpp and geometry.hpp, the same for every class.
 template <class Holder>
 void def_manifold_methods(py::class_<Holder>& cls, const std::string& name) {
@@ -215,6 +219,24 @@ void def_manifold_methods(py::class_<Holder>& cls, const std::string& name) {
       return to_numpy(m.transport_along_step(point_arg(m, q, w, "q"), finite_arg<VectorOf<M>>(x, w, "x")));
     });
   }, py::arg("q"), py::arg("x"), "The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1].");
+  // `_dense(result, method, times)`: the library's dense output (general/dense.hpp) of a result on
+  // this manifold at the 1-d array `times`, as a dict of q, frame, v, mu, Xi with one row per time.
+  cls.def("_dense", [](const Holder& h, const py::object& result, const std::string& method, const py::object& times) {
+    return visit_holder(h, [&](const auto& m) {
+      constexpr const char* where = "GeneralSolveResult.sol";
+      auto x = trajectory_of(m, result, where, "result");
+      const Array t = as_array(times, where, "t");
+      auto d = general::dense_output(m, x, parse_enum<transported::Method>(method, where),
+                                     std::vector<double>(t.data(), t.data() + t.size()), where);
+      py::dict out;
+      out["q"] = to_numpy(std::move(d.q));
+      out["frame"] = to_numpy(std::move(d.frame));
+      out["v"] = to_numpy(std::move(d.v));
+      out["mu"] = to_numpy(std::move(d.mu));
+      out["Xi"] = to_numpy(std::move(d.Xi));
+      return out;
+    });
+  }, py::arg("result"), py::arg("method"), py::arg("times"));
   cls.def("tangent_basis", [name](const Holder& h, const py::object& q) {
     return visit_holder(h, [&](const auto& m) { return to_numpy(m.tangent_basis(point_arg(m, q, name + ".tangent_basis", "q"))); });
   }, py::arg("q"), "A (d, m) basis of T_qQ (orthonormal where there is a metric): the default frame0.");

@@ -690,3 +690,43 @@ def test_chart_callback_errors_and_bad_input():
         cartan.Chart(np.zeros((2, 2, 2)), dim=2)
     with pytest.raises(ValueError, match=r"\(2, 2, 2\)"):
         cartan.Chart(lambda q: np.zeros((3, 3, 3)), dim=2).christoffel([0, 1.0], [1, 0], [0, 1])
+
+
+# ---- Dense output ------------------------------------------------------------------------------
+
+def test_sol_of_the_free_particle_runs_the_great_circle_with_its_frame():
+    # l = 1/2 |v|^2 on S^2 without gravity: q(t) = cos(w t) q0 + sin(w t) e1, w = angle / T, and the
+    # frame parallel along the great circle: e1(t) = q'(t) / w, e2 = q0 x e1 fixed. The library's
+    # pieces are great circles, so sol is exact between nodes too (rounding: 1e-14; the solve: 1e-10).
+    q0, qT = np.array([1.0, 0, 0]), np.array([0, 0.6, 0.8])
+    r = cartan.solve_general(Sphere(), T=2.0, N=20, q0=q0, qT=qT, tol=1e-12)
+    assert r.success, r.message
+    w = np.pi / 2 / r.T
+    d = qT  # the unit tangent at q0 towards qT (q0 . qT = 0 here); n = q0 x d is normal to the circle
+    n = np.cross(q0, d)
+    frame0 = r.frame[0]  # tangent_basis(q0), orthonormal: each column's parts along d and n
+    along, normal = d @ frame0, n @ frame0
+    times = np.linspace(0, r.T, 77)
+    s = r.sol(times)
+    for t, q, frame in zip(times, s.q, s.frame):
+        assert np.allclose(q, np.cos(w * t) * q0 + np.sin(w * t) * d, atol=1e-10)
+        tangent = -np.sin(w * t) * q0 + np.cos(w * t) * d
+        assert np.allclose(frame, np.outer(tangent, along) + np.outer(n, normal), atol=1e-10)
+    assert np.allclose(s.v, w * along, atol=1e-10)  # the velocity w d in the components of frame0
+    one = r.sol(r.t[3])
+    assert one.q.shape == (3,) and np.array_equal(one.q, r.q[3]) and np.array_equal(one.Xi, r.Xi[3])
+    with pytest.raises(ValueError, match="outside"):
+        r.sol(r.T * (1 + 1e-9))
+
+
+def test_sol_of_a_general_collocation_result_has_scipys_splines():
+    # v and mu by the library's not-a-knot splines: SciPy's CubicSpline through the same nodes
+    # gives the same cubics (to the rounding of two tridiagonal solves, 1e-12).
+    from scipy.interpolate import CubicSpline
+    r = cartan.solve_general(Sphere(), method="collocation", gravity=1.0, **SPHERE_ARGS)
+    assert r.success, r.message
+    points = np.linspace(0, r.T, 123)
+    s = r.sol(points)
+    assert np.max(np.abs(s.v - CubicSpline(r.t, r.v, axis=0)(points))) < 1e-12
+    assert np.max(np.abs(s.mu - CubicSpline(r.t, r.mu, axis=0)(points))) < 1e-12
+    assert np.allclose(np.linalg.norm(s.q, axis=1), 1, atol=1e-14)  # on the sphere
