@@ -68,7 +68,7 @@ std::vector<ProblemField> make_fields() {
   }
   return {
       {"group", &S::group, "the group: " + groups + " (default so3)", true, nullptr, ProblemField::Scope::Group},
-      {"model", &S::model, "the model (default the group's first; sphere: particle): " + models, true, nullptr,
+      {"model", &S::model, "the model (default the group's first; a manifold: particle): " + models, true, nullptr,
        ProblemField::Scope::Any},
       {"inertia", &S::inertia,
        "n numbers (the diagonal) or n*n (a symmetric positive-definite matrix, row-major), n = the algebra's dimension "
@@ -125,15 +125,15 @@ std::vector<ProblemField> make_fields() {
        "coefficients: a JSON file, an n x n x n array alpha with alpha(e_i, e_j) = sum_k alpha[i][j][k] e_k", false,
        nullptr, ProblemField::Scope::Group},
       {"manifold", &S::manifold,
-       "a manifold instead of a group: sphere (S^2 with its Levi-Civita connection; model particle)", true, nullptr,
-       ProblemField::Scope::Sphere},
-      {"mass", &S::mass, "sphere: a1,a2 in l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1,1)", true, nullptr,
-       ProblemField::Scope::Sphere},
-      {"gravity", &S::gravity, "sphere: G in l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 0)", true, finite_value,
-       ProblemField::Scope::Sphere},
-      {"q0", &S::q0, "sphere: initial point x,y,z (normalised)", true, nullptr, ProblemField::Scope::Sphere},
-      {"qT", &S::qT, "sphere: final point x,y,z (normalised; not equal or antipodal to q0)", true, nullptr,
-       ProblemField::Scope::Sphere},
+       "a manifold instead of a group: sphere or hyperbolic-plane (S^2 or H^2 with its Levi-Civita connection; model particle)", true, nullptr,
+       ProblemField::Scope::Manifold},
+      {"mass", &S::mass, "manifold: a1,a2 in l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1,1)", true, nullptr,
+       ProblemField::Scope::Manifold},
+      {"gravity", &S::gravity, "manifold: G in l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 0)", true, finite_value,
+       ProblemField::Scope::Manifold},
+      {"q0", &S::q0, "manifold: initial point x,y,z (moved onto the manifold: normalised on the sphere, onto z^2 - x^2 - y^2 = 1 on the hyperbolic plane)", true, nullptr, ProblemField::Scope::Manifold},
+      {"qT", &S::qT, "manifold: final point x,y,z (as q0; not equal to q0, nor antipodal on the sphere)", true, nullptr,
+       ProblemField::Scope::Manifold},
   };
 }
 
@@ -205,7 +205,7 @@ nlohmann::json result_header(const ProblemSpec& spec, const std::string& status,
                              const std::string& method, int order, const std::string& branch) {
   nlohmann::json out = {{"status", status}, {"message", message}, {"method", method},
                         {"order", order},   {"branch", branch}};
-  const auto scope = is_manifold_problem(spec) ? ProblemField::Scope::Sphere : ProblemField::Scope::Group;
+  const auto scope = is_manifold_problem(spec) ? ProblemField::Scope::Manifold : ProblemField::Scope::Group;
   if (!is_manifold_problem(spec)) out["gT"] = final_element(spec);
   for (const auto& field : problem_fields()) {
     if (!field.echoed || (field.scope != ProblemField::Scope::Any && field.scope != scope)) continue;
@@ -320,28 +320,26 @@ void validate_connection(ProblemSpec& spec, std::size_t n) {
   }
 }
 
-/// A checked point of S^2 (3 finite numbers, not 0), normalised.
-std::vector<double> unit(const std::vector<double>& x) {
-  const Eigen::Vector3d p = Eigen::Vector3d(x.data()).stableNormalized();
-  return {p[0], p[1], p[2]};
-}
-
-/// --manifold sphere: model particle, mass (2 positive numbers), gravity, q0 and qT (normalised,
+/// --manifold sphere | hyperbolic-plane: model particle, mass (2 positive numbers), gravity, q0 and qT (normalised,
 /// neither equal nor antipodal), the general solver's methods (auto, shooting).
 void validate_manifold_problem(ProblemSpec& spec) {
-  if (spec.manifold != "sphere") bad("manifold", quote_input(spec.manifold), "is not one of: sphere");
-  check_scope(spec, ProblemField::Scope::Sphere, "--manifold sphere (it belongs to problems on a group)");
+  if (spec.manifold != "sphere" && spec.manifold != "hyperbolic-plane") {
+    bad("manifold", quote_input(spec.manifold), "is not one of: sphere, hyperbolic-plane");
+  }
+  const std::string kind = "--manifold " + spec.manifold;
+  check_scope(spec, ProblemField::Scope::Manifold, kind + " (it belongs to problems on a group)");
   if (spec.model.empty()) spec.model = "particle";
-  if (spec.model != "particle") bad("model", quote_input(spec.model), "is not a model of --manifold sphere (models: particle)");
-  check_general_method(spec, "--manifold sphere");
+  if (spec.model != "particle") bad("model", quote_input(spec.model), "is not a model of " + kind + " (models: particle)");
+  check_general_method(spec, kind);
   for (const auto& field : problem_fields()) check_field(spec, field, kWhere);
   require_memory("N", spec.N, kBytesPerNode * spec.N, "the trajectory and its JSON output, ~1 KiB per step");
   if (spec.mass.empty()) spec.mass = {1, 1};
-  if (spec.q0.empty()) bad("q0", "(missing)", "is required for --manifold sphere");
-  if (spec.qT.empty()) bad("qT", "(missing)", "is required for --manifold sphere");
-  api::check(sphere_problem(spec), {spec.v0, spec.xi0}, kWhere);  // mass, q0, qT, v0: the library's checks
-  spec.q0 = unit(spec.q0);  // echoed normalised
-  spec.qT = unit(spec.qT);
+  if (spec.q0.empty()) bad("q0", "(missing)", "is required for " + kind);
+  if (spec.qT.empty()) bad("qT", "(missing)", "is required for " + kind);
+  api::check(manifold_problem(spec), {spec.v0, spec.xi0}, kWhere);  // mass, q0, qT, v0: the library's checks
+  const api::ManifoldProblem on = api::on_manifold(manifold_problem(spec), kWhere);  // echoed on the manifold
+  spec.q0 = on.q0;
+  spec.qT = on.qT;
 }
 
 }  // namespace
@@ -350,7 +348,7 @@ void check_connection(ProblemSpec& spec, std::size_t n) { validate_connection(sp
 
 void validate(ProblemSpec& spec) {
   if (is_manifold_problem(spec)) return validate_manifold_problem(spec);
-  check_scope(spec, ProblemField::Scope::Group, "a problem on a group (it belongs to --manifold sphere)");
+  check_scope(spec, ProblemField::Scope::Group, "a problem on a group (it belongs to --manifold)");
   const models::ModelInfo& model = models::find_model(spec.group, spec.model, kWhere);
   spec.model = model.model;
   const std::size_t n = static_cast<std::size_t>(model.dim);
@@ -423,8 +421,8 @@ api::GroupProblem group_problem(const ProblemSpec& spec) {
   return p;
 }
 
-api::SphereProblem sphere_problem(const ProblemSpec& spec) {
-  return {spec.mass, spec.gravity, spec.q0, spec.qT, spec.T, spec.N};
+api::ManifoldProblem manifold_problem(const ProblemSpec& spec) {
+  return {spec.manifold, spec.mass, spec.gravity, spec.q0, spec.qT, spec.T, spec.N};
 }
 
 }  // namespace cartan::cli

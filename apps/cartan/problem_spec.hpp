@@ -17,8 +17,9 @@
 namespace cartan::cli {
 
 struct ProblemSpec {
-  /// Empty: a problem on a group (group, model, inertia, lambda, g0, gT); "sphere": the general
-  /// problem on S^2 (api::SphereProblem: model particle, mass, gravity, q0, qT).
+  /// Empty: a problem on a group (group, model, inertia, lambda, g0, gT); "sphere" or
+  /// "hyperbolic-plane": the general problem on the quadric (api::ManifoldProblem: model particle,
+  /// mass, gravity, q0, qT).
   std::string manifold;
   std::string group = "so3";            ///< a group of the model table (models/catalogue.hpp)
   std::string model;                    ///< a model of the group; empty: the group's first (validate fills it)
@@ -39,9 +40,9 @@ struct ProblemSpec {
   int max_iterations = transported::kDefaultMaxIterations;
   double time_limit = 0;                ///< seconds; 0: no limit
   std::string output;                   ///< empty: stdout
-  std::vector<double> mass;             ///< sphere: a1, a2 of l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1, 1)
-  double gravity = 0;                   ///< sphere: G
-  std::vector<double> q0, qT;           ///< sphere: endpoints (3 numbers each, normalised by validate)
+  std::vector<double> mass;             ///< manifold: a1, a2 of l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1, 1)
+  double gravity = 0;                   ///< manifold: G
+  std::vector<double> q0, qT;           ///< manifold: endpoints (3 numbers each, moved onto the manifold by validate)
   std::string connection{to_string(connections::ConnectionKind::CartanSchouten)};  ///< groups: a ConnectionKind word
   std::vector<double> metric;           ///< levi-civita: n or n^2 numbers (default: the inertia)
   std::string alpha;                    ///< coefficients: a JSON file alpha[i][j][k], alpha(e_i, e_j) = sum_k alpha[i][j][k] e_k
@@ -55,8 +56,8 @@ struct ProblemSpec {
 /// numbers the check of its value. The one list of the problem's fields: parsed from problem
 /// files and flags, checked by validate, echoed by result_header, read back by read_result.
 struct ProblemField {
-  /// Which problems the field belongs to: every problem, those on a group, or --manifold sphere.
-  enum class Scope { Any, Group, Sphere };
+  /// Which problems the field belongs to: every problem, those on a group, or those on a --manifold.
+  enum class Scope { Any, Group, Manifold };
   using Member = std::variant<std::string ProblemSpec::*, double ProblemSpec::*, int ProblemSpec::*,
                               std::vector<double> ProblemSpec::*>;
   std::string key;
@@ -119,10 +120,10 @@ void validate(ProblemSpec& spec);
 /// else read from the file alpha). Throws std::invalid_argument naming the first bad value.
 void check_connection(ProblemSpec& spec, std::size_t n);
 
-/// The library's description of a spec on a group (gT: final_element) or on the sphere
+/// The library's description of a spec on a group (gT: final_element) or on a manifold
 /// (cartan/api/solve.hpp): what validate checks through api::check and solve solves.
 api::GroupProblem group_problem(const ProblemSpec& spec);
-api::SphereProblem sphere_problem(const ProblemSpec& spec);
+api::ManifoldProblem manifold_problem(const ProblemSpec& spec);
 
 /// The final element of a validated spec as its numbers (so3: row-major): gT, or for so3 with
 /// a0/aT the minimal rotation taking a0 to aT.

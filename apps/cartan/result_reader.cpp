@@ -87,9 +87,9 @@ std::vector<double> nested_numbers(const nlohmann::json& value, const std::strin
   return out;
 }
 
-/// A --manifold sphere result: its echoed fields (checked and normalised by validate), then t,
+/// A --manifold result (the sphere, the hyperbolic plane): its echoed fields (checked and normalised by validate), then t,
 /// q (3 numbers a row), v, mu (2) and Xi (4).
-ResultFile read_sphere(const nlohmann::json& j, ResultFile& r) {
+ResultFile read_manifold(const nlohmann::json& j, ResultFile& r) {
   for (const auto& field : problem_fields()) {
     if (!field.echoed || field.scope == ProblemField::Scope::Group) continue;
     read_field(r.problem, field, require_key(j, field.key, kResultWhere, kResultFile), kResultWhere);
@@ -112,7 +112,7 @@ ResultFile read_sphere(const nlohmann::json& j, ResultFile& r) {
 ProblemSpec problem_of(const nlohmann::json& j) {
   ProblemSpec p;
   for (const auto& field : problem_fields()) {
-    if (!field.echoed || field.scope == ProblemField::Scope::Sphere) continue;
+    if (!field.echoed || field.scope == ProblemField::Scope::Manifold) continue;
     read_field(p, field, require_key(j, field.key, kResultWhere, kResultFile), kResultWhere);
     if (field.key == "group" || field.key == "model") continue;  // checked against the table below
     check_field(p, field, kResultWhere);
@@ -148,7 +148,7 @@ ResultFile read(const nlohmann::json& j) {
   };
   if (j.contains("manifold")) {
     read_method_and_order();
-    return read_sphere(j, r);
+    return read_manifold(j, r);
   }
   r.problem = problem_of(j);
   const models::ModelInfo& model = models::find_model(r.problem.group, r.problem.model, kResultWhere);

@@ -17,12 +17,12 @@ namespace cartan::cli {
 struct ResultFile {
   std::string status, method;
   /// Groups: group, model, inertia (n or n^2 numbers), lambda, T, N, tol, g0, gT, connection
-  /// (metric, alpha_values); --manifold sphere: manifold, model, mass, gravity, q0, qT, T, N, tol.
+  /// (metric, alpha_values); --manifold: manifold, model, mass, gravity, q0, qT, T, N, tol.
   ProblemSpec problem;
   int order = 0;
   Eigen::VectorXd t;           ///< M >= 2 strictly increasing times, t[0] = 0, t[M-1] = T
-  /// M rows: g has the element's numbers (models/catalogue.hpp; the sphere: q, 3 numbers), v and mu n,
-  /// xi n (Cartan–Schouten) or Xi n^2 (the general solver: sphere or another connection).
+  /// M rows: g has the element's numbers (models/catalogue.hpp; a manifold: q, 3 numbers), v and mu n,
+  /// xi n (Cartan–Schouten) or Xi n^2 (the general solver: a manifold or another connection).
   Eigen::MatrixXd g, v, mu, xi, Xi;
 
   bool general() const { return is_manifold_problem(problem) || is_general_connection(problem); }

@@ -81,7 +81,7 @@ nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor) {
   transported::SolveOptions options = solve_options(spec);
   options.monitor = monitor;
   const api::Guess guess{spec.v0, spec.xi0};
-  return result_json(spec, is_manifold_problem(spec) ? api::solve(sphere_problem(spec), options, guess, kSolveCommandWhere)
+  return result_json(spec, is_manifold_problem(spec) ? api::solve(manifold_problem(spec), options, guess, kSolveCommandWhere)
                                                      : api::solve(group_problem(spec), options, guess, kSolveCommandWhere));
 }
 

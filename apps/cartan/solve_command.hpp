@@ -24,11 +24,11 @@ SO3Endpoints so3_endpoints(const ProblemSpec& spec);
 transported::SolveOptions solve_options(const ProblemSpec& spec);
 
 /// Solves a validated spec with the library's api::solve. The JSON (result_json) has status,
-/// message, the echoed problem, method, order, branch, connection, t, g (q on the sphere), v, mu,
+/// message, the echoed problem, method, order, branch, connection, t, g (q on a manifold), v, mu,
 /// xi (the Lie-group kernel) or Xi (n^2 numbers a row, the general solver), terminal_error,
 /// xi_terminal, action (the Lie-group kernel), iterations {outer, inner, sweeps}, solve_time_s,
 /// for collocation mesh_size, max_residual (and group_defect for the matrix groups), and frame0 on
-/// the sphere. Throws std::invalid_argument for boundary data that are not elements of the group
+/// a manifold. Throws std::invalid_argument for boundary data that are not elements of the group
 /// (e.g. a gT that is not a rotation).
 nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor = {});
 

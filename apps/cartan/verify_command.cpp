@@ -20,7 +20,7 @@ verify::Report verify(const ResultFile& r) {
   const ProblemSpec& p = r.problem;
   const Status status = parse_enum<Status>(r.status);
   const api::Samples samples{r.t, r.g, r.v, r.mu, r.general() ? r.Xi : r.xi};
-  if (is_manifold_problem(p)) return api::verify(sphere_problem(p), samples, r.order, p.tol, status, kVerifyCommandWhere);
+  if (is_manifold_problem(p)) return api::verify(manifold_problem(p), samples, r.order, p.tol, status, kVerifyCommandWhere);
   return api::verify(group_problem(p), samples, r.order, p.tol, status, kVerifyCommandWhere);
 }
 

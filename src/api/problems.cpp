@@ -48,12 +48,27 @@ void require_metric(std::string_view where, const std::vector<double>& metric, E
   }
 }
 
-/// A point of S^2 from 3 finite numbers, not 0, normalised.
-Eigen::Vector3d sphere_point(const std::vector<double>& x, const char* name, std::string_view where) {
-  require_numbers(where, name, x, 3, "a point x,y,z of the sphere");
+/// A point of the quadric <q, q> = K from 3 finite numbers: on the sphere any nonzero vector,
+/// divided by its length; on the hyperbolic plane a vector with z > 0 and <q, q> < 0 (inside the
+/// future cone), divided by sqrt(-<q, q>).
+template <int K>
+Eigen::Vector3d quadric_point(const std::vector<double>& x, const char* name, std::string_view where) {
+  require_numbers(where, name, x, 3, "a point x,y,z");
   const Eigen::Vector3d p(x.data());
-  if (!(p.stableNorm() > 0)) throw_invalid(where, name, excerpt(x), "has zero length");
-  return p.stableNormalized();
+  if constexpr (K > 0) {
+    if (!(p.stableNorm() > 0)) throw_invalid(where, name, excerpt(x), "has zero length");
+    return p.stableNormalized();
+  } else {
+    const double scale = p.cwiseAbs().maxCoeff();  // against overflow of the squares
+    const Eigen::Vector3d u = scale > 0 ? Eigen::Vector3d(p / scale) : p;
+    const double inner = manifolds::HyperbolicPlane::inner(u, u);
+    if (!(u[2] > 0 && inner < 0)) {
+      throw_invalid(where, name, excerpt(x),
+                    "is not a point of the hyperbolic plane's sheet and cannot be moved onto it (it needs z > 0 and "
+                    "z^2 > x^2 + y^2)");
+    }
+    return u / std::sqrt(-inner);
+  }
 }
 
 /// A guess of n numbers each (xi0: the Lie-group kernel only).
@@ -107,31 +122,48 @@ CheckedGroupProblem checked(const GroupProblem& problem, const Guess& guess, boo
   return out;
 }
 
-general::ErasedProblem<manifolds::Sphere> sphere_problem(const SphereProblem& problem, const Guess& guess,
-                                                         std::string_view where) {
+template <int K>
+general::ErasedProblem<manifolds::Quadric<K>> quadric_problem(const ManifoldProblem& problem, const Guess& guess,
+                                                              std::string_view where) {
+  using Q = manifolds::Quadric<K>;
   require_numbers(where, "mass", problem.mass, 2, "a1,a2");
   for (double a : problem.mass) {
     if (!(a > 0)) throw_invalid(where, "mass", excerpt(problem.mass), "must be positive");
   }
   require_finite(problem.gravity, where, "gravity");
-  const Eigen::Vector3d q0 = sphere_point(problem.q0, "q0", where), qT = sphere_point(problem.qT, "qT", where);
-  if (q0.cross(qT).norm() < 1e-12) {
-    throw_invalid(where, "q0/qT", excerpt(problem.q0) + " / " + excerpt(problem.qT),
-                  q0.dot(qT) > 0 ? "are equal: the frame's e1 (towards qT along the minimal great circle) is undefined"
-                                 : "are antipodal: the minimal great circle is not unique");
+  const Eigen::Vector3d q0 = quadric_point<K>(problem.q0, "q0", where), qT = quadric_point<K>(problem.qT, "qT", where);
+  manifolds::Sphere::Frame frame;
+  if constexpr (K > 0) {
+    if (q0.cross(qT).norm() < 1e-12) {
+      throw_invalid(where, "q0/qT", excerpt(problem.q0) + " / " + excerpt(problem.qT),
+                    q0.dot(qT) > 0 ? "are equal: the frame's e1 (towards qT along the minimal great circle) is undefined"
+                                   : "are antipodal: the minimal great circle is not unique");
+    }
+    frame.col(0) = (qT - q0.dot(qT) * q0).normalized();  // along the minimal great circle
+    frame.col(1) = q0.cross(Eigen::Vector3d(frame.col(0)));
+  } else {
+    const Eigen::Vector3d towards = Q::project_tangent(q0, qT);  // along the geodesic to qT; <., .> = J
+    if (!(std::sqrt(std::max(0.0, Q::inner(towards, towards))) > 1e-12)) {
+      throw_invalid(where, "q0/qT", excerpt(problem.q0) + " / " + excerpt(problem.qT),
+                    "are equal: the frame's e1 (towards qT along the geodesic) is undefined");
+    }
+    frame.col(0) = towards / std::sqrt(Q::inner(towards, towards));
+    frame.col(1) = Q::metric(q0) * q0.cross(Eigen::Vector3d(frame.col(0)));  // J (q0 x e1): unit, tangent, J-orthogonal to e1
   }
   if (!guess.v0.empty()) require_numbers(where, "v0", guess.v0, 2, "a guess of v(0) in the frame (e1, e2)");
   if (!guess.xi0.empty()) {
-    throw_invalid(where, "xi0", excerpt(guess.xi0), "is a guess of the Lie-group kernel's xi, not of the sphere's solver");
+    throw_invalid(where, "xi0", excerpt(guess.xi0), "is a guess of the Lie-group kernel's xi, not of the " +
+                                                         std::string(Q::name()) + "'s solver");
   }
-  manifolds::Sphere::Frame frame;
-  frame.col(0) = (qT - q0.dot(qT) * q0).normalized();  // along the minimal great circle
-  frame.col(1) = q0.cross(Eigen::Vector3d(frame.col(0)));
-  using Particle = general::KineticPotential<manifolds::Sphere>;
+  using Particle = general::KineticPotential<Q>;
   const Particle particle = Particle::with_linear_potential(Eigen::Vector2d(problem.mass[0], problem.mass[1]).asDiagonal(),
                                                             Eigen::Vector3d(0, 0, problem.gravity));
-  return {manifolds::Sphere{}, general::ErasedLagrangian<manifolds::Sphere>(particle), problem.T, problem.N, q0, qT, frame};
+  return {Q{}, general::ErasedLagrangian<Q>(particle), problem.T, problem.N, q0, qT, frame};
 }
+
+template general::ErasedProblem<manifolds::Sphere> quadric_problem<1>(const ManifoldProblem&, const Guess&, std::string_view);
+template general::ErasedProblem<manifolds::HyperbolicPlane> quadric_problem<-1>(const ManifoldProblem&, const Guess&,
+                                                                                 std::string_view);
 
 }  // namespace cartan::api::detail
 
@@ -141,8 +173,18 @@ void check(const GroupProblem& problem, const Guess& guess, std::string_view whe
   (void)detail::checked(problem, guess, false, where);
 }
 
-void check(const SphereProblem& problem, const Guess& guess, std::string_view where) {
-  (void)detail::sphere_problem(problem, guess, where);
+void check(const ManifoldProblem& problem, const Guess& guess, std::string_view where) {
+  (void)detail::visit_manifold(problem, guess, where, [](const auto&) { return 0; });
+}
+
+ManifoldProblem on_manifold(const ManifoldProblem& problem, std::string_view where) {
+  ManifoldProblem out = problem;
+  detail::visit_manifold(problem, {}, where, [&](const auto& quadric) {
+    out.q0.assign(quadric.q0.data(), quadric.q0.data() + 3);
+    out.qT.assign(quadric.qT.data(), quadric.qT.data() + 3);
+    return 0;
+  });
+  return out;
 }
 
 }  // namespace cartan::api

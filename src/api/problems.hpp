@@ -1,5 +1,5 @@
 #pragma once
-// What the api's solve and verify (solve.cpp, verify.cpp) share: a GroupProblem or SphereProblem
+// What the api's solve and verify (solve.cpp, verify.cpp) share: a GroupProblem or ManifoldProblem
 // checked and turned into the problem a compiled solver takes, and samples as rows of numbers.
 // Private to src/api/.
 
@@ -25,9 +25,20 @@ struct CheckedGroupProblem {
 /// group (ModelInfo::check_element).
 CheckedGroupProblem checked(const GroupProblem& problem, const Guess& guess, bool elements, std::string_view where);
 
-/// The sphere problem checked (api::check), its points normalised, and its frame at q0 (e1, e2).
-general::ErasedProblem<manifolds::Sphere> sphere_problem(const SphereProblem& problem, const Guess& guess,
-                                                         std::string_view where);
+/// The manifold problem checked (api::check), its points moved onto the quadric Q, and its frame
+/// at q0 (e1, e2), as the general problem on Q.
+template <int K>
+general::ErasedProblem<manifolds::Quadric<K>> quadric_problem(const ManifoldProblem& problem, const Guess& guess,
+                                                              std::string_view where);
+
+/// visit(the general problem of `problem` on its quadric), checked: "sphere" or "hyperbolic-plane",
+/// any other name refused by name.
+template <class Visitor>
+auto visit_manifold(const ManifoldProblem& problem, const Guess& guess, std::string_view where, Visitor&& visit) {
+  if (problem.manifold == manifolds::Sphere::name()) return visit(quadric_problem<1>(problem, guess, where));
+  if (problem.manifold == manifolds::HyperbolicPlane::name()) return visit(quadric_problem<-1>(problem, guess, where));
+  throw_invalid(where, "manifold", quote_input(problem.manifold), "is not one of: sphere, hyperbolic-plane");
+}
 
 /// The connection of a checked non-Cartan–Schouten group problem on G: Levi-Civita of the metric
 /// (the inertia when none is given), or the bilinear map alpha.

@@ -1,5 +1,5 @@
-// api::solve: the catalogue's model on its group through the kernel the connection allows, or the
-// sphere's particle (solve.hpp); every solve is the library's compiled one (transported/ and
+// api::solve: the catalogue's model on its group through the kernel the connection allows, or a
+// quadric's particle (solve.hpp); every solve is the library's compiled one (transported/ and
 // general/compiled.hpp), so this unit instantiates only the conversions to numbers.
 #include "problems.hpp"
 
@@ -76,13 +76,14 @@ Result solve(const GroupProblem& problem, const transported::SolveOptions& optio
   });
 }
 
-Result solve(const SphereProblem& problem, const transported::SolveOptions& options, const Guess& guess, std::string_view where) {
-  const general::ErasedProblem<manifolds::Sphere> sphere = detail::sphere_problem(problem, guess, where);
-  general::GeneralGuess<manifolds::Sphere> start;
-  if (!guess.v0.empty()) start.v0 = vector_of<Eigen::Vector2d>(guess.v0);
-  Result r = result_of<manifolds::Sphere>(general::solve(sphere, options, start));
-  r.frame0 = sphere.frame0->transpose();  // the rows e1, e2
-  return r;
+Result solve(const ManifoldProblem& problem, const transported::SolveOptions& options, const Guess& guess, std::string_view where) {
+  return detail::visit_manifold(problem, guess, where, [&]<class M>(const general::ErasedProblem<M>& quadric) {
+    general::GeneralGuess<M> start;
+    if (!guess.v0.empty()) start.v0 = vector_of<Eigen::Vector2d>(guess.v0);
+    Result r = result_of<M>(general::solve(quadric, options, start));
+    r.frame0 = quadric.frame0->transpose();  // the rows e1, e2
+    return r;
+  });
 }
 
 }  // namespace cartan::api

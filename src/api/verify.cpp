@@ -83,11 +83,12 @@ verify::Report verify(const GroupProblem& problem, const Samples& samples, int o
   });
 }
 
-verify::Report verify(const SphereProblem& problem, const Samples& samples, int order, double tol, Status status,
+verify::Report verify(const ManifoldProblem& problem, const Samples& samples, int order, double tol, Status status,
                       std::string_view where) {
-  const general::ErasedProblem<manifolds::Sphere> sphere = detail::sphere_problem(problem, {}, where);
-  check_samples(samples, 3, 2, 4, where);
-  return general::verify_general(sphere, general_trajectory<manifolds::Sphere>(samples), order, tol, status);
+  return detail::visit_manifold(problem, {}, where, [&]<class M>(const general::ErasedProblem<M>& quadric) {
+    check_samples(samples, M::kAmbientDim, M::kDim, M::kDim * M::kDim, where);
+    return general::verify_general(quadric, general_trajectory<M>(samples), order, tol, status);
+  });
 }
 
 }  // namespace cartan::api

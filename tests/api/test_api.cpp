@@ -76,7 +76,7 @@ TEST(Api, LeviCivitaOfTheBiInvariantMetricIsCartanSchoutenAtOneHalf) {
 TEST(Api, TheFreeParticleOnTheSphereFollowsTheGreatCircleAtConstantSpeed) {
   // l = 1/2 |v|^2 without gravity: a geodesic, the great circle from q0 to qT travelled at the
   // constant speed theta / T; v is its transported velocity in the frame e1 (towards qT), e2.
-  SphereProblem p;
+  ManifoldProblem p;
   p.q0 = {1, 0, 0};
   p.qT = {0, 2, 0};  // normalised by the library
   p.T = 2;
@@ -92,6 +92,39 @@ TEST(Api, TheFreeParticleOnTheSphereFollowsTheGreatCircleAtConstantSpeed) {
   EXPECT_NEAR((r.samples.points.row(p.N) - Eigen::RowVector3d(0, 1, 0)).norm(), 0, 1e-9);
   const verify::Report report = verify(p, r.samples, r.order, transported::kDefaultTol, r.status);
   EXPECT_TRUE(report.passed()) << report.text();
+}
+
+TEST(Api, TheFreeParticleOnTheHyperbolicPlaneFollowsTheGeodesicAtConstantSpeed) {
+  // On H^2 (the sheet z^2 - x^2 - y^2 = 1) the geodesic from the vertex q0 = (0, 0, 1) to
+  // qT = (sinh d, 0, cosh d) is q(t) = (sinh(d t/T), 0, cosh(d t/T)), travelled at speed d / T
+  // along e1 = (1, 0, 0), with e2 = J (q0 x e1) = (0, 1, 0). qT is given off the sheet (scaled by
+  // 3) and moved onto it.
+  const double d = 1.3;
+  ManifoldProblem p;
+  p.manifold = "hyperbolic-plane";
+  p.q0 = {0, 0, 1};
+  p.qT = {3 * std::sinh(d), 0, 3 * std::cosh(d)};
+  p.T = 2;
+  p.N = 40;
+  const Result r = solve(p);
+  ASSERT_TRUE(r.converged()) << r.message;
+  ASSERT_TRUE(r.frame0.has_value());
+  EXPECT_NEAR(((*r.frame0) - (Eigen::Matrix<double, 2, 3>() << 1, 0, 0, 0, 1, 0).finished()).cwiseAbs().maxCoeff(), 0, 1e-15);
+  // The pieces are geodesics, exact along a geodesic: only the shooting's tolerance remains.
+  EXPECT_NEAR((r.samples.v.col(0).array() - d / p.T).abs().maxCoeff(), 0, 1e-9);
+  EXPECT_NEAR(r.samples.v.col(1).cwiseAbs().maxCoeff(), 0, 1e-9);
+  for (int k = 0; k <= p.N; k += 8) {
+    const double s = d * r.samples.t[k] / p.T;
+    EXPECT_NEAR((r.samples.points.row(k) - Eigen::RowVector3d(std::sinh(s), 0, std::cosh(s))).norm(), 0, 1e-9) << k;
+  }
+  const verify::Report report = verify(p, r.samples, r.order, transported::kDefaultTol, r.status);
+  EXPECT_TRUE(report.passed()) << report.text();
+  EXPECT_NEAR(on_manifold(p).qT[2], std::cosh(d), 1e-15);
+  ManifoldProblem outside = p;
+  outside.qT = {2, 0, 1};  // z^2 < x^2 + y^2: outside the cone
+  testing::expect_invalid([&] { check(outside); }, {"qT = 2,0,1", "hyperbolic plane"});
+  outside.manifold = "torus";
+  testing::expect_invalid([&] { check(outside); }, {"manifold = \"torus\"", "sphere, hyperbolic-plane"});
 }
 
 TEST(Api, VerifyFailsSamplesThatAreNotASolution) {
@@ -118,7 +151,7 @@ TEST(Api, CheckRefusesWhatTheProblemTellsWrongButLeavesGroupMembershipToSolve) {
   testing::expect_invalid([&] { check(lc); }, {"metric = 1,2", "must have 3 numbers (the diagonal) or 9"});
   lc.metric.clear();  // the inertia
   EXPECT_NO_THROW(check(lc));
-  SphereProblem p;
+  ManifoldProblem p;
   p.q0 = {1, 0, 0};
   p.qT = {std::nan(""), 1, 0};
   testing::expect_invalid([&] { check(p); }, {"qT", "non-finite"});
@@ -147,11 +180,11 @@ TEST(Api, BadInputIsRefusedByName) {
                  {"xi0", "Lie-group kernel"});
   expect_invalid([&] { (void)solve(good, {}, {{1, 2}, {}}); }, {"v0", "must have 3"});
   expect_invalid([&] { (void)solve(with([](GroupProblem& p) { p.N = 0; })); }, "N");
-  SphereProblem antipodal;
+  ManifoldProblem antipodal;
   antipodal.q0 = {0, 0, 1};
   antipodal.qT = {0, 0, -3};
   expect_invalid([&] { (void)solve(antipodal); }, {"q0/qT", "antipodal"});
-  SphereProblem massless = antipodal;
+  ManifoldProblem massless = antipodal;
   massless.qT = {0, 1, 0};
   massless.mass = {1, 0};
   expect_invalid([&] { (void)solve(massless); }, {"mass", "positive"});

@@ -1,12 +1,14 @@
 #pragma once
 // The library's entry point for a problem described by names and numbers (DESIGN.md, layer
 // "api"): a built-in model of the catalogue (models/catalogue.hpp) on its group with a
-// left-invariant connection, or the particle on the sphere. The library decides what runs:
+// left-invariant connection, or a particle on the sphere or the hyperbolic plane. The library
+// decides what runs:
 //   - a Cartan–Schouten connection: the Lie-group kernel, the model's own compiled solve
 //     (transported/compiled.hpp: xi in g*, the paper's eq:reduced-system);
 //   - Levi-Civita of a left-invariant metric, or any bilinear map alpha: the general solve on
 //     GroupManifold<G> (general/compiled.hpp: the frame and Xi of eq:int-diff-EL);
-//   - the sphere: the general solve on S^2 with its Levi-Civita connection;
+//   - the sphere, the hyperbolic plane: the general solve on the quadric with its Levi-Civita
+//     connection;
 // and returns one Result in numbers and words, whichever ran. The CLI translates its flags and
 // files to these types and the Result to JSON; it names no solver, group type or model type.
 // Compiled once in the library target cartan::api (src/api/); this header declares only.
@@ -40,13 +42,19 @@ struct GroupProblem {
   std::vector<double> g0, gT;       ///< the elements' numbers (ModelInfo::element_what); g0 empty: the identity
 };
 
-/// The particle l = 1/2 (a1 v1^2 + a2 v2^2) - G z on the unit sphere with its Levi-Civita
-/// connection; v in the frame of T_{q0}S^2 with e1 the unit tangent at q0 along the minimal great
-/// circle towards qT and e2 = q0 x e1 (so q0 and qT may be neither equal nor antipodal).
-struct SphereProblem {
+/// The particle l = 1/2 (a1 v1^2 + a2 v2^2) - G z on a quadric of R^3 with its Levi-Civita
+/// connection (manifolds/quadric.hpp): the unit sphere (z^2 + x^2 + y^2 = 1) or the hyperbolic
+/// plane (the upper sheet of x^2 + y^2 - z^2 = -1, z > 0). v is in the frame of T_{q0}Q with e1
+/// the unit tangent at q0 along the minimal geodesic towards qT and e2 = J (q0 x e1), J = diag(1,
+/// 1, K) the metric (q0 x e1 on the sphere): so q0 and qT may not be equal, nor antipodal on the
+/// sphere.
+struct ManifoldProblem {
+  std::string manifold = "sphere";  ///< "sphere" or "hyperbolic-plane"
   std::vector<double> mass{1, 1};   ///< a1, a2 > 0
   double gravity = 0;               ///< G
-  std::vector<double> q0, qT;       ///< 3 numbers each, normalised onto the sphere
+  /// 3 numbers each, moved onto the quadric: divided by their length (the sphere) or by
+  /// sqrt(z^2 - x^2 - y^2) (the hyperbolic plane: z > 0 and z^2 > x^2 + y^2).
+  std::vector<double> q0, qT;
   double T = 1;
   int N = 100;
 };
@@ -96,18 +104,23 @@ inline bool lie_kernel(const GroupProblem& problem) {
 /// Throws std::invalid_argument "<where>: <name> = <value> <problem>" for what a problem and its
 /// guess tell wrong by themselves: unknown names, wrong sizes, non-finite numbers, an inertia the
 /// model refuses, a metric that is not symmetric positive definite, connection data of another
-/// connection, a guess of xi for the general solver; on the sphere, a mass that is not positive,
-/// points of zero length, and q0, qT equal or antipodal. Not that g0 and gT are elements of the
+/// connection, a guess of xi for the general solver; on a manifold, an unknown manifold, a mass
+/// that is not positive, points that cannot be moved onto it, and q0, qT equal (or antipodal on
+/// the sphere). Not that g0 and gT are elements of the
 /// group: solve checks that (so that a sweep reports such a point as its own row), nor the options.
 void check(const GroupProblem& problem, const Guess& guess = {}, std::string_view where = "cartan::api::check");
-void check(const SphereProblem& problem, const Guess& guess = {}, std::string_view where = "cartan::api::check");
+void check(const ManifoldProblem& problem, const Guess& guess = {}, std::string_view where = "cartan::api::check");
+
+/// The problem with q0 and qT moved onto the manifold (as solve does; check() first): what a caller
+/// echoes as the points it solved between.
+ManifoldProblem on_manifold(const ManifoldProblem& problem, std::string_view where = "cartan::api::on_manifold");
 
 /// Solves `problem` as `options` say. Throws std::invalid_argument "<where>: <name> = <value>
 /// <problem>" for what check() refuses, boundary data that are not elements of the group, and
 /// whatever the solver's validation refuses (options, T, N); numerical failure is a status.
 Result solve(const GroupProblem& problem, const transported::SolveOptions& options = {}, const Guess& guess = {},
              std::string_view where = "cartan::api::solve");
-Result solve(const SphereProblem& problem, const transported::SolveOptions& options = {}, const Guess& guess = {},
+Result solve(const ManifoldProblem& problem, const transported::SolveOptions& options = {}, const Guess& guess = {},
              std::string_view where = "cartan::api::solve");
 
 /// Every check of verify/ on `samples` as a solution of `problem` by a method of the given order
@@ -116,7 +129,7 @@ Result solve(const SphereProblem& problem, const transported::SolveOptions& opti
 /// are read as they are (not projected onto the group): the checks see the data.
 verify::Report verify(const GroupProblem& problem, const Samples& samples, int order, double tol,
                       Status status = Status::Converged, std::string_view where = "cartan::api::verify");
-verify::Report verify(const SphereProblem& problem, const Samples& samples, int order, double tol,
+verify::Report verify(const ManifoldProblem& problem, const Samples& samples, int order, double tol,
                       Status status = Status::Converged, std::string_view where = "cartan::api::verify");
 
 }  // namespace cartan::api
