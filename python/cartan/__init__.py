@@ -481,6 +481,14 @@ class GeneralSolveResult(Result):
     max_residual: Optional[float] = None
     space: Any = field(default=None, repr=False, compare=False)
 
+    def __getstate__(self):
+        """Pickling keeps every array and word but not `space` (a manifold with Python callbacks,
+        a Chart, cannot be pickled): a result that travelled has `space` None; set it to the
+        manifold again for :meth:`sol`."""
+        state = dict(self.__dict__)
+        state["space"] = None
+        return state
+
     def sol(self, t):
         """Dense output: the solution at the time or times `t` in [t_0, t_N] = [0, T] (outside:
         ValueError) on the manifold it was solved on (`space`), as a :class:`cartan._results.GeneralState`

@@ -730,3 +730,17 @@ def test_sol_of_a_general_collocation_result_has_scipys_splines():
     assert np.max(np.abs(s.v - CubicSpline(r.t, r.v, axis=0)(points))) < 1e-12
     assert np.max(np.abs(s.mu - CubicSpline(r.t, r.mu, axis=0)(points))) < 1e-12
     assert np.allclose(np.linalg.norm(s.q, axis=1), 1, atol=1e-14)  # on the sphere
+
+
+def test_a_general_result_pickles_without_its_manifold():
+    # A result travels (pickle, processes) with its arrays; its manifold, which may hold Python
+    # callbacks (a Chart), stays behind: sol then asks for it by name.
+    import pickle
+    r = cartan.solve_general(Sphere(), gravity=1.0, **SPHERE_ARGS)
+    back = pickle.loads(pickle.dumps(r))
+    assert back.space is None and r.space is not None
+    assert np.array_equal(back.q, r.q) and back.status == r.status
+    with pytest.raises(ValueError, match="space = None"):
+        back.sol(0.5)
+    back.space = Sphere()
+    assert np.array_equal(back.sol(0.5).q, r.sol(0.5).q)
