@@ -82,8 +82,8 @@ struct Result {
   int order = 1;
   std::string branch;
   bool lie_kernel = false;   ///< the auxiliary is xi (n numbers a row); else Xi (n^2)
-  Samples samples;           ///< empty when the solve was interrupted
-  std::optional<Eigen::MatrixXd> frame0;  ///< the sphere: the rows e1, e2 of its frame at q0
+  Samples samples;           ///< the solution; at a failure the best iterate of the requested problem, or no rows
+  std::optional<Eigen::MatrixXd> frame0;  ///< a manifold problem: the rows e1, e2 of its frame at q0
   double terminal_error = 0;
   double xi_terminal = 0;
   std::optional<double> action;  ///< the Lie-group kernel's discrete action S_h (NaN where it has none)
