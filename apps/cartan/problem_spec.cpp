@@ -336,8 +336,8 @@ void validate_manifold_problem(ProblemSpec& spec) {
   if (spec.mass.empty()) spec.mass = {1, 1};
   if (spec.q0.empty()) bad("q0", "(missing)", "is required for " + kind);
   if (spec.qT.empty()) bad("qT", "(missing)", "is required for " + kind);
-  api::check(manifold_problem(spec), {spec.v0, spec.xi0}, kWhere);  // mass, q0, qT, v0: the library's checks
-  const api::ManifoldProblem on = api::on_manifold(manifold_problem(spec), kWhere);  // echoed on the manifold
+  // mass, q0, qT, v0: the library's checks; q0 and qT echoed on the manifold
+  const api::ManifoldProblem on = api::on_manifold(manifold_problem(spec), {spec.v0, spec.xi0}, kWhere);
   spec.q0 = on.q0;
   spec.qT = on.qT;
 }

@@ -177,9 +177,9 @@ void check(const ManifoldProblem& problem, const Guess& guess, std::string_view 
   (void)detail::visit_manifold(problem, guess, where, [](const auto&) { return 0; });
 }
 
-ManifoldProblem on_manifold(const ManifoldProblem& problem, std::string_view where) {
+ManifoldProblem on_manifold(const ManifoldProblem& problem, const Guess& guess, std::string_view where) {
   ManifoldProblem out = problem;
-  detail::visit_manifold(problem, {}, where, [&](const auto& quadric) {
+  detail::visit_manifold(problem, guess, where, [&](const auto& quadric) {
     out.q0.assign(quadric.q0.data(), quadric.q0.data() + 3);
     out.qT.assign(quadric.qT.data(), quadric.qT.data() + 3);
     return 0;

@@ -24,9 +24,10 @@ GeneralDenseSamples<M> dense_output(const M& manifold, const GeneralTrajectory<M
   }
   GeneralDenseSamples<M> out;
   for (double t : times) {
-    const auto [k, s, h] = numerics::locate_dense_step(x.t, t);
-    if (s == 0 || s == 1) {  // a node: its sample, exactly
-      const std::size_t node = k + (s == 1 ? 1 : 0);
+    const numerics::DenseStep place = numerics::locate_dense_step(x.t, t);
+    const auto [k, s, h] = place;
+    if (place.at_node()) {
+      const std::size_t node = place.node();
       out.q.push_back(x.q[node]), out.frame.push_back(x.frame[node]), out.v.push_back(x.v[node]);
       out.mu.push_back(x.mu[node]), out.Xi.push_back(x.Xi[node]);
       continue;
@@ -47,9 +48,9 @@ GeneralDenseSamples<M> dense_output(const M& manifold, const GeneralTrajectory<M
       const Matrix d0 = -x.v[k] * x.mu[k].transpose(), d1 = -x.v[k + 1] * x.mu[k + 1].transpose();  // Xi' = -v mu^T
       out.Xi.push_back(numerics::hermite_at<Matrix>(s, h, x.Xi[k], x.Xi[k + 1], d0, d1));
     } else {
-      out.v.push_back((1 - s) * x.v[k] + s * x.v[k + 1]);
-      out.mu.push_back((1 - s) * x.mu[k] + s * x.mu[k + 1]);
-      out.Xi.push_back((1 - s) * x.Xi[k] + s * x.Xi[k + 1]);
+      out.v.push_back(place.linear(x.v[k], x.v[k + 1]));
+      out.mu.push_back(place.linear(x.mu[k], x.mu[k + 1]));
+      out.Xi.push_back(place.linear(x.Xi[k], x.Xi[k + 1]));
     }
   }
   return out;

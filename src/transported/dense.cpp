@@ -40,9 +40,10 @@ DenseSamples<G> dense_output(const TransportedTrajectory<G>& x, double lambda, M
   DenseSamples<G> out;
   out.g.reserve(times.size()), out.v.reserve(times.size()), out.mu.reserve(times.size()), out.xi.reserve(times.size());
   for (double t : times) {
-    const auto [k, s, h] = numerics::locate_dense_step(x.t, t);
-    if (s == 0 || s == 1) {  // a node: its sample, exactly
-      const std::size_t node = k + (s == 1 ? 1 : 0);
+    const numerics::DenseStep place = numerics::locate_dense_step(x.t, t);
+    const auto [k, s, h] = place;
+    if (place.at_node()) {
+      const std::size_t node = place.node();
       out.g.push_back(x.g[node]), out.v.push_back(x.v[node]), out.mu.push_back(x.mu[node]), out.xi.push_back(x.xi[node]);
       continue;
     }
@@ -56,9 +57,9 @@ DenseSamples<G> dense_output(const TransportedTrajectory<G>& x, double lambda, M
       out.mu.push_back(mu_spline.value_on(static_cast<Eigen::Index>(k), t));
     } else {
       chart = s * step;
-      out.xi.push_back((1 - s) * x.xi[k] + s * x.xi[k + 1]);
-      out.v.push_back((1 - s) * x.v[k] + s * x.v[k + 1]);
-      out.mu.push_back((1 - s) * x.mu[k] + s * x.mu[k + 1]);
+      out.xi.push_back(place.linear(x.xi[k], x.xi[k + 1]));
+      out.v.push_back(place.linear(x.v[k], x.v[k + 1]));
+      out.mu.push_back(place.linear(x.mu[k], x.mu[k + 1]));
     }
     out.g.push_back(G::compose(x.g[k], G::exp(chart)));
   }

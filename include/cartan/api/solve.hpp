@@ -111,9 +111,10 @@ inline bool lie_kernel(const GroupProblem& problem) {
 void check(const GroupProblem& problem, const Guess& guess = {}, std::string_view where = "cartan::api::check");
 void check(const ManifoldProblem& problem, const Guess& guess = {}, std::string_view where = "cartan::api::check");
 
-/// The problem with q0 and qT moved onto the manifold (as solve does; check() first): what a caller
-/// echoes as the points it solved between.
-ManifoldProblem on_manifold(const ManifoldProblem& problem, std::string_view where = "cartan::api::on_manifold");
+/// check(problem, guess), then the problem with q0 and qT moved onto the manifold as solve moves
+/// them: what a caller echoes as the points it solved between.
+ManifoldProblem on_manifold(const ManifoldProblem& problem, const Guess& guess = {},
+                            std::string_view where = "cartan::api::on_manifold");
 
 /// Solves `problem` as `options` say. Throws std::invalid_argument "<where>: <name> = <value>
 /// <problem>" for what check() refuses, boundary data that are not elements of the group, and

@@ -32,6 +32,14 @@ inline void check_dense_times(const std::vector<double>& nodes, const std::vecto
 struct DenseStep {
   std::size_t k = 0;
   double s = 0, h = 0;
+  /// At a node (s = 0 or 1) the dense outputs return the sample itself, exactly: its index.
+  bool at_node() const { return s == 0 || s == 1; }
+  std::size_t node() const { return k + (s == 1 ? 1 : 0); }
+  /// The straight line from a (s = 0) to b (s = 1).
+  template <class V>
+  V linear(const V& a, const V& b) const {
+    return ((1 - s) * a + s * b).eval();
+  }
 };
 
 inline DenseStep locate_dense_step(const std::vector<double>& nodes, double t) {
