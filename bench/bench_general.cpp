@@ -34,7 +34,7 @@ const Eigen::Vector3d kV0(-0.28, 0.02, 0.02);
 
 void BM_Sweep_LieGroupScheme(benchmark::State& state) {
   const transported::TransportedScheme<groups::SO3, mechanics::RigidBody> scheme(testing::paper_free_body(kLambda, 1000, 5),
-                                                                                 transported::SchemeOrder::First);
+                                                                                 cartan::SchemeOrder::First);
   for (auto _ : state) {
     transported::SweepOutput<groups::SO3, mechanics::RigidBody> out;
     if (!transported::forward_sweep(scheme, kV0, Eigen::Vector3d::Zero(), nullptr, 0, out)) state.SkipWithError(out.failure.c_str());
@@ -44,7 +44,7 @@ void BM_Sweep_LieGroupScheme(benchmark::State& state) {
 
 template <class M>
 void sweep_general(benchmark::State& state, const M& manifold) {
-  const general::GeneralScheme<M, general::KineticPotential<M>> scheme(general_problem(manifold), transported::SchemeOrder::First);
+  const general::GeneralScheme<M, general::KineticPotential<M>> scheme(general_problem(manifold), cartan::SchemeOrder::First);
   std::string failure;
   for (auto _ : state) {
     const auto last = general::general_sweep(scheme, kV0, Eigen::Matrix3d::Zero().eval(), failure);
@@ -60,7 +60,7 @@ void BM_Sweep_GeneralRecomputedComponents(benchmark::State& state) {
 void BM_TangentSweep_GeneralFastPath(benchmark::State& state) {
   using L = general::KineticPotential<SO3Manifold>;
   const general::GeneralScheme<SO3Manifold, L> scheme(general_problem(SO3Manifold::cartan_schouten(kLambda)),
-                                                      transported::SchemeOrder::First);
+                                                      cartan::SchemeOrder::First);
   const general::GeneralSchemeTangent<SO3Manifold, L> tangent(scheme);
   std::string failure;
   Eigen::MatrixXd jacobian;
@@ -84,7 +84,7 @@ void BM_Solve_LieGroupShooting(benchmark::State& state) {
 template <class M>
 void solve_general(benchmark::State& state, const M& manifold) {
   const auto p = general_problem(manifold);
-  transported::ShootingOptions options;
+  cartan::ShootingOptions options;
   options.tolerance = 1e-10;
   options.analytic_jacobian = state.range(0) == 1;
   for (auto _ : state) {
@@ -104,8 +104,8 @@ void BM_Solve_GeneralShootingLeviCivita(benchmark::State& state) {
 /// one when L is the erased Lagrangian (general/compiled.hpp).
 template <class L>
 void solve_with(benchmark::State& state, const general::GeneralProblem<SO3Manifold, L>& p) {
-  transported::SolveOptions options;
-  options.method = transported::Method::Shooting;
+  cartan::SolveOptions options;
+  options.method = cartan::Method::Shooting;
   for (auto _ : state) {
     const auto s = general::solve(p, options);
     if (!s.converged()) state.SkipWithError(s.message.c_str());

@@ -49,9 +49,9 @@ cartan::general::ErasedProblem<Sphere> problem(const cartan::general::ErasedLagr
           std::nullopt};
 }
 
-cartan::transported::SolveOptions second_order() {
-  cartan::transported::SolveOptions options;
-  options.order = cartan::transported::SchemeOrder::Second;
+cartan::SolveOptions second_order() {
+  cartan::SolveOptions options;
+  options.order = cartan::SchemeOrder::Second;
   options.tol = 1e-12;
   return options;
 }

@@ -82,7 +82,7 @@ std::vector<ProblemField> make_fields() {
       {"a0", &S::a0, "so3: initial direction; gT = minimal rotation taking a0 to aT", false, nullptr, ProblemField::Scope::Group},
       {"aT", &S::aT, "so3: final direction", false, nullptr, ProblemField::Scope::Group},
       {"method", &S::method,
-       enum_choices<transported::Method>() +
+       enum_choices<cartan::Method>() +
            " (default auto: a strategy that tries shooting, continuation in T and in lambda, "
            "collocation and multiple shooting in turn and stops at the first success; shooting: "
            "augmented shooting with an analytic Jacobian; multiple-shooting: lifted LM over --segments "
@@ -91,7 +91,7 @@ std::vector<ProblemField> make_fields() {
            "second order, dense, for N up to a few hundred)",
        false, nullptr, ProblemField::Scope::Any},
       {"continuation", &S::continuation,
-       enum_choices<transported::Continuation>() +
+       enum_choices<cartan::Continuation>() +
            " (default none). shooting: how to reach a problem that fails from the guess (T: from a "
            "shorter horizon; lambda: from the lambda = 0 solution); so3 collocation: where to start "
            "when Newton from the geodesic guess fails (from that order-2 shooting solution)",
@@ -101,12 +101,12 @@ std::vector<ProblemField> make_fields() {
       {"segments", &S::segments, "multiple-shooting only: number of segments (default about 100 steps each, at most 16)",
        false, non_negative, ProblemField::Scope::Group},
       {"order", &S::order, "1 (the paper's scheme) | 2 (second order) (default 1)", false, one_or_two, ProblemField::Scope::Any},
-      {"tol", &S::tol, "tolerance (default " + format_value(transported::kDefaultTol) + ")", true, positive_finite,
+      {"tol", &S::tol, "tolerance (default " + format_value(cartan::kDefaultTol) + ")", true, positive_finite,
        ProblemField::Scope::Any},
       {"samples", &S::samples, "collocation only: output at this many uniform times on [0, T] (0: the final mesh)",
        false, non_negative, ProblemField::Scope::Any},
       {"max_iterations", &S::max_iterations,
-       "iteration limit of each loop (default " + std::to_string(transported::kDefaultMaxIterations) + ")", false,
+       "iteration limit of each loop (default " + std::to_string(cartan::kDefaultMaxIterations) + ")", false,
        at_least_one, ProblemField::Scope::Any},
       {"time_limit", &S::time_limit,
        "seconds the whole solve may take, every method and attempt (default 0: no limit); past it the running method "
@@ -270,9 +270,9 @@ std::vector<double> read_alpha(const std::string& path, std::size_t n) {
 }
 
 /// --samples: with --method collocation only, 0 or at least 2, within the memory limit.
-void check_samples(const ProblemSpec& spec, transported::Method method) {
+void check_samples(const ProblemSpec& spec, cartan::Method method) {
   require_memory("samples", spec.samples, kBytesPerNode * spec.samples, "the sampled output, ~1 KiB per sample");
-  if (spec.samples != 0 && method != transported::Method::Collocation) {
+  if (spec.samples != 0 && method != cartan::Method::Collocation) {
     bad("samples", std::to_string(spec.samples), "is an option of --method collocation only");
   }
   if (spec.samples == 1) bad("samples", "1", "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");
@@ -281,16 +281,16 @@ void check_samples(const ProblemSpec& spec, transported::Method method) {
 /// The general solver's methods (general/solve.hpp): auto, shooting, collocation; continuation
 /// none or T, with shooting and collocation only.
 void check_general_method(const ProblemSpec& spec, const std::string& problem) {
-  const transported::Method method = parse_enum<transported::Method>(spec.method, "cartan solve");
-  if (method != transported::Method::Auto && method != transported::Method::Shooting &&
-      method != transported::Method::Collocation) {
+  const cartan::Method method = parse_enum<cartan::Method>(spec.method, "cartan solve");
+  if (method != cartan::Method::Auto && method != cartan::Method::Shooting &&
+      method != cartan::Method::Collocation) {
     bad("method", quote_input(spec.method), "is not a method of " + problem + " (methods: auto, shooting, collocation)");
   }
-  const transported::Continuation continuation = parse_enum<transported::Continuation>(spec.continuation, "cartan solve");
-  if (continuation == transported::Continuation::Lambda) {
+  const cartan::Continuation continuation = parse_enum<cartan::Continuation>(spec.continuation, "cartan solve");
+  if (continuation == cartan::Continuation::Lambda) {
     bad("continuation", quote_input(spec.continuation), "is not an option of " + problem + " (none, T)");
   }
-  if (continuation != transported::Continuation::None && method == transported::Method::Auto) {
+  if (continuation != cartan::Continuation::None && method == cartan::Method::Auto) {
     bad("continuation", quote_input(spec.continuation), "is an option of --method shooting and collocation only");
   }
   check_samples(spec, method);
@@ -352,20 +352,20 @@ void validate(ProblemSpec& spec) {
   const models::ModelInfo& model = models::find_model(spec.group, spec.model, kWhere);
   spec.model = model.model;
   const std::size_t n = static_cast<std::size_t>(model.dim);
-  const transported::Method method = parse_enum<transported::Method>(spec.method, "cartan solve");
-  const transported::Continuation continuation = parse_enum<transported::Continuation>(spec.continuation, "cartan solve");
-  if (continuation != transported::Continuation::None && method != transported::Method::Shooting && method != transported::Method::Collocation) {
+  const cartan::Method method = parse_enum<cartan::Method>(spec.method, "cartan solve");
+  const cartan::Continuation continuation = parse_enum<cartan::Continuation>(spec.continuation, "cartan solve");
+  if (continuation != cartan::Continuation::None && method != cartan::Method::Shooting && method != cartan::Method::Collocation) {
     bad("continuation", quote_input(spec.continuation), "is an option of --method shooting and collocation only");
   }
   if ((!spec.v0.empty() || !spec.xi0.empty()) &&
-      (method == transported::Method::Collocation || method == transported::Method::Variational)) {
+      (method == cartan::Method::Collocation || method == cartan::Method::Variational)) {
     bad(spec.v0.empty() ? "xi0" : "v0", excerpt(spec.v0.empty() ? spec.xi0 : spec.v0),
         "is a guess for the shooting methods, not for --method " + spec.method);
   }
-  if (spec.order != 1 && method == transported::Method::Variational) {
+  if (spec.order != 1 && method == cartan::Method::Variational) {
     bad("order", std::to_string(spec.order), "is an option of the shooting methods' schemes; --method variational is second order");
   }
-  if (!spec.xi0.empty() && method == transported::Method::TwoLevel) {
+  if (!spec.xi0.empty() && method == cartan::Method::TwoLevel) {
     bad("xi0", excerpt(spec.xi0), "is not a guess of --method two-level (its xi starts at 0)");
   }
   for (const auto& field : problem_fields()) check_field(spec, field, kWhere);
@@ -376,7 +376,7 @@ void validate(ProblemSpec& spec) {
   check_samples(spec, method);
   require_memory("segments", spec.segments, kBytesPerSegmentSquared * spec.segments * spec.segments,
                  "the dense multiple-shooting Jacobian");
-  if (spec.segments != 0 && method != transported::Method::MultipleShooting) {
+  if (spec.segments != 0 && method != cartan::Method::MultipleShooting) {
     bad("segments", std::to_string(spec.segments), "is an option of --method multiple-shooting only");
   }
   if (spec.inertia.empty()) spec.inertia = model.default_inertia;

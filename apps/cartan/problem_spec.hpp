@@ -32,12 +32,12 @@ struct ProblemSpec {
   std::vector<double> a0, aT;           ///< so3 only: gT = minimal rotation taking a0 to aT
   std::string method = "auto";          ///< a Method word (transported/method.hpp): auto | shooting | multiple-shooting | two-level | collocation | variational
   int order = 1;
-  double tol = transported::kDefaultTol;
+  double tol = cartan::kDefaultTol;
   int samples = 0;                      ///< collocation: output at this many uniform times (0: the final mesh)
   std::string continuation = "none";    ///< a Continuation word: none | T | lambda (shooting and collocation only)
   std::vector<double> v0, xi0;          ///< optional guesses of v(0) and xi(0) (n numbers each)
   int segments = 0;                     ///< multiple shooting: number of segments (0: default_segments(N))
-  int max_iterations = transported::kDefaultMaxIterations;
+  int max_iterations = cartan::kDefaultMaxIterations;
   double time_limit = 0;                ///< seconds; 0: no limit
   std::string output;                   ///< empty: stdout
   std::vector<double> mass;             ///< manifold: a1, a2 of l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1, 1)

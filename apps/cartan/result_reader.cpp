@@ -142,7 +142,7 @@ ResultFile read(const nlohmann::json& j) {
   ResultFile r;
   r.status = one_of(require_key(j, "status", kResultWhere, kResultFile), "status", enum_words<Status>());
   const auto read_method_and_order = [&] {
-    r.method = one_of(require_key(j, "method", kResultWhere, kResultFile), "method", enum_words<transported::Method>());
+    r.method = one_of(require_key(j, "method", kResultWhere, kResultFile), "method", enum_words<cartan::Method>());
     r.order = json_integer(require_key(j, "order", kResultWhere, kResultFile), kResultWhere, "order");
     if (!is_result_order(r.order)) bad_result("order", std::to_string(r.order), kResultOrderRule);
   };

@@ -57,11 +57,11 @@ void add_connection(nlohmann::json& out, const ProblemSpec& spec) {
 
 }  // namespace
 
-transported::SolveOptions solve_options(const ProblemSpec& spec) {
-  transported::SolveOptions options;
-  options.method = parse_enum<transported::Method>(spec.method, "cartan solve");
-  options.continuation = parse_enum<transported::Continuation>(spec.continuation, "cartan solve");
-  options.order = spec.order == 2 ? transported::SchemeOrder::Second : transported::SchemeOrder::First;
+cartan::SolveOptions solve_options(const ProblemSpec& spec) {
+  cartan::SolveOptions options;
+  options.method = parse_enum<cartan::Method>(spec.method, "cartan solve");
+  options.continuation = parse_enum<cartan::Continuation>(spec.continuation, "cartan solve");
+  options.order = spec.order == 2 ? cartan::SchemeOrder::Second : cartan::SchemeOrder::First;
   options.tol = spec.tol;
   options.max_iterations = spec.max_iterations;
   if (spec.time_limit > 0) options.time_limit = spec.time_limit;
@@ -78,7 +78,7 @@ SO3Endpoints so3_endpoints(const ProblemSpec& spec) {
 }
 
 nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor) {
-  transported::SolveOptions options = solve_options(spec);
+  cartan::SolveOptions options = solve_options(spec);
   options.monitor = monitor;
   const api::Guess guess{spec.v0, spec.xi0};
   return result_json(spec, is_manifold_problem(spec) ? api::solve(manifold_problem(spec), options, guess, kSolveCommandWhere)

@@ -21,7 +21,7 @@ struct SO3Endpoints {
 SO3Endpoints so3_endpoints(const ProblemSpec& spec);
 
 /// The library's SolveOptions of a validated spec (method, continuation, order, tol, ...).
-transported::SolveOptions solve_options(const ProblemSpec& spec);
+cartan::SolveOptions solve_options(const ProblemSpec& spec);
 
 /// Solves a validated spec with the library's api::solve. The JSON (result_json) has status,
 /// message, the echoed problem, method, order, branch, connection, t, g (q on a manifold), v, mu,

@@ -269,7 +269,7 @@ void bind_bvp(py::module_& m) {
     callbacks->k = static_cast<int>(parameters.size());
     double seconds = 0;
     const numerics::BvpResult r = run_with_callbacks(callbacks->state, [&] {
-      return transported::timed(seconds, [&] { return numerics::solve_collocation(python_system(callbacks), mesh, guess, parameters, options); });
+      return cartan::timed(seconds, [&] { return numerics::solve_collocation(python_system(callbacks), mesh, guess, parameters, options); });
     });
     return result_dict(r, seconds);
   }, py::arg("fun"), py::arg("bc"), py::arg("x"), py::arg("y"), py::arg("p"), py::arg("fun_jac"), py::arg("bc_jac"),

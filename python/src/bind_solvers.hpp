@@ -58,18 +58,18 @@ struct SolveRequest {
   std::string method = "auto";
   std::string continuation = "none";
   int order = 1;
-  double tol = transported::kDefaultTol;
-  int max_iterations = transported::kDefaultMaxIterations;
+  double tol = cartan::kDefaultTol;
+  int max_iterations = cartan::kDefaultMaxIterations;
   std::optional<int> segments;
   std::optional<double> lambda_start;
   std::optional<int> samples;
   std::optional<int> max_nodes;
   std::optional<double> time_limit;
 
-  transported::SolveOptions options() const {
-    transported::SolveOptions o;
-    o.method = parse_enum<transported::Method>(method, "cartan.solve");
-    o.continuation = parse_enum<transported::Continuation>(continuation, "cartan.solve");
+  cartan::SolveOptions options() const {
+    cartan::SolveOptions o;
+    o.method = parse_enum<cartan::Method>(method, "cartan.solve");
+    o.continuation = parse_enum<cartan::Continuation>(continuation, "cartan.solve");
     o.order = scheme_order(order, "cartan.solve");
     o.tol = tol;
     o.max_iterations = max_iterations;
@@ -178,7 +178,7 @@ py::dict solution_dict(transported::TransportedSolution<G>&& s, const std::strin
 /// The arguments of `<Group>._solve` converted for the library (everything but the model).
 template <groups::LieGroup G>
 struct SolveCall {
-  transported::SolveOptions options;
+  cartan::SolveOptions options;
   transported::SolveGuess<G> guess;
   groups::ElementOf<G> g0, gT;
 
@@ -200,7 +200,7 @@ struct SolveCall {
 template <groups::LieGroup G, class... Models>
 void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...>) {
   const Args<G> a{name};
-  group.attr("methods") = enum_words<transported::Method>();
+  group.attr("methods") = enum_words<cartan::Method>();
   // `<Group>.<entry>(lagrangian, lam, T, N, g0, gT, request, v0, xi0, guess, progress)`: run(problem,
   // call) for the problem of the model, built-in (then without the GIL) or Python-defined, and
   // reply(its value, call, lambda, T, N) with the GIL.
@@ -267,7 +267,7 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
     const transported::TransportedTrajectory<G> x = trajectory_of<G>(result, a, "sol", "result", true);
     const Array t = as_array(times, a.group + ".sol", "t");
     transported::DenseSamples<G> d = transported::dense_output<G>(
-        x, lambda, parse_enum<transported::Method>(method, "SolveResult.sol"), std::vector<double>(t.data(), t.data() + t.size()),
+        x, lambda, parse_enum<cartan::Method>(method, "SolveResult.sol"), std::vector<double>(t.data(), t.data() + t.size()),
         "SolveResult.sol");
     py::dict out;
     out["g"] = to_numpy(std::move(d.g));

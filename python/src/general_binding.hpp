@@ -226,7 +226,7 @@ void def_manifold_methods(py::class_<Holder>& cls, const std::string& name) {
       constexpr const char* where = "GeneralSolveResult.sol";
       auto x = trajectory_of(m, result, where, "result");
       const Array t = as_array(times, where, "t");
-      auto d = general::dense_output(m, x, parse_enum<transported::Method>(method, where),
+      auto d = general::dense_output(m, x, parse_enum<cartan::Method>(method, where),
                                      std::vector<double>(t.data(), t.data() + t.size()), where);
       py::dict out;
       out["q"] = to_numpy(std::move(d.q));
@@ -321,8 +321,8 @@ struct GeneralRequest {
              potential_gradient = py::none(), gravity = py::none(), lagrangian = py::none(), frame0 = py::none();
   std::string method = "auto", continuation = "none";
   int order = 1;
-  double tol = transported::kDefaultTol;
-  int max_iterations = transported::kDefaultMaxIterations;
+  double tol = cartan::kDefaultTol;
+  int max_iterations = cartan::kDefaultMaxIterations;
   py::object v0 = py::none(), Xi0 = py::none(), progress = py::none();
   int samples = 0;
   py::object max_nodes = py::none(), guess = py::none(), time_limit = py::none();
@@ -461,9 +461,9 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
                   point_arg(manifold, r.q0, where, "q0"), point_arg(manifold, r.qT, where, "qT"), std::nullopt};
   if (!r.frame0.is_none()) problem.frame0 = to_eigen<FrameOf<M>>(r.frame0, where, "frame0");
 
-  transported::SolveOptions options;
-  options.method = parse_enum<transported::Method>(r.method, where);
-  options.continuation = parse_enum<transported::Continuation>(r.continuation, where);
+  cartan::SolveOptions options;
+  options.method = parse_enum<cartan::Method>(r.method, where);
+  options.continuation = parse_enum<cartan::Continuation>(r.continuation, where);
   options.order = scheme_order(r.order, where);
   options.tol = r.tol;
   options.max_iterations = r.max_iterations;

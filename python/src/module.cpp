@@ -143,8 +143,8 @@ PYBIND11_MODULE(_cartan, m) {
       .def_readwrite("time_limit", &cartan::python::SolveRequest::time_limit);
   m.attr("statuses") = cartan::enum_words<cartan::Status>();
   // The library's defaults (transported/method.hpp), which cartan.solve and solve_general take.
-  m.attr("defaults") = pybind11::dict(pybind11::arg("tol") = cartan::transported::kDefaultTol,
-                                      pybind11::arg("max_iterations") = cartan::transported::kDefaultMaxIterations);
+  m.attr("defaults") = pybind11::dict(pybind11::arg("tol") = cartan::kDefaultTol,
+                                      pybind11::arg("max_iterations") = cartan::kDefaultMaxIterations);
   // The library's catalogue of built-in models (models/catalogue.hpp): what result files and the
   // CLI call them, and which class each is (cartan._results.BUILTIN_MODELS).
   pybind11::list models;

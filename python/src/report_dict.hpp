@@ -71,7 +71,7 @@ inline mechanics::CheckReport check_report_of(const std::string& title, const py
 }
 
 /// mesh_size and max_residual of a collocation result, None for the other methods.
-inline void add_collocation_fields(py::dict& d, const std::optional<transported::CollocationReport>& report) {
+inline void add_collocation_fields(py::dict& d, const std::optional<cartan::CollocationReport>& report) {
   d["mesh_size"] = report ? py::object(py::int_(report->mesh_size)) : py::object(py::none());
   d["max_residual"] = report ? py::object(py::float_(report->max_residual)) : py::object(py::none());
 }

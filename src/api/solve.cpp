@@ -56,7 +56,7 @@ Vector vector_of(const std::vector<double>& x) {
 
 }  // namespace
 
-Result solve(const GroupProblem& problem, const transported::SolveOptions& options, const Guess& guess, std::string_view where) {
+Result solve(const GroupProblem& problem, const cartan::SolveOptions& options, const Guess& guess, std::string_view where) {
   const detail::CheckedGroupProblem checked = detail::checked(problem, guess, true, where);
   return models::visit_model(problem.group, problem.model, where, [&]<class Entry>(const Entry&) {
     using G = typename Entry::Table::Group;
@@ -76,7 +76,7 @@ Result solve(const GroupProblem& problem, const transported::SolveOptions& optio
   });
 }
 
-Result solve(const ManifoldProblem& problem, const transported::SolveOptions& options, const Guess& guess, std::string_view where) {
+Result solve(const ManifoldProblem& problem, const cartan::SolveOptions& options, const Guess& guess, std::string_view where) {
   return detail::visit_manifold(problem, guess, where, [&]<class M>(const general::ErasedProblem<M>& quadric) {
     general::GeneralGuess<M> start;
     if (!guess.v0.empty()) start.v0 = vector_of<Eigen::Vector2d>(guess.v0);

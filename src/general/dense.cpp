@@ -10,12 +10,12 @@
 namespace cartan::general {
 
 template <manifolds::ManifoldWithConnection M>
-GeneralDenseSamples<M> dense_output(const M& manifold, const GeneralTrajectory<M>& x, transported::Method method,
+GeneralDenseSamples<M> dense_output(const M& manifold, const GeneralTrajectory<M>& x, cartan::Method method,
                                     const std::vector<double>& times, std::string_view where) {
   using Matrix = manifolds::ComponentMatrixOf<M>;
   numerics::check_dense_times(x.t, times, where);
   const std::size_t m = x.t.size();
-  const bool collocation = method == transported::Method::Collocation;
+  const bool collocation = method == cartan::Method::Collocation;
   numerics::CubicHermite v_spline, mu_spline;
   if (collocation) {
     const Eigen::Map<const Eigen::VectorXd> nodes(x.t.data(), static_cast<Eigen::Index>(m));
@@ -57,7 +57,7 @@ GeneralDenseSamples<M> dense_output(const M& manifold, const GeneralTrajectory<M
 }
 
 #define CARTAN_GENERAL_DENSE(M)                                                                                    \
-  template GeneralDenseSamples<M> dense_output<M>(const M&, const GeneralTrajectory<M>&, transported::Method,       \
+  template GeneralDenseSamples<M> dense_output<M>(const M&, const GeneralTrajectory<M>&, cartan::Method,       \
                                                   const std::vector<double>&, std::string_view);
 CARTAN_GENERAL_SHIPPED_MANIFOLDS(CARTAN_GENERAL_DENSE)
 #undef CARTAN_GENERAL_DENSE

@@ -47,7 +47,7 @@ TEST(Api, CartanSchoutenRunsTheLieGroupKernelAndItsResultVerifies) {
   EXPECT_TRUE(std::isfinite(*r.action));
   // The last node is gT: the shooting residual is below tol = 1e-10 (radians), so 1e-9 per entry.
   for (int i = 0; i < 9; ++i) EXPECT_NEAR(r.samples.points(p.N, i), p.gT[static_cast<std::size_t>(i)], 1e-9);
-  const verify::Report report = verify(p, r.samples, r.order, transported::kDefaultTol, r.status);
+  const verify::Report report = verify(p, r.samples, r.order, cartan::kDefaultTol, r.status);
   EXPECT_TRUE(report.passed()) << report.text();
 }
 
@@ -69,7 +69,7 @@ TEST(Api, LeviCivitaOfTheBiInvariantMetricIsCartanSchoutenAtOneHalf) {
   EXPECT_FALSE(a.action.has_value());
   EXPECT_NEAR((a.samples.v - b.samples.v).cwiseAbs().maxCoeff(), 0, 1e-12);
   EXPECT_NEAR((a.samples.points - b.samples.points).cwiseAbs().maxCoeff(), 0, 1e-12);
-  const verify::Report report = verify(lc, a.samples, a.order, transported::kDefaultTol, a.status);
+  const verify::Report report = verify(lc, a.samples, a.order, cartan::kDefaultTol, a.status);
   EXPECT_TRUE(report.passed()) << report.text();
 }
 
@@ -90,7 +90,7 @@ TEST(Api, TheFreeParticleOnTheSphereFollowsTheGreatCircleAtConstantSpeed) {
   EXPECT_NEAR((r.samples.v.col(0).array() - speed).abs().maxCoeff(), 0, 1e-9);
   EXPECT_NEAR(r.samples.v.col(1).cwiseAbs().maxCoeff(), 0, 1e-9);
   EXPECT_NEAR((r.samples.points.row(p.N) - Eigen::RowVector3d(0, 1, 0)).norm(), 0, 1e-9);
-  const verify::Report report = verify(p, r.samples, r.order, transported::kDefaultTol, r.status);
+  const verify::Report report = verify(p, r.samples, r.order, cartan::kDefaultTol, r.status);
   EXPECT_TRUE(report.passed()) << report.text();
 }
 
@@ -117,7 +117,7 @@ TEST(Api, TheFreeParticleOnTheHyperbolicPlaneFollowsTheGeodesicAtConstantSpeed) 
     const double s = d * r.samples.t[k] / p.T;
     EXPECT_NEAR((r.samples.points.row(k) - Eigen::RowVector3d(std::sinh(s), 0, std::cosh(s))).norm(), 0, 1e-9) << k;
   }
-  const verify::Report report = verify(p, r.samples, r.order, transported::kDefaultTol, r.status);
+  const verify::Report report = verify(p, r.samples, r.order, cartan::kDefaultTol, r.status);
   EXPECT_TRUE(report.passed()) << report.text();
   EXPECT_NEAR(on_manifold(p).qT[2], std::cosh(d), 1e-15);
   testing::expect_invalid([&] { (void)on_manifold(p, {{1, 2, 3}, {}}); }, {"v0 = 1,2,3", "must have 2"});
@@ -134,8 +134,8 @@ TEST(Api, VerifyFailsSamplesThatAreNotASolution) {
   ASSERT_TRUE(r.converged()) << r.message;
   Samples wrong = r.samples;
   wrong.mu *= 1.1;  // mu is no longer dl/dv
-  EXPECT_FALSE(verify(p, wrong, r.order, transported::kDefaultTol, r.status).passed());
-  EXPECT_FALSE(verify(p, r.samples, r.order, transported::kDefaultTol, Status::NotConverged).passed());
+  EXPECT_FALSE(verify(p, wrong, r.order, cartan::kDefaultTol, r.status).passed());
+  EXPECT_FALSE(verify(p, r.samples, r.order, cartan::kDefaultTol, Status::NotConverged).passed());
 }
 
 TEST(Api, CheckRefusesWhatTheProblemTellsWrongButLeavesGroupMembershipToSolve) {

@@ -130,8 +130,8 @@ TYPED_TEST(CutLocusTest, ConvergedAndPassingResultsEndAtTheTarget) {
     const auto p = TestFixture::problem(manifold, q0, qT);
     for (const auto order : {SchemeOrder::First, SchemeOrder::Second}) {
       for (const bool from_rest : {false, true}) {
-        transported::SolveOptions options;
-        options.method = transported::Method::Shooting;
+        cartan::SolveOptions options;
+        options.method = cartan::Method::Shooting;
         options.order = order;
         options.tol = tol;
         options.max_iterations = 60;

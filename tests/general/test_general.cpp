@@ -30,8 +30,8 @@ using SO3Manifold = GroupManifold<groups::SO3>;
 /// The Lie-group Cartan–Schouten solver's shooting (the reference).
 transported::TransportedSolution<groups::SO3> reference_solve(
     const transported::TransportedProblem<groups::SO3, mechanics::RigidBody>& problem, SchemeOrder order) {
-  transported::SolveOptions options;
-  options.method = transported::Method::Shooting;
+  cartan::SolveOptions options;
+  options.method = cartan::Method::Shooting;
   options.order = order;
   options.tol = 1e-12;
   return transported::solve(problem, options);
@@ -188,13 +188,13 @@ TEST(GeneralSolve, DefaultShootingAndContinuationInTAgree) {
   EXPECT_EQ(with_type.sweeps, through_erasure.sweeps);
   EXPECT_NEAR_MATRIX(with_type.v0, through_erasure.v0, 1e-14 * with_type.v0.norm());
   EXPECT_NEAR_MATRIX(with_type.trajectory.q.back(), through_erasure.trajectory.q.back(), 1e-14);
-  transported::SolveOptions options;
-  options.method = transported::Method::Shooting;
-  options.continuation = transported::Continuation::None;
+  cartan::SolveOptions options;
+  options.method = cartan::Method::Shooting;
+  options.continuation = cartan::Continuation::None;
   const auto from_guess = solve(problem, options, GeneralGuess<S2>{direct.v0, direct.Xi0, std::nullopt});
   EXPECT_EQ(from_guess.branch, "shooting (from the given guess)");
   EXPECT_LE(from_guess.iterations, 2);
-  options.continuation = transported::Continuation::T;
+  options.continuation = cartan::Continuation::T;
   GeneralShootingOptions one_iteration;
   one_iteration.max_iterations = 1;
   const auto failed = solve_general_shooting(problem, one_iteration);  // the path's failed direct attempt
@@ -203,11 +203,11 @@ TEST(GeneralSolve, DefaultShootingAndContinuationInTAgree) {
   ASSERT_TRUE(continued.converged()) << continued.message;
   EXPECT_EQ(continued.branch.rfind("continuation in T (continued in T from T = 0.75", 0), 0u) << continued.branch;
   EXPECT_NEAR_MATRIX(continued.v0, direct.v0, 1e-8);
-  options.method = transported::Method::MultipleShooting;
-  options.continuation = transported::Continuation::None;
+  options.method = cartan::Method::MultipleShooting;
+  options.continuation = cartan::Continuation::None;
   expect_invalid([&] { solve(problem, options); }, {"multiple-shooting", "not available for a general connection"});
-  options.method = transported::Method::Shooting;
-  options.continuation = transported::Continuation::Lambda;
+  options.method = cartan::Method::Shooting;
+  options.continuation = cartan::Continuation::Lambda;
   expect_invalid([&] { solve(problem, options); }, "continuation = lambda");
 }
 

@@ -20,13 +20,13 @@ namespace {
 using namespace cartan::general;
 using manifolds::Sphere;
 using SO3Manifold = manifolds::GroupManifold<groups::SO3>;
-using transported::Method;
+using cartan::Method;
 
 /// Collocation; with Continuation::T it starts from the order-2 shooting solution when Newton
 /// fails from the geodesic guess on the N-interval mesh (general/solve.hpp).
-transported::SolveOptions collocation_options(double tol,
-                                              transported::Continuation fallback = transported::Continuation::None) {
-  transported::SolveOptions options;
+cartan::SolveOptions collocation_options(double tol,
+                                              cartan::Continuation fallback = cartan::Continuation::None) {
+  cartan::SolveOptions options;
   options.method = Method::Collocation;
   options.tol = tol;
   options.continuation = fallback;
@@ -71,7 +71,7 @@ TEST(GeneralCollocation, CartanSchoutenReproducesTheLieGroupCollocation) {
 TEST(GeneralCollocation, SphericalPendulumIsTheClassicalOne) {
   const double G = 9.81, T = 1.0;
   const auto problem = pendulum({1, 1}, G, T, 40);
-  auto options = collocation_options(1e-10, transported::Continuation::T);
+  auto options = collocation_options(1e-10, cartan::Continuation::T);
   options.samples = 101;
   const auto s = solve(problem, options);
   ASSERT_TRUE(s.converged()) << s.message;
@@ -85,7 +85,7 @@ TEST(GeneralCollocation, SphericalPendulumIsTheClassicalOne) {
     EXPECT_NEAR(s.trajectory.q[k].norm(), 1.0, 1e-9);
     EXPECT_NEAR_MATRIX(s.trajectory.frame[k].transpose() * s.trajectory.frame[k], Eigen::Matrix2d::Identity(), 1e-9);
   }
-  options.continuation = transported::Continuation::None;
+  options.continuation = cartan::Continuation::None;
   options.max_nodes = 400;
   const auto alone = solve(problem, options);
   EXPECT_FALSE(alone.converged());
@@ -99,7 +99,7 @@ TEST(GeneralCollocation, SphericalPendulumIsTheClassicalOne) {
 TEST(GeneralCollocation, TheOrderTwoSchemeConvergesToItWhereTheFrameComponentsVary) {
   const auto manifold = SO3Manifold::levi_civita(Eigen::Vector3d(1, 2, 3).asDiagonal());
   const auto continuous =
-      solve(erased(free_body_on(manifold, paper_free_body(0, 40, 3))), collocation_options(1e-10, transported::Continuation::T));
+      solve(erased(free_body_on(manifold, paper_free_body(0, 40, 3))), collocation_options(1e-10, cartan::Continuation::T));
   ASSERT_TRUE(continuous.converged()) << continuous.message;
   double gap[2];
   for (int refinement = 0; refinement < 2; ++refinement) {

@@ -30,7 +30,7 @@ TEST(GeneralDenseOutput, ExactOnAGreatCircle) {
     x.Xi.push_back(Eigen::Matrix2d::Constant(1.5 - t));
   }
   const std::vector<double> times{0.1, 0.33, 0.55, 1.0, 1.49};
-  for (transported::Method method : {transported::Method::Shooting, transported::Method::Collocation}) {
+  for (cartan::Method method : {cartan::Method::Shooting, cartan::Method::Collocation}) {
     const auto d = general::dense_output(sphere, x, method, times);
     for (std::size_t j = 0; j < times.size(); ++j) {
       EXPECT_NEAR_MATRIX(d.q[j], point(times[j]), 1e-15) << to_string(method);
@@ -46,9 +46,9 @@ TEST(GeneralDenseOutput, ExactOnAGreatCircle) {
   }
   // Xi = (T - t) ones: linear, and its derivative -v mu^T is not that of the data, so only the
   // discrete schemes' linear interpolant reproduces it.
-  EXPECT_NEAR_MATRIX(general::dense_output(sphere, x, transported::Method::Shooting, {0.33}).Xi[0],
+  EXPECT_NEAR_MATRIX(general::dense_output(sphere, x, cartan::Method::Shooting, {0.33}).Xi[0],
                      Eigen::Matrix2d::Constant(1.5 - 0.33), 1e-15);
-  expect_invalid([&] { (void)general::dense_output(sphere, x, transported::Method::Shooting, {1.6}); },
+  expect_invalid([&] { (void)general::dense_output(sphere, x, cartan::Method::Shooting, {1.6}); },
                  {"t = 1.6", "outside [0, T] = [0, 1.5]"});
 }
 

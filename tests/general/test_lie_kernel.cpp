@@ -52,7 +52,7 @@ using general::GeneralGuess;
 using general::GeneralSolution;
 using general::GeneralTrajectory;
 using manifolds::GroupManifold;
-using transported::Method;
+using cartan::Method;
 using SO3Manifold = GroupManifold<groups::SO3>;
 
 constexpr double kTol = 1e-12;
@@ -79,8 +79,8 @@ transported::TransportedProblem<groups::Heisenberg, mechanics::H3Oscillator> h3_
 }
 
 /// Shooting (no continuation) at `tol` and `order`.
-transported::SolveOptions shooting_options(SchemeOrder order, double tol = kTol) {
-  transported::SolveOptions options;
+cartan::SolveOptions shooting_options(SchemeOrder order, double tol = kTol) {
+  cartan::SolveOptions options;
   options.method = Method::Shooting;
   options.order = order;
   options.tol = tol;
@@ -277,7 +277,7 @@ TEST(LieKernel, GuessesAndOptionsMapOntoTheLieKernel) {
   EXPECT_NEAR_MATRIX(again.v0, s.v0, 1e-9);
 
   // The default strategy starts with the same shooting.
-  transported::SolveOptions automatic;
+  cartan::SolveOptions automatic;
   automatic.tol = kTol;
   const auto by_default = general::solve(p, automatic);
   ASSERT_TRUE(by_default.converged()) << by_default.message;
@@ -288,7 +288,7 @@ TEST(LieKernel, GuessesAndOptionsMapOntoTheLieKernel) {
   // guess fails at lambda = 1/2 (tests/cli/test_cli.py, the same Lie-group shooting), continuation
   // in T reaches it from T = 3.
   auto long_horizon = shooting_options(SchemeOrder::First, 1e-8);
-  long_horizon.continuation = transported::Continuation::T;
+  long_horizon.continuation = cartan::Continuation::T;
   const auto continued = general::solve(on_cartan_schouten(paper_oscillator(0.5)), long_horizon);
   ASSERT_TRUE(continued.converged()) << continued.message;
   EXPECT_EQ(continued.branch.rfind("continuation in T (continued in T from", 0), 0u)
@@ -311,7 +311,7 @@ TEST(LieKernel, GuessesAndOptionsMapOntoTheLieKernel) {
 
   // Collocation stays the general one (GeneralCollocation.CartanSchoutenReproducesTheLieGroupCollocation
   // checks its values).
-  transported::SolveOptions collocation;
+  cartan::SolveOptions collocation;
   collocation.method = Method::Collocation;
   collocation.tol = 1e-6;
   const auto collocated = general::solve(on_cartan_schouten(paper_free_body(0.3, 50, 5)), collocation);
@@ -332,13 +332,13 @@ TEST(LieKernel, TheLieGroupMethodsAreTheKernelsCapabilities) {
   const auto p = on_cartan_schouten(lie_problem);
   struct Case {
     Method method;
-    transported::Continuation continuation;
+    cartan::Continuation continuation;
     double tolerance;
   };
-  for (const Case c : {Case{Method::MultipleShooting, transported::Continuation::None, 1e-8},
-                       Case{Method::TwoLevel, transported::Continuation::None, 1e-7},
-                       Case{Method::Shooting, transported::Continuation::Lambda, 1e-8}}) {
-    transported::SolveOptions options;
+  for (const Case c : {Case{Method::MultipleShooting, cartan::Continuation::None, 1e-8},
+                       Case{Method::TwoLevel, cartan::Continuation::None, 1e-7},
+                       Case{Method::Shooting, cartan::Continuation::Lambda, 1e-8}}) {
+    cartan::SolveOptions options;
     options.method = c.method;
     options.continuation = c.continuation;
     const std::string name = std::string(to_string(c.method)) + " " + std::string(to_string(c.continuation));
@@ -361,7 +361,7 @@ TEST(LieKernel, TheLieGroupMethodsAreTheKernelsCapabilities) {
   }
   // A guess trajectory enters as the Lie-group solver's (xi = C(Xi)): from the solution itself,
   // multiple shooting stops at once.
-  transported::SolveOptions multiple;
+  cartan::SolveOptions multiple;
   multiple.method = Method::MultipleShooting;
   const auto first = general::solve(p, multiple);
   ASSERT_TRUE(first.converged()) << first.message;
@@ -378,15 +378,15 @@ TEST(LieKernel, TheLieGroupMethodsAreTheKernelsCapabilities) {
                  {"multiple-shooting", "not available for a general connection"});
   auto rotated = p;
   rotated.frame0 = groups::SO3::exp(Eigen::Vector3d(0.1, 0.2, 0.3));
-  transported::SolveOptions in_lambda;
+  cartan::SolveOptions in_lambda;
   in_lambda.method = Method::Shooting;
-  in_lambda.continuation = transported::Continuation::Lambda;
+  in_lambda.continuation = cartan::Continuation::Lambda;
   expect_invalid([&] { (void)general::solve(rotated, in_lambda); }, {"continuation = lambda", "identity frame0"});
-  transported::SolveOptions collocation_in_lambda;
+  cartan::SolveOptions collocation_in_lambda;
   collocation_in_lambda.method = Method::Collocation;
-  collocation_in_lambda.continuation = transported::Continuation::Lambda;
+  collocation_in_lambda.continuation = cartan::Continuation::Lambda;
   expect_invalid([&] { (void)general::solve(p, collocation_in_lambda); }, {"continuation = lambda", "collocation"});
-  transported::SolveOptions variational;
+  cartan::SolveOptions variational;
   variational.method = Method::Variational;
   expect_invalid([&] { (void)general::solve(p, variational); }, {"variational", "the Lie-group solve only"});
 }

@@ -21,9 +21,9 @@
 
 #include "cartan/connections/connection_kind.hpp"
 #include "cartan/status.hpp"
-#include "cartan/transported/method.hpp"
-#include "cartan/transported/solution.hpp"
-#include "cartan/transported/solve_options.hpp"
+#include "cartan/principle/options.hpp"
+#include "cartan/principle/result.hpp"
+#include "cartan/principle/vocabulary.hpp"
 #include "cartan/verify/verdict.hpp"
 
 namespace cartan::api {
@@ -78,7 +78,7 @@ struct Samples {
 struct Result {
   Status status = Status::NotConverged;
   std::string message;
-  transported::Method method = transported::Method::Shooting;
+  Method method = Method::Shooting;
   int order = 1;
   std::string branch;
   bool lie_kernel = false;   ///< the auxiliary is xi (n numbers a row); else Xi (n^2)
@@ -91,7 +91,7 @@ struct Result {
   int inner_iterations = 0;
   int sweeps = 0;
   double solve_time_s = 0;
-  std::optional<transported::CollocationReport> collocation;
+  std::optional<CollocationReport> collocation;
 
   bool converged() const { return status == Status::Converged; }
 };
@@ -119,9 +119,9 @@ ManifoldProblem on_manifold(const ManifoldProblem& problem, const Guess& guess =
 /// Solves `problem` as `options` say. Throws std::invalid_argument "<where>: <name> = <value>
 /// <problem>" for what check() refuses, boundary data that are not elements of the group, and
 /// whatever the solver's validation refuses (options, T, N); numerical failure is a status.
-Result solve(const GroupProblem& problem, const transported::SolveOptions& options = {}, const Guess& guess = {},
+Result solve(const GroupProblem& problem, const SolveOptions& options = {}, const Guess& guess = {},
              std::string_view where = "cartan::api::solve");
-Result solve(const ManifoldProblem& problem, const transported::SolveOptions& options = {}, const Guess& guess = {},
+Result solve(const ManifoldProblem& problem, const SolveOptions& options = {}, const Guess& guess = {},
              std::string_view where = "cartan::api::solve");
 
 /// Every check of verify/ on `samples` as a solution of `problem` by a method of the given order

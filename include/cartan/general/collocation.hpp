@@ -19,7 +19,10 @@
 #include "cartan/general/scheme.hpp"
 #include "cartan/general/shooting.hpp"
 #include "cartan/numerics/collocation.hpp"
-#include "cartan/transported/collocation_solution.hpp"
+#include "cartan/principle/options.hpp"
+#include "cartan/principle/result.hpp"
+#include "cartan/principle/vocabulary.hpp"
+#include "cartan/solvers/collocation.hpp"
 
 namespace cartan::general {
 
@@ -133,8 +136,8 @@ GeneralSolution<M> general_collocation_solution(const GeneralCollocation<M, L>& 
   GeneralSolution<M> s;
   s.status = result.status;
   s.message = "collocation of the continuous general system: " + result.message;
-  s.method = transported::Method::Collocation;
-  s.order = transported::kCollocationOrder;
+  s.method = Method::Collocation;
+  s.order = kCollocationOrder;
   const numerics::CubicHermite interpolant = result.interpolant();
   std::string failure;
   try {
@@ -158,7 +161,7 @@ GeneralSolution<M> general_collocation_solution(const GeneralCollocation<M, L>& 
                    format_value(s.terminal_error) + " from qT";
     }
   }
-  s.collocation = transported::CollocationReport{static_cast<int>(result.t.size()), result.max_rms_residual};
+  s.collocation = CollocationReport{static_cast<int>(result.t.size()), result.max_rms_residual};
   s.iterations = result.newton_iterations;
   s.sweeps = result.jacobian_evaluations;
   return s;
@@ -175,7 +178,7 @@ GeneralSolution<M> solve_general_collocation(const GeneralProblem<M, L>& problem
                                              int samples, const GeneralTrajectory<M>* start = nullptr,
                                              bool adaptive_retry = true) {
   problem.validate();
-  transported::check_samples(samples);
+  check_samples(samples);
   const auto clock = std::chrono::steady_clock::now();
   const GeneralCollocation<M, L> collocation(problem);
   Eigen::VectorXd t;
@@ -197,7 +200,7 @@ GeneralSolution<M> solve_general_collocation(const GeneralProblem<M, L>& problem
   } else if (adaptive_retry && r.status != Status::Interrupted) {
     r = numerics::solve_collocation(system, t, y, Eigen::VectorXd(0), options);
   }
-  GeneralSolution<M> s = general_collocation_solution(collocation, r, transported::output_times(r, samples, problem.T));
+  GeneralSolution<M> s = general_collocation_solution(collocation, r, solvers::output_times(r, samples, problem.T));
   s.branch = start != nullptr ? "collocation from the given trajectory" : "collocation from the geodesic guess";
   s.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
   return s;

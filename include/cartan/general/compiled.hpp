@@ -23,7 +23,7 @@
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"
 #include "cartan/status.hpp"
-#include "cartan/transported/solve_options.hpp"
+#include "cartan/principle/options.hpp"
 #include "cartan/verify/verdict.hpp"
 
 namespace cartan::general {
@@ -32,7 +32,7 @@ namespace cartan::general {
 /// invalid problem or options, or a method this problem family does not have; numerical failure is
 /// a status.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options = {},
+GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const SolveOptions& options = {},
                          const GeneralGuess<M>& guess = {});
 
 /// Single shooting of the general scheme from (v0_guess, Xi0_guess), or from the geodesic guess
@@ -70,7 +70,7 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
 #define CARTAN_GENERAL_COMPILED(prefix, M)                                                                     \
   prefix ::cartan::general::GeneralSolution<M> cartan::general::solve(                                        \
       const ::cartan::general::GeneralProblem<M, ::cartan::general::ErasedLagrangian<M>>&,                     \
-      const ::cartan::transported::SolveOptions&, const ::cartan::general::GeneralGuess<M>&);                  \
+      const ::cartan::SolveOptions&, const ::cartan::general::GeneralGuess<M>&);                  \
   prefix ::cartan::general::GeneralSolution<M> cartan::general::solve_general_shooting(                       \
       const ::cartan::general::GeneralProblem<M, ::cartan::general::ErasedLagrangian<M>>&,                     \
       const ::cartan::general::GeneralShootingOptions&, const ::cartan::manifolds::ComponentsOf<M>&,           \

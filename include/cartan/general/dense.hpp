@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "cartan/general/compiled.hpp"
-#include "cartan/transported/method.hpp"
+#include "cartan/principle/vocabulary.hpp"
 
 namespace cartan::general {
 
@@ -35,7 +35,7 @@ struct GeneralDenseSamples {
 /// std::invalid_argument "<where>: ..." when x has fewer than 2 samples, a time is outside
 /// [t_0, t_M] (NaN included), or the piece of a step does not reach its end node.
 template <manifolds::ManifoldWithConnection M>
-GeneralDenseSamples<M> dense_output(const M& manifold, const GeneralTrajectory<M>& x, transported::Method method,
+GeneralDenseSamples<M> dense_output(const M& manifold, const GeneralTrajectory<M>& x, Method method,
                                     const std::vector<double>& times, std::string_view where = "dense_output");
 
 }  // namespace cartan::general

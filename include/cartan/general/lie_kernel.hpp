@@ -35,7 +35,6 @@
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/numerics/spectrum.hpp"
 #include "cartan/transported/continuation.hpp"
-#include "cartan/transported/solve_options.hpp"
 
 namespace cartan::general {
 
@@ -158,8 +157,8 @@ bool lie_kernel_available(const GeneralProblem<manifolds::GroupManifold<G>, L>& 
 /// method shoots (collocation is the general one).
 template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 bool lie_kernel_applies(const GeneralProblem<manifolds::GroupManifold<G>, L>& problem,
-                        const transported::SolveOptions& options) {
-  return lie_kernel_available(problem) && options.method != transported::Method::Collocation;
+                        const SolveOptions& options) {
+  return lie_kernel_available(problem) && options.method != Method::Collocation;
 }
 
 namespace detail {
@@ -198,14 +197,14 @@ void apply_general_status_rule(const LieKernelProblem<G, L>& problem, transporte
 
 }  // namespace cartan::general
 
-namespace cartan::transported {
+namespace cartan::solvers {
 
 /// The Lie kernel's problems as a family of the continuation path: the Lie-group shooting, then
 /// general's status rule (general::detail::apply_general_status_rule) at the shooting's tolerance.
 template <groups::LieGroup G, general::ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 struct ShootingFamily<general::LieKernelProblem<G, L>>
-    : ShootingFamily<TransportedProblem<G, general::LieLagrangian<G, L>>> {
-  using Lie = ShootingFamily<TransportedProblem<G, general::LieLagrangian<G, L>>>;
+    : ShootingFamily<transported::TransportedProblem<G, general::LieLagrangian<G, L>>> {
+  using Lie = ShootingFamily<transported::TransportedProblem<G, general::LieLagrangian<G, L>>>;
   static typename Lie::Solution shoot(const general::LieKernelProblem<G, L>& p, const ShootingOptions& o,
                                       const typename Lie::Velocity& v, const typename Lie::Auxiliary& a) {
     typename Lie::Solution s = Lie::shoot(p, o, v, a);
@@ -214,7 +213,7 @@ struct ShootingFamily<general::LieKernelProblem<G, L>>
   }
 };
 
-}  // namespace cartan::transported
+}  // namespace cartan::solvers
 
 namespace cartan::general {
 

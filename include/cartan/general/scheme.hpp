@@ -22,7 +22,6 @@
 #include "cartan/general/problem.hpp"
 #include "cartan/general/solution.hpp"
 #include "cartan/mechanics/lagrangian.hpp"
-#include "cartan/transported/scheme.hpp"
 
 namespace cartan::general {
 

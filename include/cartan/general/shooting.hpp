@@ -22,9 +22,8 @@
 #include "cartan/numerics/nonlinear_solve.hpp"
 #include "cartan/numerics/shooting_driver.hpp"
 #include "cartan/status.hpp"
-#include "cartan/transported/method.hpp"
-#include "cartan/transported/shooting.hpp"
-#include "cartan/transported/solution.hpp"
+#include "cartan/principle/vocabulary.hpp"
+#include "cartan/solvers/shooting.hpp"
 
 namespace cartan::general {
 
@@ -177,7 +176,7 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   const numerics::ShootingOutcome outcome = numerics::shoot(
       kernel,
       {.velocity_size = m, .horizon = problem.T, .aux_scale = s, .analytic_jacobian = options.analytic_jacobian,
-       .solver = transported::detail::solver_options(options)},
+       .solver = solvers::solver_options(options)},
       y0);
   solution.iterations = outcome.report.iterations;
   solution.residual_history = outcome.report.residual_history;

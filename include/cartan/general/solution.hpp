@@ -10,9 +10,9 @@
 #include "cartan/manifolds/manifold.hpp"
 #include "cartan/scheme_order.hpp"
 #include "cartan/status.hpp"
-#include "cartan/transported/method.hpp"
-#include "cartan/transported/solution.hpp"
-#include "cartan/transported/solve_options.hpp"
+#include "cartan/principle/options.hpp"
+#include "cartan/principle/result.hpp"
+#include "cartan/principle/vocabulary.hpp"
 
 namespace cartan::general {
 
@@ -49,7 +49,7 @@ template <manifolds::ManifoldWithConnection M>
 struct GeneralSolution {
   Status status = Status::NotConverged;
   std::string message;
-  transported::Method method = transported::Method::Shooting;
+  Method method = Method::Shooting;
   std::string branch;
   int order = 1;
   /// Every node of the requested problem's discrete solution (at a failure: of the best iterate).
@@ -62,7 +62,7 @@ struct GeneralSolution {
   int sweeps = 0;
   std::vector<double> residual_history;
   double solve_time_s = 0;
-  std::optional<transported::CollocationReport> collocation;  ///< method collocation: mesh and residual
+  std::optional<CollocationReport> collocation;  ///< method collocation: mesh and residual
 
   bool converged() const { return status == Status::Converged; }
 };
@@ -70,7 +70,7 @@ struct GeneralSolution {
 /// The Lie-group shooting's options (order, tolerance, max_iterations, analytic_jacobian: the
 /// tangent-linear sweep of tangent.hpp, no_progress_window, monitor), so that the continuation
 /// path (transported/continuation.hpp) drives both problem families.
-using GeneralShootingOptions = transported::ShootingOptions;
+using GeneralShootingOptions = ShootingOptions;
 
 template <manifolds::ManifoldWithConnection M>
 struct GeneralGuess {

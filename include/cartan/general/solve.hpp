@@ -1,6 +1,6 @@
 #pragma once
 // One entry point for the general transported-velocity problem (problem.hpp), with the vocabulary
-// of the Lie-group solve (transported/solve.hpp: SolveOptions, Method, Continuation, Status):
+// of every solve (principle/: SolveOptions, Method, Continuation, Status):
 //   * Method::Shooting: shooting from the guess (default: the geodesic guess), or with
 //     Continuation::T by continuation in the horizon;
 //   * Method::Collocation: collocation of the continuous system (collocation.hpp) from the guess
@@ -8,7 +8,7 @@
 //     fails on the N-interval mesh, from the order-2 shooting solution found by continuation in T;
 //   * Method::Auto (default): shooting from the guess, then continuation in T, then collocation
 //     from the geodesic guess; the first success is returned and `branch` names the path.
-// Continuation in T is the Lie-group solver's path (transported/continuation.hpp, through
+// Continuation in T is every kernel's path (solvers/continuation.hpp, through
 // ShootingFamily): halve the horizon (same step h, so N scales with T) until shooting from the
 // geodesic guess converges, then lengthen it with a secant predictor, accepting a stage only near
 // its prediction. A failure returns the best iterate of the requested problem (never a stage at
@@ -37,11 +37,12 @@
 #include "cartan/general/compiled.hpp"
 #include "cartan/general/lie_kernel.hpp"
 #include "cartan/general/shooting.hpp"
-#include "cartan/transported/continuation.hpp"
+#include "cartan/principle/options.hpp"
+#include "cartan/principle/vocabulary.hpp"
+#include "cartan/solvers/continuation.hpp"
 #include "cartan/transported/compiled.hpp"
-#include "cartan/transported/solve_options.hpp"
 
-namespace cartan::transported {
+namespace cartan::solvers {
 
 /// The general problem as a family of the continuation path: unknowns (v0, Xi0).
 template <manifolds::ManifoldWithConnection M, general::ManifoldLagrangian<M> L>
@@ -61,35 +62,35 @@ struct ShootingFamily<general::GeneralProblem<M, L>> {
   static void set_inner_iterations(Solution&, int) {}
 };
 
-}  // namespace cartan::transported
+}  // namespace cartan::solvers
 
 namespace cartan::general {
 
 namespace detail {
 
-/// Continuation in T (transported/continuation.hpp's path) of a problem family: the general
+/// Continuation in T (solvers/continuation.hpp's path) of a problem family: the general
 /// problem (ShootingFamily above) or the Lie kernel's (lie_kernel.hpp). `direct` is the failed
 /// attempt at the full horizon, not repeated (pass it moved: the path keeps it).
-template <class Problem, class Solution = typename transported::ShootingFamily<Problem>::Solution>
+template <class Problem, class Solution = typename solvers::ShootingFamily<Problem>::Solution>
 Solution continue_in_T(const Problem& problem, const GeneralShootingOptions& shooting, Solution direct) {
-  transported::ContinuationOptions options;
+  ContinuationOptions options;
   options.shooting = shooting;
-  Solution result = transported::detail::continue_in_T(problem, options, std::nullopt, std::nullopt, &direct);
+  Solution result = solvers::detail::continue_in_T(problem, options, std::nullopt, std::nullopt, &direct);
   result.branch = "continuation in T (" + result.branch + ")";
   return result;
 }
 
 /// Method::Collocation (header comment).
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-GeneralSolution<M> collocation(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options,
+GeneralSolution<M> collocation(const GeneralProblem<M, L>& problem, const SolveOptions& options,
                                const GeneralGuess<M>& guess) {
   const SolveMonitor stage = options.monitor.stage("collocation");
   const numerics::CollocationOptions c{.tol = options.tol,
-                                       .max_nodes = options.max_nodes.value_or(transported::kTransportedMaxNodes),
+                                       .max_nodes = options.max_nodes.value_or(kDefaultMaxNodes),
                                        .max_newton_iterations = options.max_iterations,
                                        .monitor = &stage};
   const GeneralTrajectory<M>* start = guess.trajectory ? &*guess.trajectory : nullptr;
-  const bool fallback = !start && options.continuation == transported::Continuation::T;
+  const bool fallback = !start && options.continuation == Continuation::T;
   GeneralSolution<M> s = solve_general_collocation(problem, c, options.samples, start, !fallback);
   if (!fallback || s.converged() || s.status == Status::Interrupted) return s;
   const double seconds = s.solve_time_s;
@@ -130,11 +131,9 @@ struct GeneralKernel {
 /// `shooting_problem()` is shot through its ShootingFamily, a guess Xi0 enters as
 /// `auxiliary(Xi0)`, and `result` makes the returned solution a GeneralSolution<M>.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L, class Kernel>
-GeneralSolution<M> run_strategy(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options,
+GeneralSolution<M> run_strategy(const GeneralProblem<M, L>& problem, const SolveOptions& options,
                                 const GeneralGuess<M>& guess, const Kernel& kernel) {
-  using transported::Continuation;
-  using transported::Method;
-  using Family = transported::ShootingFamily<typename Kernel::Problem>;
+  using Family = solvers::ShootingFamily<typename Kernel::Problem>;
   if (options.method == Method::Collocation) return detail::collocation(problem, options, guess);
   GeneralShootingOptions shooting{.order = options.order, .tolerance = options.tol,
                                   .max_iterations = options.max_iterations, .no_progress_window = 0,
@@ -157,7 +156,7 @@ GeneralSolution<M> run_strategy(const GeneralProblem<M, L>& problem, const trans
     if (auto_strategy) continued.branch += ", after shooting failed";
     return kernel.result(std::move(continued));
   }
-  transported::SolveOptions c = options;
+  SolveOptions c = options;
   c.method = Method::Collocation;
   c.max_iterations = std::min(options.max_iterations, 40);  // Newton per mesh: a hopeless start ends early
   GeneralGuess<M> start;
@@ -176,7 +175,7 @@ GeneralSolution<M> run_strategy(const GeneralProblem<M, L>& problem, const trans
 
 /// run_strategy on the general scheme.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-GeneralSolution<M> run_methods(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options,
+GeneralSolution<M> run_methods(const GeneralProblem<M, L>& problem, const SolveOptions& options,
                                const GeneralGuess<M>& guess) {
   return run_strategy(problem, options, guess, GeneralKernel<M, L>{problem});
 }
@@ -185,7 +184,7 @@ GeneralSolution<M> run_methods(const GeneralProblem<M, L>& problem, const transp
 /// (lie_kernel.hpp; where lie_kernel_applies).
 template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 GeneralSolution<manifolds::GroupManifold<G>> run_methods_lie(const GeneralProblem<manifolds::GroupManifold<G>, L>& problem,
-                                                             double lambda, const transported::SolveOptions& options,
+                                                             double lambda, const SolveOptions& options,
                                                              const GeneralGuess<manifolds::GroupManifold<G>>& guess) {
   return run_strategy(problem, options, guess, LieKernel<G, L>{lie_kernel_problem(problem, lambda)});
 }
@@ -195,7 +194,7 @@ GeneralSolution<manifolds::GroupManifold<G>> run_methods_lie(const GeneralProble
 /// general's status rule, the result converted (general_solution_from_lie).
 template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 GeneralSolution<manifolds::GroupManifold<G>> run_lie_method(const GeneralProblem<manifolds::GroupManifold<G>, L>& problem,
-                                                            double lambda, const transported::SolveOptions& options,
+                                                            double lambda, const SolveOptions& options,
                                                             const GeneralGuess<manifolds::GroupManifold<G>>& guess) {
   const LieKernelProblem<G, L> kernel = lie_kernel_problem(problem, lambda);
   transported::SolveGuess<G> lie_guess;
@@ -224,12 +223,10 @@ GeneralSolution<manifolds::GroupManifold<G>> run_lie_method(const GeneralProblem
 /// where lie_kernel_applies, and the kernel's own methods where it is available (header comment),
 /// the message then starting "Lie-group kernel".
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported::SolveOptions& options,
+GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const SolveOptions& options,
                          const GeneralGuess<M>& guess) {
   problem.validate();
   options.validate();
-  using transported::Continuation;
-  using transported::Method;
   // The Lie-group kernel's own methods (header comment): multiple shooting, two-level, and
   // continuation in lambda of shooting.
   const bool collocation = options.method == Method::Collocation;
@@ -259,7 +256,7 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported:
     validate_trajectory(problem, *guess.trajectory, "general::solve", "guess.trajectory");
   }
   const auto start = std::chrono::steady_clock::now();
-  const transported::SolveOptions timed = transported::with_deadline(options, start);
+  const SolveOptions timed = with_deadline(options, start);
   GeneralSolution<M> s = [&] {
     if constexpr (kIsGroupManifold<M>) {
       if constexpr (transported::kCompiledGroup<typename M::Group>) {
@@ -273,7 +270,7 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const transported:
     }
     return detail::run_methods(problem, timed, guess);
   }();
-  transported::apply_time_limit(timed, s.status, s.message);
+  apply_time_limit(timed, s.status, s.message);
   s.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return s;
 }

@@ -12,28 +12,13 @@
 #include "cartan/transported/heisenberg_collocation.hpp"
 #include "cartan/transported/collocation_system.hpp"
 #include "cartan/errors.hpp"
+#include "cartan/solvers/collocation.hpp"
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/solution.hpp"
 
 namespace cartan::transported {
 
-/// Mesh limit of the transported problems by collocation in the CLI and the Python module when
-/// none is given: ample for tol >= 1e-12 on the paper's problems (~1000 nodes at 1e-10 on H3;
-/// the SO(3) paper cases need fewer than 5000 at 1e-10).
-inline constexpr int kTransportedMaxNodes = 20000;
-
-/// Throws std::invalid_argument unless samples is 0 or at least 2 (as `cartan solve --samples`).
-inline void check_samples(int samples) {
-  if (samples < 0 || samples == 1) {
-    throw_invalid("collocation", "samples", std::to_string(samples),
-                  "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");
-  }
-}
-
-/// Output times: the final mesh (samples == 0) or `samples` uniform times on [0, T].
-inline Eigen::VectorXd output_times(const numerics::BvpResult& result, int samples, double T) {
-  return samples == 0 ? result.t : Eigen::VectorXd::LinSpaced(samples, 0, T);
-}
+using solvers::output_times;
 
 /// The transported state (g, v, xi) at output time j, given the interpolated state y there.
 template <groups::LieGroup G>

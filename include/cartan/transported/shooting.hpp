@@ -21,6 +21,7 @@
 
 #include "cartan/numerics/nonlinear_solve.hpp"
 #include "cartan/numerics/shooting_driver.hpp"
+#include "cartan/solvers/shooting.hpp"
 #include "cartan/transported/solution.hpp"
 #include "cartan/transported/solve_options.hpp"
 #include "cartan/transported/sweep.hpp"
@@ -114,18 +115,6 @@ class TransportedShootingKernel final : public numerics::ShootingKernel {
   std::array<TransportedTrajectory<G>, 2> buffers_;  ///< the driver's two recording buffers
 };
 
-/// Levenberg–Marquardt's options for a shooting's.
-inline numerics::NonlinearSolveOptions solver_options(const ShootingOptions& options) {
-  numerics::NonlinearSolveOptions lm;
-  lm.tolerance = options.tolerance;
-  lm.max_iterations = options.max_iterations;
-  lm.no_progress_window = options.no_progress_window;
-  lm.max_initial_residual = options.max_initial_residual;
-  lm.monitor = options.monitor;
-  lm.evaluations_stop = true;  // both kernels' sweeps poll the monitor
-  return lm;
-}
-
 }  // namespace detail
 
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
@@ -149,7 +138,7 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   const numerics::ShootingOutcome outcome =
       numerics::shoot(kernel,
                       {.velocity_size = n, .horizon = problem.T, .aux_scale = s,
-                       .analytic_jacobian = options.analytic_jacobian, .solver = detail::solver_options(options)},
+                       .analytic_jacobian = options.analytic_jacobian, .solver = solvers::solver_options(options)},
                       y0);
   solution.inner_iterations = outcome.report.iterations;
   solution.residual_history = outcome.report.residual_history;

@@ -7,19 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "cartan/principle/result.hpp"
 #include "cartan/status.hpp"
 #include "cartan/transported/method.hpp"
 #include "cartan/transported/trajectory.hpp"
 
 namespace cartan::transported {
 
-/// What only collocation reports: the final mesh size, the largest relative RMS residual on it,
-/// and for SO(3) max |g^T g - I| over the mesh of g and the transport element (NaN elsewhere).
-struct CollocationReport {
-  int mesh_size = 0;
-  double max_residual = 0;
-  double group_defect = std::numeric_limits<double>::quiet_NaN();
-};
+using ::cartan::CollocationReport;
 
 /// What only the variational integrator reports (variational.hpp): the steps' body velocities
 /// u_k = log(g_k^{-1} g_{k+1}) / h and transported velocities v_k = P_k^{-1} u_k (constant on each

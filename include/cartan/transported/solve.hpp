@@ -167,7 +167,7 @@ TransportedSolution<G> collocation(const TransportedProblem<G, L>& problem, cons
                                    const SolveGuess<G>& guess, int samples) {
   const SolveMonitor stage = options.monitor.stage("collocation");
   const numerics::CollocationOptions c{.tol = options.tol,
-                                       .max_nodes = options.max_nodes.value_or(kTransportedMaxNodes),
+                                       .max_nodes = options.max_nodes.value_or(kDefaultMaxNodes),
                                        .max_newton_iterations = options.max_iterations,
                                        .monitor = &stage};
   if constexpr (std::is_same_v<G, groups::Heisenberg>) {
@@ -223,7 +223,7 @@ TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const S
       return true;
     }
     failed.push_back(name);
-    const double size = requested_problem ? scaled_residual(problem, s) : std::numeric_limits<double>::infinity();
+    const double size = requested_problem ? solvers::detail::scaled_residual(problem, s) : std::numeric_limits<double>::infinity();
     if (size < best_size) {
       best_size = size;
       best = std::move(s);
