@@ -76,7 +76,7 @@ int main() {
       low = std::min(low, e), high = std::max(high, e);
     }
     drift[refinement] = high - low;
-    std::printf("N = %d: %d iterations, energy drift %.3e\n", p.N, s.iterations, drift[refinement]);
+    std::printf("N = %d: %d iterations, energy drift %.3e\n", p.N, s.inner_iterations, drift[refinement]);
   }
   // Order 2: the drift falls by 4 when h halves (2.6 to 5.5 allows for the leading term's rounding
   // at these step sizes).

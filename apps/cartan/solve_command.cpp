@@ -100,7 +100,7 @@ nlohmann::json result_json(const ProblemSpec& spec, const api::Result& r) {
   out["terminal_error"] = r.terminal_error;
   out["xi_terminal"] = r.xi_terminal;
   out["iterations"] = {{"outer", r.outer_iterations}, {"inner", r.inner_iterations}, {"sweeps", r.sweeps}};
-  if (r.action) out["action"] = number_or_null(*r.action);
+  if (r.lie_kernel) out["action"] = number_or_null(r.action);  // the general kernel computes none
   out["solve_time_s"] = r.solve_time_s;
   if (r.collocation) {
     out["mesh_size"] = r.collocation->mesh_size;

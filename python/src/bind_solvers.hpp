@@ -141,12 +141,7 @@ template <groups::LieGroup G>
 py::dict solution_dict(transported::TransportedSolution<G>&& s, const std::string& group, double lambda, double T, int N,
                        const groups::ElementOf<G>& g0, const groups::ElementOf<G>& gT, double tol) {
   py::dict d;
-  d["status"] = std::string(to_string(s.status));
-  d["message"] = s.message;
-  d["success"] = s.converged();
-  d["method"] = std::string(to_string(s.method));
-  d["order"] = s.order;
-  d["branch"] = s.branch;
+  add_core_fields(d, s);
   d["group"] = group;
   d["lam"] = lambda;
   d["T"] = T;
@@ -162,15 +157,9 @@ py::dict solution_dict(transported::TransportedSolution<G>&& s, const std::strin
   d["xi"] = to_numpy(std::move(tr.xi));
   d["v0"] = to_numpy(s.v0);
   d["xi0"] = to_numpy(s.xi0);
-  d["terminal_error"] = s.terminal_error;
-  d["xi_terminal"] = s.xi_terminal;
   d["action"] = s.action;
   d["outer_iterations"] = s.outer_iterations;
   d["inner_iterations"] = s.inner_iterations;
-  d["sweeps"] = s.sweeps;
-  d["residual_history"] = to_numpy(s.residual_history);
-  d["solve_time"] = s.solve_time_s;
-  add_collocation_fields(d, s.collocation);
   d["group_defect"] = s.collocation ? py::object(py::float_(s.collocation->group_defect)) : py::object(py::none());
   return d;
 }

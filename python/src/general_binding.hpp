@@ -489,12 +489,7 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   }
   general::GeneralSolution<M>& s = *solved;  // its trajectory moves into the arrays
   py::dict d;
-  d["status"] = std::string(to_string(s.status));
-  d["message"] = s.message;
-  d["success"] = s.converged();
-  d["method"] = std::string(to_string(s.method));
-  d["order"] = s.order;
-  d["branch"] = s.branch;
+  add_core_fields(d, s);
   d["manifold"] = std::string(manifold.name());
   d["T"] = problem.T;
   d["N"] = problem.N;
@@ -510,13 +505,7 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   d["Xi"] = to_numpy(std::move(tr.Xi));
   d["v0"] = to_numpy(s.v0);
   d["Xi0"] = to_numpy(s.Xi0);
-  d["terminal_error"] = s.terminal_error;
-  d["xi_terminal"] = s.xi_terminal;
-  d["iterations"] = s.iterations;
-  d["sweeps"] = s.sweeps;
-  d["residual_history"] = to_numpy(s.residual_history);
-  d["solve_time"] = s.solve_time_s;
-  add_collocation_fields(d, s.collocation);
+  d["iterations"] = s.inner_iterations;
   return d;
 }
 

@@ -7,7 +7,7 @@
 
 #include "bindings.hpp"
 #include "cartan/mechanics/check_report.hpp"
-#include "cartan/transported/solution.hpp"
+#include "cartan/principle/result.hpp"
 #include "cartan/verify/verdict.hpp"
 
 namespace cartan::python {
@@ -74,6 +74,23 @@ inline mechanics::CheckReport check_report_of(const std::string& title, const py
 inline void add_collocation_fields(py::dict& d, const std::optional<cartan::CollocationReport>& report) {
   d["mesh_size"] = report ? py::object(py::int_(report->mesh_size)) : py::object(py::none());
   d["max_residual"] = report ? py::object(py::float_(report->max_residual)) : py::object(py::none());
+}
+
+/// What every kernel's result has (ResultCore, principle/result.hpp), under Python's names: both
+/// result types (cartan.SolveResult, cartan.GeneralSolveResult) read these keys.
+inline void add_core_fields(py::dict& d, const cartan::ResultCore& s) {
+  d["status"] = std::string(to_string(s.status));
+  d["message"] = s.message;
+  d["success"] = s.converged();
+  d["method"] = std::string(to_string(s.method));
+  d["order"] = s.order;
+  d["branch"] = s.branch;
+  d["terminal_error"] = s.terminal_error;
+  d["xi_terminal"] = s.xi_terminal;
+  d["sweeps"] = s.sweeps;
+  d["residual_history"] = to_numpy(s.residual_history);
+  d["solve_time"] = s.solve_time_s;
+  add_collocation_fields(d, s.collocation);
 }
 
 }  // namespace cartan::python

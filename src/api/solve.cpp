@@ -9,44 +9,27 @@ namespace {
 
 using detail::rows;
 
-/// What both kernels' solutions have, in numbers: status and words, the samples (points, v, mu and
-/// the auxiliary as rows), terminal errors, sweeps, time and collocation's report.
+/// A kernel's solution in numbers: its ResultCore moved, the samples (points, v, mu and the
+/// auxiliary: xi where the Lie-group kernel ran, Xi row-major where the general one did) as rows.
 template <class Solution, class Points, class Auxiliary>
-Result common_fields(Solution& s, const Points& points, const Auxiliary& aux, bool lie_kernel) {
+Result result_of(Solution&& s, const Points& points, const Auxiliary& aux, bool lie_kernel) {
   Result r;
-  r.status = s.status;
-  r.message = std::move(s.message);
-  r.method = s.method;
-  r.order = s.order;
-  r.branch = std::move(s.branch);
+  static_cast<ResultCore&>(r) = std::move(static_cast<ResultCore&>(s));
   r.lie_kernel = lie_kernel;
   const auto& x = s.trajectory;
   r.samples = {Eigen::Map<const Eigen::VectorXd>(x.t.data(), static_cast<Eigen::Index>(x.t.size())), rows(points), rows(x.v),
                rows(x.mu), rows(aux)};
-  r.terminal_error = s.terminal_error;
-  r.xi_terminal = s.xi_terminal;
-  r.sweeps = s.sweeps;
-  r.solve_time_s = s.solve_time_s;
-  r.collocation = s.collocation;
   return r;
 }
 
-/// The Lie-group kernel's solution in numbers (the auxiliary is xi; its action and iterations).
 template <groups::LieGroup G>
 Result result_of(transported::TransportedSolution<G>&& s) {
-  Result r = common_fields(s, s.trajectory.g, s.trajectory.xi, true);
-  r.action = s.action;
-  r.outer_iterations = s.outer_iterations;
-  r.inner_iterations = s.inner_iterations;
-  return r;
+  return result_of(std::move(s), s.trajectory.g, s.trajectory.xi, true);
 }
 
-/// The general solver's solution in numbers (the auxiliary is Xi, row-major).
 template <manifolds::ManifoldWithConnection M>
 Result result_of(general::GeneralSolution<M>&& s) {
-  Result r = common_fields(s, s.trajectory.q, s.trajectory.Xi, false);
-  r.inner_iterations = s.iterations;
-  return r;
+  return result_of(std::move(s), s.trajectory.q, s.trajectory.Xi, false);
 }
 
 template <class Vector>

@@ -184,7 +184,7 @@ TEST(GeneralSolve, DefaultShootingAndContinuationInTAgree) {
   const auto with_type = solve_general_shooting(typed, {.tolerance = 1e-10});
   const auto through_erasure = solve_general_shooting(problem, {.tolerance = 1e-10});
   ASSERT_TRUE(with_type.converged()) << with_type.message;
-  EXPECT_EQ(with_type.iterations, through_erasure.iterations);
+  EXPECT_EQ(with_type.inner_iterations, through_erasure.inner_iterations);
   EXPECT_EQ(with_type.sweeps, through_erasure.sweeps);
   EXPECT_NEAR_MATRIX(with_type.v0, through_erasure.v0, 1e-14 * with_type.v0.norm());
   EXPECT_NEAR_MATRIX(with_type.trajectory.q.back(), through_erasure.trajectory.q.back(), 1e-14);
@@ -193,7 +193,7 @@ TEST(GeneralSolve, DefaultShootingAndContinuationInTAgree) {
   options.continuation = cartan::Continuation::None;
   const auto from_guess = solve(problem, options, GeneralGuess<S2>{direct.v0, direct.Xi0, std::nullopt});
   EXPECT_EQ(from_guess.branch, "shooting (from the given guess)");
-  EXPECT_LE(from_guess.iterations, 2);
+  EXPECT_LE(from_guess.inner_iterations, 2);
   options.continuation = cartan::Continuation::T;
   GeneralShootingOptions one_iteration;
   one_iteration.max_iterations = 1;

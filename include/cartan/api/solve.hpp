@@ -74,26 +74,13 @@ struct Samples {
   Eigen::MatrixXd aux;
 };
 
-/// What every solve returns, whichever kernel ran.
-struct Result {
-  Status status = Status::NotConverged;
-  std::string message;
-  Method method = Method::Shooting;
-  int order = 1;
-  std::string branch;
+/// What every solve returns, whichever kernel ran: the kernels' ResultCore (principle/result.hpp;
+/// its action is the Lie-group kernel's discrete action S_h, NaN where the general kernel ran) and
+/// the solution as numbers.
+struct Result : ResultCore {
   bool lie_kernel = false;   ///< the auxiliary is xi (n numbers a row); else Xi (n^2)
   Samples samples;           ///< the solution; at a failure the best iterate of the requested problem, or no rows
   std::optional<Eigen::MatrixXd> frame0;  ///< a manifold problem: the rows e1, e2 of its frame at q0
-  double terminal_error = 0;
-  double xi_terminal = 0;
-  std::optional<double> action;  ///< the Lie-group kernel's discrete action S_h (NaN where it has none)
-  int outer_iterations = 0;
-  int inner_iterations = 0;
-  int sweeps = 0;
-  double solve_time_s = 0;
-  std::optional<CollocationReport> collocation;
-
-  bool converged() const { return status == Status::Converged; }
 };
 
 /// Whether the Lie-group kernel (xi in g*) solves `problem`: a Cartan–Schouten connection.

@@ -162,7 +162,7 @@ GeneralSolution<M> general_collocation_solution(const GeneralCollocation<M, L>& 
     }
   }
   s.collocation = CollocationReport{static_cast<int>(result.t.size()), result.max_rms_residual};
-  s.iterations = result.newton_iterations;
+  s.inner_iterations = result.newton_iterations;
   s.sweeps = result.jacobian_evaluations;
   return s;
 }

@@ -268,23 +268,18 @@ GeneralTrajectory<manifolds::GroupManifold<G>> general_trajectory_from_lie(const
 /// shooting of LieKernelProblem's family, a continuation path's result or run_lie_method's
 /// (solve.hpp): general's status rule applied), the method as it is, the message prefixed with
 /// "Lie-group kernel (Cartan–Schouten, lambda = ...): ".
-/// iterations are Levenberg–Marquardt's, summed over the stages of a continuation in T (the general
+/// The counters are the Lie kernel's: inner_iterations Levenberg–Marquardt's, summed over the stages of a continuation in T (the general
 /// kernel reports its last solve's); sweeps and residual_history are the Lie kernel's (2m
 /// unknowns, not m + m^2). A result without a trajectory keeps none.
 template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 GeneralSolution<manifolds::GroupManifold<G>> general_solution_from_lie(const LieKernelProblem<G, L>& problem,
                                                                        transported::TransportedSolution<G>&& lie) {
   GeneralSolution<manifolds::GroupManifold<G>> out;
-  out.status = lie.status;
-  out.message = "Lie-group kernel (Cartan–Schouten, lambda = " + format_value(problem.lambda) + "): " + lie.message;
-  out.method = lie.method;
-  out.branch = std::move(lie.branch);
-  out.order = lie.order;
+  static_cast<ResultCore&>(out) = std::move(static_cast<ResultCore&>(lie));
+  out.message = "Lie-group kernel (Cartan–Schouten, lambda = " + format_value(problem.lambda) + "): " + out.message;
+  out.action = std::numeric_limits<double>::quiet_NaN();  // a general result has none (ResultCore)
+  out.terminal_error = out.xi_terminal = 0;  // the general definitions, below, where there is a trajectory
   out.v0 = lie.v0;
-  out.iterations = lie.inner_iterations;
-  out.sweeps = lie.sweeps;
-  out.residual_history = std::move(lie.residual_history);
-  out.solve_time_s = lie.solve_time_s;
   if (lie.trajectory.t.empty()) return out;
   try {
     out.trajectory = general_trajectory_from_lie(problem, static_cast<SchemeOrder>(lie.order), std::move(lie.trajectory));

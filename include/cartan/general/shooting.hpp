@@ -178,7 +178,7 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
       {.velocity_size = m, .horizon = problem.T, .aux_scale = s, .analytic_jacobian = options.analytic_jacobian,
        .solver = solvers::solver_options(options)},
       y0);
-  solution.iterations = outcome.report.iterations;
+  solution.inner_iterations = outcome.report.iterations;
   solution.residual_history = outcome.report.residual_history;
   solution.sweeps = outcome.sweeps;
   solution.status = outcome.status;

@@ -45,26 +45,15 @@ struct GeneralTrajectory {
   GeneralNode<M> back() const { return {t.back(), q.back(), frame.back(), mu.back(), Xi.back(), v.back()}; }
 };
 
+/// The general kernel's result (ResultCore, principle/result.hpp): its trajectory and unknowns.
+/// Its action is NaN (the general kernel computes none); inner_iterations are
+/// Levenberg–Marquardt's or collocation's Newton's (along a continuation path: the last solve's).
 template <manifolds::ManifoldWithConnection M>
-struct GeneralSolution {
-  Status status = Status::NotConverged;
-  std::string message;
-  Method method = Method::Shooting;
-  std::string branch;
-  int order = 1;
+struct GeneralSolution : ResultCore {
   /// Every node of the requested problem's discrete solution (at a failure: of the best iterate).
   GeneralTrajectory<M> trajectory;
   manifolds::ComponentsOf<M> v0 = manifolds::ComponentsOf<M>::Zero();
   manifolds::ComponentMatrixOf<M> Xi0 = manifolds::ComponentMatrixOf<M>::Zero();
-  double terminal_error = 0;  ///< separation(qT, q_N): |difference(qT, q_N)| where it is a logarithm
-  double xi_terminal = 0;     ///< |Xi_N|
-  int iterations = 0;
-  int sweeps = 0;
-  std::vector<double> residual_history;
-  double solve_time_s = 0;
-  std::optional<CollocationReport> collocation;  ///< method collocation: mesh and residual
-
-  bool converged() const { return status == Status::Converged; }
 };
 
 /// The Lie-group shooting's options (order, tolerance, max_iterations, analytic_jacobian: the

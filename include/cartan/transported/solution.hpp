@@ -15,6 +15,7 @@
 namespace cartan::transported {
 
 using ::cartan::CollocationReport;
+using ::cartan::ResultCore;
 
 /// What only the variational integrator reports (variational.hpp): the steps' body velocities
 /// u_k = log(g_k^{-1} g_{k+1}) / h and transported velocities v_k = P_k^{-1} u_k (constant on each
@@ -27,34 +28,15 @@ struct VariationalReport {
   int unknowns = 0;
 };
 
+/// The Lie-group kernel's result (ResultCore, principle/result.hpp): its trajectory and unknowns.
 template <groups::LieGroup G>
-struct TransportedSolution {
-  Status status = Status::NotConverged;
-  std::string message;  ///< human-readable diagnostics (iterations, residuals, every attempt)
-  Method method = Method::Shooting;  ///< the method that produced this result (never Auto)
-  std::string branch;   ///< how the solution was reached (guess, continuation path, strategy)
-  int order = 1;        ///< of the discrete scheme (1, 2), the variational integrator (2) or collocation (4)
+struct TransportedSolution : ResultCore {
   /// The requested problem's trajectory: at a failure, the best iterate found *for the requested
   /// problem* (never a stage of a continuation at another T or lambda), or empty.
   TransportedTrajectory<G> trajectory;
   groups::TangentOf<G> v0 = groups::TangentOf<G>::Zero();
   groups::CovectorOf<G> xi0 = groups::CovectorOf<G>::Zero();
-  double terminal_error = 0;  ///< |log(gT^{-1} g_N)|
-  double xi_terminal = 0;     ///< |xi_N| (0 by construction in the two-level scheme)
-  int outer_iterations = 0;
-  int inner_iterations = 0;
-  int sweeps = 0;             ///< forward sweeps of the scheme (tangent sweeps count once)
-  std::vector<double> residual_history;
-  double solve_time_s = 0;
-  /// The discrete transported action S_h of the trajectory (transported/action.hpp), so that users
-  /// can tell solution branches apart; NaN when there is no trajectory or the solve was stopped on
-  /// request (stopped_on_request: interrupted, time-limit).
-  double action = std::numeric_limits<double>::quiet_NaN();
-
-  std::optional<CollocationReport> collocation;  ///< set by collocation only
   std::optional<VariationalReport<G>> variational;  ///< set by the variational integrator only
-
-  bool converged() const { return status == Status::Converged; }
 };
 
 /// What a solution carries besides its samples, one entry per node.
