@@ -241,7 +241,7 @@ json api_case(const Problem& problem, SolveOptions options) {
   out["lie_kernel"] = r.lie_kernel;
   out["outer_iterations"] = r.outer_iterations;
   out["inner_iterations"] = r.inner_iterations;
-  out["action"] = r.action ? number(*r.action) : json(nullptr);
+  out["action"] = r.lie_kernel ? number(r.action) : json(nullptr);  // the general kernel computes none
   out["frame0"] = r.frame0 ? entries(*r.frame0) : json(nullptr);
   out["progress"] = progress.record();
   out["verify"] = verified([&] { return api::verify(problem, x, r.order, options.tol, r.status); });
@@ -277,7 +277,7 @@ json general_case(const general::ErasedProblem<M>& problem, SolveOptions options
   const auto& x = s.trajectory;
   json out = common_record(s, times_of(x.t), table(x.q), table(x.v), table(x.mu), table(x.Xi));
   out["entry"] = "general::solve (erased)";
-  out["iterations"] = s.iterations;
+  out["iterations"] = s.inner_iterations;
   out["v0"] = entries(s.v0);
   out["Xi0"] = entries(s.Xi0);
   out["residual_history"] = residual_history(s.residual_history);
