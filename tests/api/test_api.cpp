@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "cartan/api/solve.hpp"
 #include "cartan/groups/so3.hpp"
@@ -125,6 +126,34 @@ TEST(Api, TheFreeParticleOnTheHyperbolicPlaneFollowsTheGeodesicAtConstantSpeed) 
   testing::expect_invalid([&] { check(outside); }, {"qT = 2,0,1", "hyperbolic plane"});
   outside.manifold = "torus";
   testing::expect_invalid([&] { check(outside); }, {"manifold = \"torus\"", "sphere, hyperbolic-plane"});
+}
+
+TEST(Api, ADivergingIterateIsAFailedStatusNotAFaultOfTheModel) {
+  // The particle on the sphere with gravity at a long horizon: shooting from the geodesic guess
+  // sends an iterate's velocity to NaN inside a step. A non-finite Hessian at a non-finite
+  // velocity is the solver's business (a failed sweep), not a ModelError blaming the Lagrangian:
+  // every method returns a result, and a result that says converged verifies.
+  ManifoldProblem p;
+  p.mass = {1, 2.5};
+  p.gravity = 3;
+  p.q0 = {1, 0, 0.2};
+  p.qT = {0, 0.6, -0.8};
+  p.T = 8;
+  p.N = 200;
+  for (const auto& [method, continuation] : {std::pair{Method::Auto, Continuation::None},
+                                            std::pair{Method::Shooting, Continuation::None},
+                                            std::pair{Method::Shooting, Continuation::T}}) {
+    SolveOptions options;
+    options.method = method;
+    options.continuation = continuation;
+    Result r;
+    ASSERT_NO_THROW(r = solve(p, options)) << to_string(method) << " " << to_string(continuation);
+    EXPECT_FALSE(r.message.empty());
+    if (r.converged()) {
+      const verify::Report report = verify(p, r.samples, r.order, cartan::kDefaultTol, r.status);
+      EXPECT_TRUE(report.passed()) << report.text();
+    }
+  }
 }
 
 TEST(Api, VerifyFailsSamplesThatAreNotASolution) {

@@ -32,7 +32,9 @@ LagrangianHessian<M> lagrangian_hessian_fd(const M& manifold, const L& l, double
 }
 
 /// The Lagrangian's `hessian(manifold, t, q, v)` when it has one, central differences otherwise;
-/// throws ModelError (naming the callback) if an entry is not finite.
+/// throws ModelError (naming the callback) if an entry is not finite although q and v are finite
+/// and moderate (mechanics::require_finite_result's rule): at a diverging iterate's point the
+/// non-finite Hessian is returned, and the sweep that needs it fails as the solver's business.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 LagrangianHessian<M> lagrangian_hessian(const M& manifold, const L& l, double t, const manifolds::PointOf<M>& q,
                                         const manifolds::ComponentsOf<M>& v) {
@@ -42,7 +44,7 @@ LagrangianHessian<M> lagrangian_hessian(const M& manifold, const L& l, double t,
   } else {
     h = lagrangian_hessian_fd(manifold, l, t, q, v);
   }
-  if (!h.all_finite()) {
+  if (!h.all_finite() && mechanics::moderate_arguments(t, q, v)) {
     throw ModelError("lagrangian.hessian returned a non-finite value at t = " + format_value(t) + ", v = " +
                      format_value(v));
   }

@@ -59,6 +59,14 @@ bool all_finite(const Eigen::MatrixBase<Derived>& x) {
 /// on them (1e100^3 = 1e300 < 1.8e308). Larger ones come from a diverging iterate.
 inline constexpr double kModerateArgument = 1e100;
 
+/// Whether t, g and x are finite and moderate (every entry at most kModerateArgument): where a
+/// model callback's non-finite result is the model's fault, not a diverging iterate's.
+template <class E, class X>
+bool moderate_arguments(double t, const E& g, const X& x) {
+  const auto moderate = [](const auto& a) { return a.cwiseAbs().maxCoeff() <= kModerateArgument; };  // false for NaN
+  return std::abs(t) <= kModerateArgument && moderate(g) && moderate(x);
+}
+
 /// `result` of the model callback `callback` (e.g. "lagrangian.momentum") at (t, g, x), or
 /// ModelError naming the callback and its arguments when it is not finite although the
 /// arguments are finite and moderate (every entry at most kModerateArgument): the model's fault,
@@ -67,8 +75,7 @@ inline constexpr double kModerateArgument = 1e100;
 /// diverging iterate, whose overflow is no defect of the model) and pass through.
 template <class R, class E, class X>
 const R& require_finite_result(const R& result, std::string_view callback, double t, const E& g, const X& x) {
-  const auto moderate = [](const auto& a) { return a.cwiseAbs().maxCoeff() <= kModerateArgument; };  // false for NaN
-  if (!all_finite(result) && std::abs(t) <= kModerateArgument && moderate(g) && moderate(x)) {
+  if (!all_finite(result) && moderate_arguments(t, g, x)) {
     throw ModelError(std::string(callback) + " returned a non-finite value at t = " + format_value(t) +
                                 ", g = " + format_value(g) + ", argument = " + format_value(x));
   }
