@@ -1,9 +1,11 @@
 #pragma once
-// Continuation paths, written once for every problem family with shooting (the Lie-group kernel's
-// TransportedProblem, transported/continuation.hpp; the general GeneralProblem, general/solve.hpp;
-// the Lie-group kernel inside the general solve, general/lie_kernel.hpp). ShootingFamily<Problem>
-// says how to shoot and where the unknowns (a velocity and an auxiliary: (v0, xi0) or (v0, Xi0))
-// live in a solution; the path itself (docs/paper-notes.md#erratum-4):
+// Continuation paths, written once for every problem family with shooting and compiled once
+// (src/solvers/continuation.cpp): the Lie-group kernel's TransportedProblem
+// (transported/continuation.hpp), the general GeneralProblem (general/solve.hpp), the Lie-group
+// kernel inside the general solve (general/lie_kernel.hpp). ShootingFamily<Problem> says how to
+// shoot one problem of a family and where its unknowns (a velocity and an auxiliary: (v0, xi0)
+// or (v0, Xi0)) live in a solution; FamilyPath (below) hands a family to the compiled path as a
+// ShootingPath, its solutions as PathResults. The path itself (docs/paper-notes.md#erratum-4):
 //  * in T: halve the horizon until shooting from the guess converges, then lengthen it step by
 //    step (same step size h, so N scales with T), each solve starting from the previous
 //    unknowns; a failed stage halves the increment;
@@ -11,38 +13,55 @@
 // A failed path returns the best iterate *of the requested problem*, never a stage's trajectory
 // at another T or lambda, and its message says where the path stopped.
 
+#include <Eigen/Core>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
 
-#include "cartan/errors.hpp"
-#include "cartan/monitor.hpp"
 #include "cartan/principle/options.hpp"
-#include "cartan/principle/vocabulary.hpp"
-#include "cartan/status.hpp"
+#include "cartan/principle/result.hpp"
 
 namespace cartan::solvers {
 
-/// How continuation drives shooting on one problem family (header comment).
-template <class Problem>
-struct ShootingFamily;
+/// One solution of a family on a path: its ResultCore and its unknowns as numbers (an auxiliary
+/// matrix column-major). Moved, never copied (a trajectory may hold 0.3 GB).
+class PathResult {
+ public:
+  virtual ~PathResult() = default;
+  virtual ResultCore& core() = 0;
+  virtual const ResultCore& core() const = 0;
+  virtual Eigen::VectorXd velocity() const = 0;
+  virtual Eigen::VectorXd auxiliary() const = 0;
+  virtual bool has_trajectory() const = 0;
+};
+using PathResultPtr = std::unique_ptr<PathResult>;
 
-namespace detail {
-
-/// The size of a result's terminal residual in the units of the convergence test.
-template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
-double scaled_residual(const Problem& problem, const Solution& s) {
-  if (s.trajectory.t.empty()) return std::numeric_limits<double>::infinity();
-  return std::hypot(s.terminal_error, s.xi_terminal / ShootingFamily<Problem>::auxiliary_scale(problem));
-}
+/// A problem family along a scalar parameter p (the horizon T, or lambda): the problem at p is
+/// the family's, shot from given unknowns. Sizes are the family's own (typed) norms, so that the
+/// compiled path computes what the typed one did to the bit (docs/design/one-core.md, R1).
+class ShootingPath {
+ public:
+  virtual ~ShootingPath() = default;
+  virtual PathResultPtr shoot(double p, const ShootingOptions& options, const Eigen::VectorXd& velocity,
+                              const Eigen::VectorXd& auxiliary) const = 0;
+  virtual PathResultPtr empty() const = 0;                ///< a result without trajectory
+  virtual Eigen::VectorXd guess(double p) const = 0;      ///< the family's guess of the velocity at p
+  virtual Eigen::VectorXd zero_auxiliary() const = 0;
+  virtual double auxiliary_scale(double p) const = 0;     ///< the unit of the auxiliary at p
+  virtual double velocity_norm(const Eigen::VectorXd& v) const = 0;
+  virtual double auxiliary_norm(const Eigen::VectorXd& a) const = 0;
+  /// Whether a result's inner_iterations count along a path (the general kernel reports its last
+  /// solve's: docs/design/one-core.md, D8).
+  virtual bool sums_inner_iterations() const = 0;
+};
 
 /// Where a continuation path stopped.
 struct PathEnd {
@@ -52,210 +71,186 @@ struct PathEnd {
   std::string why;      ///< empty when complete
 };
 
-/// Walks a scalar parameter from `from` to `to` along one solution branch; `make(s)` builds the
-/// problem at parameter s. Predictor: the secant through the last two accepted solutions (the
-/// previous solution for the first stage). Corrector: shooting from the prediction, abandoned
-/// at once when the residual at the prediction exceeds max_stage_residual, and to
-/// stage_tolerance except at the last stage. A stage is accepted when it converges *and* lands
-/// within max_correction of the prediction (in the relative norm of `distance` below); otherwise
-/// the increment is halved. On a smooth branch the
-/// correction shrinks with the increment (quadratically after the first stage), so a small
-/// enough stage is always accepted; a corrector that converges far from the prediction has
-/// jumped to another branch (bench/README.md, "continuation acceptance"). Accumulates work into
-/// `current`. Progress reports name the stage: "continuation in <parameter>, stage k at <parameter> = s".
-template <class MakeProblem, class Problem = std::invoke_result_t<MakeProblem, double>,
-          class Solution = typename ShootingFamily<Problem>::Solution>
-PathEnd continue_parameter(const MakeProblem& make, double from, double to, Solution& current,
-                           const ContinuationOptions& options, std::string_view parameter) {
-  using Family = ShootingFamily<Problem>;
-  using Velocity = typename Family::Velocity;
-  using Auxiliary = typename Family::Auxiliary;
-  PathEnd end{from, 0, false, {}};
-  double increment = (to - from) / options.initial_stages;
-  int sweeps = current.sweeps, iterations = Family::inner_iterations(current);
-  const ShootingOptions path = path_shooting(options);
-  // Relative sizes: v0 against the start's |v0| (or the target's geodesic speed), the auxiliary
-  // against the start's (or the target's scale).
-  const Problem target = make(to);
-  const double v_ref = std::max(Family::velocity(current).norm(), Family::guess(target).norm());
-  const double aux_ref = std::max(Family::auxiliary(current).norm(), Family::auxiliary_scale(target));
-  const auto distance = [&](const Velocity& dv, const Auxiliary& da) {
-    return std::hypot(v_ref > 0 ? dv.norm() / v_ref : dv.norm(), da.norm() / aux_ref);
-  };
-  std::optional<std::pair<Velocity, Auxiliary>> previous;  // the solution before `current`
-  double previous_s = from;
-  while (end.reached != to) {
-    if (end.stages >= options.max_stages) {
-      end.why = "max_stages = " + std::to_string(options.max_stages) + " reached";
-      break;
-    }
-    if (path.monitor != nullptr && path.monitor->stop_requested()) {
-      end.why = "stop requested";
-      break;
-    }
-    const double next = std::abs(to - end.reached) <= std::abs(increment) ? to : end.reached + increment;
-    ++end.stages;
-    Velocity v_pred = Family::velocity(current);
-    Auxiliary aux_pred = Family::auxiliary(current);
-    if (previous) {
-      const double ratio = (next - end.reached) / (end.reached - previous_s);
-      v_pred += ratio * (Family::velocity(current) - previous->first);
-      aux_pred += ratio * (Family::auxiliary(current) - previous->second);
-    }
-    ShootingOptions stage = path;
-    const std::string name = std::string(parameter);
-    const std::optional<SolveMonitor> named = SolveMonitor::staged(
-        path.monitor, "continuation in " + name + ", stage " + std::to_string(end.stages) + " at " + name + " = " +
-                          format_value(next));
-    if (named) stage.monitor = &*named;
-    stage.max_initial_residual = options.max_stage_residual;
-    if (next != to) stage.tolerance = std::max(path.tolerance, options.stage_tolerance);
-    Solution trial = Family::shoot(make(next), stage, v_pred, aux_pred);
-    sweeps += trial.sweeps;
-    iterations += Family::inner_iterations(trial);
-    if (trial.converged() &&
-        distance(Family::velocity(trial) - v_pred, Family::auxiliary(trial) - aux_pred) <= options.max_correction) {
-      previous.emplace(Family::velocity(current), Family::auxiliary(current));
-      previous_s = end.reached;
-      end.reached = next;
-      // The secant predictor's error grows as the square of the increment: aim the next stage at
-      // half the residual limit, growing by at most 2 (1.5 when the stage gave no residual).
-      const double r0 = trial.residual_history.empty() ? 0.0 : trial.residual_history.front();
-      current = std::move(trial);
-      increment *= r0 > 0 ? std::clamp(std::sqrt(options.max_stage_residual / 2 / r0), 0.5, 2.0) : 1.5;
-    } else {
-      increment /= 2;
-      if (std::abs(increment) < options.min_increment * std::abs(to - from)) {
-        end.why = "the increment fell below " + format_value(options.min_increment) +
-                  " of the distance (a fold of the solution branch or a singularity near " +
-                  format_value(end.reached) + ")";
-        break;
-      }
-    }
-  }
-  current.sweeps = sweeps;
-  Family::set_inner_iterations(current, iterations);
-  end.complete = end.reached == to;
-  return end;
+/// The size of a result's terminal residual in the units of the convergence test, for an
+/// auxiliary of unit `auxiliary_scale` (a result with a trajectory).
+inline double scaled_residual(const ResultCore& s, double auxiliary_scale) {
+  return std::hypot(s.terminal_error, s.xi_terminal / auxiliary_scale);
 }
 
-/// The failure result of a continuation of `problem`: the better (smaller scaled residual) of
-/// `direct` (an attempt on the requested problem, may be null; its trajectory is moved from, not
-/// copied) and a solve of the requested problem from the last stage reached; status
+/// Walks the parameter from `from` to `to` along one solution branch, from `current` (a solution
+/// at `from`, replaced by the last accepted stage's). Predictor: the secant through the last two
+/// accepted solutions (the previous solution for the first stage). Corrector: shooting from the
+/// prediction, abandoned at once when the residual at the prediction exceeds max_stage_residual,
+/// and to stage_tolerance except at the last stage. A stage is accepted when it converges *and*
+/// lands within max_correction of the prediction (in the relative norm of `distance`); otherwise
+/// the increment is halved. On a smooth branch the correction shrinks with the increment
+/// (quadratically after the first stage), so a small enough stage is always accepted; a corrector
+/// that converges far from the prediction has jumped to another branch (bench/README.md,
+/// "continuation acceptance"). Accumulates work into `current`. Progress reports name the stage:
+/// "continuation in <parameter>, stage k at <parameter> = s".
+PathEnd continue_parameter(const ShootingPath& path, double from, double to, PathResultPtr& current,
+                           const ContinuationOptions& options, std::string_view parameter);
+
+/// A solution's unknowns as numbers.
+struct Unknowns {
+  Eigen::VectorXd velocity, auxiliary;
+};
+
+/// The failure result of a continuation of the problem at `requested`: the better (smaller scaled
+/// residual) of `direct` (an attempt on the requested problem, may be null) and a solve of the
+/// requested problem from the unknowns of the last stage reached (if any); status
 /// ContinuationFailed (or Interrupted), all work counted.
-template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
-Solution best_iterate(const Problem& problem, Solution* direct, const Solution* last_stage,
-                      const ContinuationOptions& options, int sweeps, int iterations) {
-  using Family = ShootingFamily<Problem>;
-  Solution best;
-  best.trajectory = {};
-  double best_size = std::numeric_limits<double>::infinity();
-  const auto consider = [&](Solution candidate) {
-    const double size = scaled_residual(problem, candidate);
-    if (size < best_size || best.trajectory.t.empty()) {
-      best_size = size;
-      best = std::move(candidate);
-    }
-  };
-  if (direct != nullptr) consider(std::move(*direct));
-  const bool stopped = options.shooting.monitor != nullptr && options.shooting.monitor->stop_requested();
-  if (last_stage != nullptr && !stopped) {
-    Solution from_stage =
-        Family::shoot(problem, path_shooting(options), Family::velocity(*last_stage), Family::auxiliary(*last_stage));
-    sweeps += from_stage.sweeps;
-    iterations += Family::inner_iterations(from_stage);
-    if (from_stage.converged()) {
-      from_stage.sweeps = sweeps;
-      Family::set_inner_iterations(from_stage, iterations);
-      return from_stage;  // the last stage was close enough after all
-    }
-    consider(std::move(from_stage));
-  }
-  best.status = stopped ? Status::Interrupted : Status::ContinuationFailed;
-  best.sweeps = sweeps;
-  Family::set_inner_iterations(best, iterations);
-  return best;
+PathResultPtr best_iterate(const ShootingPath& path, double requested, PathResultPtr direct,
+                           const std::optional<Unknowns>& last_stage, const ContinuationOptions& options, int sweeps,
+                           int iterations);
+
+/// Continuation in T of the problem at `T` (the path's parameter is the horizon), from the given
+/// guesses (the velocity scaled by T / T' at a shorter horizon T'). `failed_direct`, when not
+/// null, is a failed attempt at the full horizon from the same guess, not repeated.
+PathResultPtr continue_in_T(const ShootingPath& path, double T, const ContinuationOptions& options,
+                            const std::optional<Eigen::VectorXd>& velocity_guess,
+                            const std::optional<Eigen::VectorXd>& auxiliary_guess, PathResultPtr failed_direct);
+
+/// How continuation drives shooting on one problem family (header comment): the types Solution,
+/// Velocity, Auxiliary; shoot(problem, options, velocity, auxiliary); velocity(s), auxiliary(s),
+/// guess(problem), auxiliary_scale(problem); inner_iterations(s), set_inner_iterations(s, n).
+template <class Problem>
+struct ShootingFamily;
+
+namespace detail {
+
+/// A fixed-size vector or matrix as numbers (column-major), and back.
+template <class X>
+Eigen::VectorXd flat(const X& x) {
+  return Eigen::Map<const Eigen::VectorXd>(x.data(), x.size());
+}
+template <class X>
+X typed(const Eigen::VectorXd& numbers) {
+  X x;
+  Eigen::Map<Eigen::VectorXd>(x.data(), x.size()) = numbers;
+  return x;
 }
 
-/// Continuation in T of any problem family (solve_continuation_in_T below; general/solve.hpp).
-/// `failed_direct`, when not null, is moved from.
-template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
-Solution continue_in_T(const Problem& problem, const ContinuationOptions& options,
-                       std::optional<typename ShootingFamily<Problem>::Velocity> v0_guess,
-                       std::optional<typename ShootingFamily<Problem>::Auxiliary> aux_guess,
-                       Solution* failed_direct) {
+/// A family's solution as a PathResult.
+template <class Family>
+struct ResultOf final : PathResult {
+  typename Family::Solution value;
+
+  explicit ResultOf(typename Family::Solution s) : value(std::move(s)) {}
+  ResultCore& core() override { return value; }
+  const ResultCore& core() const override { return value; }
+  Eigen::VectorXd velocity() const override { return flat(Family::velocity(value)); }
+  Eigen::VectorXd auxiliary() const override { return flat(Family::auxiliary(value)); }
+  bool has_trajectory() const override { return !value.trajectory.t.empty(); }
+};
+
+}  // namespace detail
+
+/// The family of `Problem` along the parameter p, make(p) the problem at p.
+template <class Problem, class Make>
+class FamilyPath final : public ShootingPath {
+ public:
   using Family = ShootingFamily<Problem>;
+  using Solution = typename Family::Solution;
   using Velocity = typename Family::Velocity;
   using Auxiliary = typename Family::Auxiliary;
-  if (failed_direct != nullptr && failed_direct->converged()) {
-    throw std::invalid_argument("solve_continuation_in_T: failed_direct is a converged result; return it instead");
+
+  explicit FamilyPath(Make make) : make_(std::move(make)) {
+    Solution probe;  // the family counts inner iterations along a path iff it keeps what it is given
+    Family::set_inner_iterations(probe, 1);
+    sums_ = Family::inner_iterations(probe) == 1;
   }
-  const auto start_time = std::chrono::steady_clock::now();
-  const double h = problem.step();
-  auto make = [&](double horizon) {
+
+  static PathResultPtr wrap(Solution s) { return std::make_unique<detail::ResultOf<Family>>(std::move(s)); }
+  /// The solution a PathResult of this family holds, moved out.
+  static Solution take(PathResultPtr r) {
+    auto* of = dynamic_cast<detail::ResultOf<Family>*>(r.get());
+    if (of == nullptr) throw std::logic_error("solvers::FamilyPath::take: a result of another family");
+    return std::move(of->value);
+  }
+
+  PathResultPtr shoot(double p, const ShootingOptions& options, const Eigen::VectorXd& velocity,
+                      const Eigen::VectorXd& auxiliary) const override {
+    return wrap(Family::shoot(make_(p), options, detail::typed<Velocity>(velocity), detail::typed<Auxiliary>(auxiliary)));
+  }
+  PathResultPtr empty() const override { return wrap(Solution{}); }
+  Eigen::VectorXd guess(double p) const override { return detail::flat(Family::guess(make_(p))); }
+  Eigen::VectorXd zero_auxiliary() const override { return detail::flat(Auxiliary(Auxiliary::Zero())); }
+  double auxiliary_scale(double p) const override { return Family::auxiliary_scale(make_(p)); }
+  double velocity_norm(const Eigen::VectorXd& v) const override { return detail::typed<Velocity>(v).norm(); }
+  double auxiliary_norm(const Eigen::VectorXd& a) const override { return detail::typed<Auxiliary>(a).norm(); }
+  bool sums_inner_iterations() const override { return sums_; }
+
+ private:
+  Make make_;
+  bool sums_ = true;
+};
+
+template <class Problem, class Make>
+FamilyPath<Problem, Make> family_path(Make make) {
+  return FamilyPath<Problem, Make>(std::move(make));
+}
+
+namespace detail {
+
+/// The size of a result's terminal residual in the units of the convergence test.
+template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
+double scaled_residual(const Problem& problem, const Solution& s) {
+  if (s.trajectory.t.empty()) return std::numeric_limits<double>::infinity();
+  return solvers::scaled_residual(s, ShootingFamily<Problem>::auxiliary_scale(problem));
+}
+
+/// The problem of the T path at horizon T' (same step h = T / N, N' = round(T' / h) >= 1; exactly
+/// `problem` at T).
+template <class Problem>
+auto horizon_family(const Problem& problem) {
+  return family_path<Problem>([&problem, h = problem.step()](double horizon) {
     Problem p = problem;
     p.T = horizon;
     p.N = std::max(1, static_cast<int>(std::lround(horizon / h)));
     if (horizon == problem.T) p.N = problem.N;
     return p;
-  };
-  const ShootingOptions path = path_shooting(options);
-  double start = problem.T;
-  // `first`: the last attempt from a guess; `direct`: the attempt at the full horizon. Solutions
-  // are moved, never copied, where they may hold a long trajectory (N = 2e6: 0.3 GB).
-  Solution first, direct;
-  bool direct_is_first = false;  // the loop ended on the direct attempt, which is then `first`
-  int sweeps = 0, iterations = 0;
-  for (int halving = 0; halving <= options.max_halvings; ++halving, start /= 2) {
-    if (halving == 0 && failed_direct != nullptr) {
-      direct = std::move(*failed_direct);
-      continue;
-    }
-    const Problem p = make(start);
-    // The given guess is a velocity of the requested problem: at horizon T' the same path
-    // needs T / T' times its speed.
-    const Velocity v0 = v0_guess ? Velocity(*v0_guess * (problem.T / start)) : Family::guess(p);
-    ShootingOptions start_options = path;
-    const std::optional<SolveMonitor> named =
-        SolveMonitor::staged(path.monitor, "continuation in T, start at T = " + format_value(start));
-    if (named) start_options.monitor = &*named;
-    if (halving > 0) start_options.max_initial_residual = options.max_start_residual;
-    first = Family::shoot(p, start_options, v0, aux_guess && halving == 0 ? *aux_guess : Auxiliary(Auxiliary::Zero()));
-    sweeps += first.sweeps;
-    iterations += Family::inner_iterations(first);
-    const bool done = first.converged() || first.status == Status::Interrupted;
-    if (halving == 0 && done) direct_is_first = true;
-    if (done) break;
-    if (halving == 0) direct = std::move(first);
-  }
-  first.sweeps = sweeps;
-  Family::set_inner_iterations(first, iterations);
-  std::ostringstream path_text;
-  Solution result;
-  if (!first.converged()) {
-    path_text << "no horizon down to T = " << format_value(start) << " converged from the "
-              << (v0_guess ? "given" : "geodesic") << " guess";
-    result = best_iterate(problem, direct_is_first ? &first : &direct, static_cast<const Solution*>(nullptr), options,
-                          sweeps, iterations);
-  } else if (start == problem.T) {
-    path_text << (v0_guess || aux_guess ? "direct from the given guess" : "direct from the geodesic guess");
-    result = std::move(first);
-  } else {
-    path_text << "continued in T from T = " << format_value(start);
-    result = std::move(first);
-    const PathEnd end = continue_parameter(make, start, problem.T, result, options, "T");
-    path_text << " (" << end.stages << " stages)";
-    if (!end.complete) {
-      path_text << "; stopped at T = " << format_value(end.reached) << ": " << end.why;
-      result = best_iterate(problem, &direct, &result, options, result.sweeps, Family::inner_iterations(result));
-    }
-  }
-  result.method = Method::Shooting;
-  result.branch = result.converged() ? path_text.str() : "failed: " + path_text.str();
-  result.message = "continuation in T: " + path_text.str() + "; " + std::to_string(result.sweeps) +
-                   " sweeps in all; the returned iterate: " + result.message;
-  result.solve_time_s = seconds_since(start_time);
-  return result;
+  });
+}
+
+/// continue_parameter on a family: make(s) the problem at s; `current` a solution at `from`.
+template <class MakeProblem, class Problem = std::invoke_result_t<MakeProblem, double>,
+          class Solution = typename ShootingFamily<Problem>::Solution>
+PathEnd continue_parameter(const MakeProblem& make, double from, double to, Solution& current,
+                           const ContinuationOptions& options, std::string_view parameter) {
+  const auto path = family_path<Problem>(std::cref(make));
+  PathResultPtr now = path.wrap(std::move(current));
+  PathEnd end = solvers::continue_parameter(path, from, to, now, options, parameter);
+  current = path.take(std::move(now));
+  return end;
+}
+
+/// best_iterate on a family: `problem` the requested one; `direct` (may be null) is moved from,
+/// `last_stage` (may be null) read.
+template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
+Solution best_iterate(const Problem& problem, Solution* direct, const Solution* last_stage,
+                      const ContinuationOptions& options, int sweeps, int iterations) {
+  using Family = ShootingFamily<Problem>;
+  const auto path = family_path<Problem>([&problem](double) { return problem; });
+  std::optional<Unknowns> last;
+  if (last_stage != nullptr) last = Unknowns{flat(Family::velocity(*last_stage)), flat(Family::auxiliary(*last_stage))};
+  return path.take(solvers::best_iterate(path, 0, direct != nullptr ? path.wrap(std::move(*direct)) : nullptr, last,
+                                         options, sweeps, iterations));
+}
+
+/// continue_in_T on a family (solve_continuation_in_T, transported/continuation.hpp;
+/// general/solve.hpp). `failed_direct`, when not null, is moved from.
+template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
+Solution continue_in_T(const Problem& problem, const ContinuationOptions& options,
+                       std::optional<typename ShootingFamily<Problem>::Velocity> v0_guess,
+                       std::optional<typename ShootingFamily<Problem>::Auxiliary> aux_guess,
+                       Solution* failed_direct) {
+  const auto path = horizon_family(problem);
+  std::optional<Eigen::VectorXd> v, a;
+  if (v0_guess) v = flat(*v0_guess);
+  if (aux_guess) a = flat(*aux_guess);
+  return path.take(solvers::continue_in_T(path, problem.T, options, v, a,
+                                          failed_direct != nullptr ? path.wrap(std::move(*failed_direct)) : nullptr));
 }
 
 }  // namespace detail

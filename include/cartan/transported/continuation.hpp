@@ -101,7 +101,7 @@ TransportedSolution<G> solve_continuation_in_lambda(const TransportedProblem<G, 
                                   options, result.sweeps, result.inner_iterations);
   } else {
     path_text << "continued in lambda from lambda = " << format_value(lambda_start) << " [" << result.branch << "]";
-    const solvers::detail::PathEnd end = solvers::detail::continue_parameter(make, lambda_start, problem.lambda, result, options, "lambda");
+    const solvers::PathEnd end = solvers::detail::continue_parameter(make, lambda_start, problem.lambda, result, options, "lambda");
     path_text << " (" << end.stages << " stages)";
     if (!end.complete) {
       path_text << "; stopped at lambda = " << format_value(end.reached) << ": " << end.why;
