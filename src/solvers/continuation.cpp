@@ -186,8 +186,8 @@ PathResultPtr continue_in_T(const ShootingPath& family, double T, const Continua
     if (!end.complete) {
       path_text << "; stopped at T = " << format_value(end.reached) << ": " << end.why;
       const Unknowns last{result->velocity(), result->auxiliary()};
-      result = best_iterate(family, T, std::move(direct), last, options, result->core().sweeps,
-                            iterations_of(family, *result));
+      const int path_sweeps = result->core().sweeps, path_iterations = iterations_of(family, *result);
+      result = best_iterate(family, T, std::move(direct), last, options, path_sweeps, path_iterations);
     }
   }
   ResultCore& core = result->core();
@@ -196,6 +196,37 @@ PathResultPtr continue_in_T(const ShootingPath& family, double T, const Continua
   core.message = "continuation in T: " + path_text.str() + "; " + std::to_string(core.sweeps) +
                  " sweeps in all; the returned iterate: " + core.message;
   core.solve_time_s = seconds_since(start_time);
+  return result;
+}
+
+PathResultPtr continue_in_parameter(const ShootingPath& family, double from, double to, PathResultPtr start,
+                                    const ContinuationOptions& options, std::string_view parameter,
+                                    std::chrono::steady_clock::time_point started) {
+  std::ostringstream path_text;
+  PathResultPtr result = std::move(start);
+  const int sweeps = result->core().sweeps, iterations = iterations_of(family, *result);
+  if (!result->core().converged()) {
+    path_text << "no solution at " << parameter << " = " << format_value(from) << " (" << result->core().branch << ")";
+    const bool same = from == to;  // then that attempt was of the requested problem
+    result = best_iterate(family, to, same ? std::move(result) : nullptr, std::nullopt, options, sweeps, iterations);
+  } else {
+    path_text << "continued in " << parameter << " from " << parameter << " = " << format_value(from) << " ["
+              << result->core().branch << "]";
+    const PathEnd end = continue_parameter(family, from, to, result, options, parameter);
+    path_text << " (" << end.stages << " stages)";
+    if (!end.complete) {
+      path_text << "; stopped at " << parameter << " = " << format_value(end.reached) << ": " << end.why;
+      const Unknowns last{result->velocity(), result->auxiliary()};
+      const int path_sweeps = result->core().sweeps, path_iterations = iterations_of(family, *result);
+      result = best_iterate(family, to, nullptr, last, options, path_sweeps, path_iterations);
+    }
+  }
+  ResultCore& core = result->core();
+  core.method = Method::Shooting;
+  core.branch = core.converged() ? path_text.str() : "failed: " + path_text.str();
+  core.message = "continuation in " + std::string(parameter) + ": " + path_text.str() + "; " +
+                 std::to_string(core.sweeps) + " sweeps in all; the returned iterate: " + core.message;
+  core.solve_time_s = seconds_since(started);
   return result;
 }
 

@@ -13,7 +13,6 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <sstream>
 
 #include "cartan/general/compiled.hpp"
 #include "cartan/general/scheme.hpp"
@@ -39,8 +38,7 @@ template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 double xi_scale(const GeneralProblem<M, L>& problem) {
   manifolds::ComponentsOf<M> v = geodesic_guess(problem);
   if (!(v.norm() > 0)) v = manifolds::ComponentsOf<M>::Unit(0) / problem.T;
-  const double scale = problem.T * v.norm() * problem.lagrangian.momentum(0, problem.q0, v).norm();
-  return std::isfinite(scale) && scale > std::numeric_limits<double>::min() ? scale : 1.0;
+  return solvers::aux_scale(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.q0, v).norm());
 }
 
 /// Runs the N steps from (v0, Xi0); returns the last node, or nothing (with `failure` set) when
@@ -173,23 +171,16 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   detail::GeneralShootingKernel<M, L> kernel(scheme, options.monitor, solution);
   Eigen::VectorXd y0(m + m * m);
   y0 << v0_guess, Xi0_guess.reshaped();
-  const numerics::ShootingOutcome outcome = numerics::shoot(
-      kernel,
-      {.velocity_size = m, .horizon = problem.T, .aux_scale = s, .analytic_jacobian = options.analytic_jacobian,
-       .solver = solvers::solver_options(options)},
-      y0);
-  solution.inner_iterations = outcome.report.iterations;
-  solution.residual_history = outcome.report.residual_history;
-  solution.sweeps = outcome.sweeps;
-  solution.status = outcome.status;
-  const bool missed = outcome.has_trajectory && solution.converged() && !(solution.terminal_error <= options.tolerance);
-  if (missed) solution.status = Status::NotConverged;  // never a wrong "converged"
-  std::ostringstream message;
-  message << "general shooting (" << (options.analytic_jacobian ? "tangent-linear" : "finite-difference")
-          << " Jacobian, Xi scale " << format_value(s)
-          << (scheme.uses_constant_components() ? ", constant frame components" : "") << "): " << outcome.summary();
-  if (missed) message << "; but q_N is " << format_value(solution.terminal_error) << " from qT: not converged";
-  solution.message = message.str();
+  const numerics::ShootingOutcome outcome =
+      solvers::shoot(kernel, m, problem.T, s, options, y0,
+                     {"general shooting", "tangent-linear", "Xi",
+                      scheme.uses_constant_components() ? ", constant frame components" : ""},
+                     solution);
+  // Never a wrong "converged": Levenberg–Marquardt's residual is small, but q_N is not at qT.
+  if (outcome.has_trajectory && solution.converged() && !(solution.terminal_error <= options.tolerance)) {
+    solution.status = Status::NotConverged;
+    solution.message += "; but q_N is " + format_value(solution.terminal_error) + " from qT: not converged";
+  }
   solution.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return solution;
 }

@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -110,6 +111,15 @@ PathResultPtr best_iterate(const ShootingPath& path, double requested, PathResul
 PathResultPtr continue_in_T(const ShootingPath& path, double T, const ContinuationOptions& options,
                             const std::optional<Eigen::VectorXd>& velocity_guess,
                             const std::optional<Eigen::VectorXd>& auxiliary_guess, PathResultPtr failed_direct);
+
+/// Continuation in `parameter` (lambda) of the problems `path` makes, from `start` (a solve at
+/// `from`, e.g. continuation in T's at lambda_start) to `to`, the requested problem's value; the
+/// result's words name the path ("continued in lambda from lambda = ... [start's branch] (k
+/// stages)"), its time counts from `started`. A start that failed gives the best iterate of the
+/// requested problem: itself if from == to, else none.
+PathResultPtr continue_in_parameter(const ShootingPath& path, double from, double to, PathResultPtr start,
+                                    const ContinuationOptions& options, std::string_view parameter,
+                                    std::chrono::steady_clock::time_point started);
 
 /// How continuation drives shooting on one problem family (header comment): the types Solution,
 /// Velocity, Auxiliary; shoot(problem, options, velocity, auxiliary); velocity(s), auxiliary(s),

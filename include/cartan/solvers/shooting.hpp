@@ -1,22 +1,40 @@
 #pragma once
-// What single shooting of every kernel shares (transported/shooting.hpp, general/shooting.hpp):
-// the options its Levenberg–Marquardt solve takes from ShootingOptions.
+// Single shooting of every kernel (transported/shooting.hpp, general/shooting.hpp), compiled once
+// (src/solvers/shooting.cpp): the kernel's sweeps are a numerics::ShootingKernel, the driver
+// (numerics/shooting_driver.hpp) scales and solves, and this layer turns the outcome into a
+// result's counters, status and words. What a kernel adds is its own (the general kernel's rule
+// that a sweep ending away from qT is not converged).
 
-#include "cartan/numerics/nonlinear_solve.hpp"
+#include <Eigen/Core>
+#include <string>
+#include <string_view>
+
+#include "cartan/numerics/shooting_driver.hpp"
 #include "cartan/principle/options.hpp"
+#include "cartan/principle/result.hpp"
 
 namespace cartan::solvers {
 
-/// Levenberg–Marquardt's options for a shooting's.
-inline numerics::NonlinearSolveOptions solver_options(const ShootingOptions& options) {
-  numerics::NonlinearSolveOptions lm;
-  lm.tolerance = options.tolerance;
-  lm.max_iterations = options.max_iterations;
-  lm.no_progress_window = options.no_progress_window;
-  lm.max_initial_residual = options.max_initial_residual;
-  lm.monitor = options.monitor;
-  lm.evaluations_stop = true;  // both kernels' sweeps poll the monitor
-  return lm;
-}
+/// How a shooting's message names it: "<method> (<jacobian> Jacobian, <auxiliary> scale
+/// s<extra>): <the driver's summary>", the Jacobian "finite-difference" when not analytic.
+struct ShotLabel {
+  std::string_view method;     ///< "shooting", "general shooting"
+  std::string_view jacobian;   ///< the analytic Jacobian's name: "analytic", "tangent-linear"
+  std::string_view auxiliary;  ///< "xi", "Xi"
+  std::string extra;           ///< said inside the parentheses after the scale (may be empty)
+};
+
+/// Shoots `kernel` from y0 (the problem's units: velocity_size velocity components, then the
+/// auxiliary's) at horizon T, the auxiliary in units of aux_scale, with the options'
+/// Levenberg–Marquardt solve; writes into `result` the counters (inner iterations, residual
+/// history, sweeps), the status and the message. Returns the driver's outcome.
+numerics::ShootingOutcome shoot(numerics::ShootingKernel& kernel, int velocity_size, double T, double aux_scale,
+                                const ShootingOptions& options, const Eigen::VectorXd& y0, const ShotLabel& label,
+                                ResultCore& result);
+
+/// The unit of a shooting's auxiliary: T |v_ref| |mu_ref| (v_ref the geodesic velocity, mu_ref its
+/// momentum at the start; the kernel computes both norms), or 1 where that is not a positive
+/// normal number.
+double aux_scale(double T, double v_ref_norm, double mu_ref_norm);
 
 }  // namespace cartan::solvers

@@ -18,7 +18,6 @@
 
 #include <cmath>
 #include <optional>
-#include <sstream>
 #include <utility>
 
 #include "cartan/solvers/continuation.hpp"
@@ -92,29 +91,10 @@ TransportedSolution<G> solve_continuation_in_lambda(const TransportedProblem<G, 
     p.lambda = lambda;
     return p;
   };
-  TransportedSolution<G> result = solve_continuation_in_T(make(lambda_start), options);
-  std::ostringstream path_text;
-  if (!result.converged()) {
-    path_text << "no solution at lambda = " << format_value(lambda_start) << " (" << result.branch << ")";
-    const bool same = lambda_start == problem.lambda;  // then that attempt was of the requested problem
-    result = solvers::detail::best_iterate(problem, same ? &result : nullptr, static_cast<const TransportedSolution<G>*>(nullptr),
-                                  options, result.sweeps, result.inner_iterations);
-  } else {
-    path_text << "continued in lambda from lambda = " << format_value(lambda_start) << " [" << result.branch << "]";
-    const solvers::PathEnd end = solvers::detail::continue_parameter(make, lambda_start, problem.lambda, result, options, "lambda");
-    path_text << " (" << end.stages << " stages)";
-    if (!end.complete) {
-      path_text << "; stopped at lambda = " << format_value(end.reached) << ": " << end.why;
-      result = solvers::detail::best_iterate(problem, static_cast<TransportedSolution<G>*>(nullptr), &result, options,
-                                    result.sweeps, result.inner_iterations);
-    }
-  }
-  result.method = Method::Shooting;
-  result.branch = result.converged() ? path_text.str() : "failed: " + path_text.str();
-  result.message = "continuation in lambda: " + path_text.str() + "; " + std::to_string(result.sweeps) +
-                   " sweeps in all; the returned iterate: " + result.message;
-  result.solve_time_s = detail::seconds_since(start_time);
-  return result;
+  const auto path = solvers::family_path<TransportedProblem<G, L>>(std::cref(make));
+  return path.take(solvers::continue_in_parameter(path, lambda_start, problem.lambda,
+                                                  path.wrap(solve_continuation_in_T(make(lambda_start), options)),
+                                                  options, "lambda", start_time));
 }
 
 }  // namespace cartan::transported

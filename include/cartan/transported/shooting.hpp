@@ -40,8 +40,7 @@ template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 double xi_scale(const TransportedProblem<G, L>& problem) {
   groups::TangentOf<G> v = geodesic_guess(problem);
   if (!(v.norm() > 0)) v = groups::TangentOf<G>::Unit(0) / problem.T;
-  const double scale = problem.T * v.norm() * problem.lagrangian.momentum(0, problem.g0, v).norm();
-  return std::isfinite(scale) && scale > std::numeric_limits<double>::min() ? scale : 1.0;
+  return solvers::aux_scale(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.g0, v).norm());
 }
 
 namespace detail {
@@ -135,17 +134,7 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   detail::TransportedShootingKernel<G, L> kernel(scheme, options.monitor, solution);
   Eigen::VectorXd y0(2 * n);
   y0 << v0_guess, xi0_guess;
-  const numerics::ShootingOutcome outcome =
-      numerics::shoot(kernel,
-                      {.velocity_size = n, .horizon = problem.T, .aux_scale = s,
-                       .analytic_jacobian = options.analytic_jacobian, .solver = solvers::solver_options(options)},
-                      y0);
-  solution.inner_iterations = outcome.report.iterations;
-  solution.residual_history = outcome.report.residual_history;
-  solution.sweeps = outcome.sweeps;
-  solution.status = outcome.status;
-  solution.message = std::string("shooting (") + (options.analytic_jacobian ? "analytic" : "finite-difference") +
-                     " Jacobian, xi scale " + format_value(s) + "): " + outcome.summary();
+  solvers::shoot(kernel, n, problem.T, s, options, y0, {"shooting", "analytic", "xi", ""}, solution);
   solution.solve_time_s = detail::seconds_since(start);
   return solution;
 }
