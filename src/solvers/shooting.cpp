@@ -1,9 +1,6 @@
 // Single shooting's bookkeeping, every kernel's (solvers/shooting.hpp).
 #include "cartan/solvers/shooting.hpp"
 
-#include <cmath>
-#include <limits>
-
 #include "cartan/errors.hpp"
 #include "cartan/numerics/nonlinear_solve.hpp"
 
@@ -42,11 +39,6 @@ numerics::ShootingOutcome shoot(numerics::ShootingKernel& kernel, int velocity_s
                    std::string(label.auxiliary) + " scale " + format_value(aux_scale) + label.extra +
                    "): " + outcome.summary();
   return outcome;
-}
-
-double aux_scale(double T, double v_ref_norm, double mu_ref_norm) {
-  const double scale = T * v_ref_norm * mu_ref_norm;
-  return std::isfinite(scale) && scale > std::numeric_limits<double>::min() ? scale : 1.0;
 }
 
 }  // namespace cartan::solvers

@@ -6,6 +6,7 @@ layers above it, never a sibling's solver.
 * solvers/ (the drivers every kernel shares) includes the vocabulary and numerics, no kernel;
 * general/ (the general kernel) includes the Lie-group kernel (transported/) only where it hands
   a problem to it: lie_kernel.hpp (the kernel's adapter) and solve.hpp (its compiled solve);
+* verify/ runs a kernel's arithmetic on given samples and includes no driver;
 * api/ declares in the vocabulary's words, with no solver of either kernel.
 """
 import re
@@ -46,6 +47,17 @@ def test_the_drivers_include_no_kernel():
 def test_the_general_kernel_includes_the_lie_group_kernel_only_where_it_hands_over():
     allowed = {("lie_kernel.hpp", "transported/continuation.hpp"), ("solve.hpp", "transported/compiled.hpp")}
     assert crossings("general", {"transported"}, allowed) == []
+
+
+def test_verify_checks_results_without_a_solver():
+    # verify/ runs the kernel's arithmetic (its scheme, transport and action) on given samples;
+    # it includes none of the drivers that produce them.
+    drivers = {"transported/" + name for name in ("shooting.hpp", "solve.hpp", "continuation.hpp",
+                                                    "multiple_shooting.hpp", "two_level.hpp", "variational.hpp",
+                                                    "collocation_solution.hpp")}
+    found = [f"verify/{h.name} -> {t}" for h in sorted((INCLUDE / "verify").glob("*.hpp")) for t in includes(h)
+             if t in drivers or t.startswith("solvers/")]
+    assert found == []
 
 
 def test_the_api_declares_without_a_solver():

@@ -1,12 +1,13 @@
 // Single shooting's compiled bookkeeping (solvers/shooting.hpp) on a toy kernel with no group or
 // manifold: the result's counters are the driver's, its status the driver's, its message names the
-// kernel's label; the auxiliary's unit.
+// kernel's label; and the auxiliary's unit (principle/scales.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <string>
 
+#include "cartan/principle/scales.hpp"
 #include "cartan/solvers/shooting.hpp"
 
 namespace cartan::solvers {

@@ -20,6 +20,7 @@
 #include "cartan/general/tangent.hpp"
 #include "cartan/numerics/nonlinear_solve.hpp"
 #include "cartan/numerics/shooting_driver.hpp"
+#include "cartan/principle/scales.hpp"
 #include "cartan/status.hpp"
 #include "cartan/principle/vocabulary.hpp"
 #include "cartan/solvers/shooting.hpp"
@@ -38,7 +39,7 @@ template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 double xi_scale(const GeneralProblem<M, L>& problem) {
   manifolds::ComponentsOf<M> v = geodesic_guess(problem);
   if (!(v.norm() > 0)) v = manifolds::ComponentsOf<M>::Unit(0) / problem.T;
-  return solvers::aux_scale(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.q0, v).norm());
+  return aux_scale(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.q0, v).norm());
 }
 
 /// Runs the N steps from (v0, Xi0); returns the last node, or nothing (with `failure` set) when

@@ -32,9 +32,4 @@ numerics::ShootingOutcome shoot(numerics::ShootingKernel& kernel, int velocity_s
                                 const ShootingOptions& options, const Eigen::VectorXd& y0, const ShotLabel& label,
                                 ResultCore& result);
 
-/// The unit of a shooting's auxiliary: T |v_ref| |mu_ref| (v_ref the geodesic velocity, mu_ref its
-/// momentum at the start; the kernel computes both norms), or 1 where that is not a positive
-/// normal number.
-double aux_scale(double T, double v_ref_norm, double mu_ref_norm);
-
 }  // namespace cartan::solvers

@@ -11,6 +11,7 @@
 #include "cartan/errors.hpp"
 #include "cartan/groups/group.hpp"
 #include "cartan/mechanics/lagrangian.hpp"
+#include "cartan/principle/scales.hpp"
 
 namespace cartan::transported {
 
@@ -35,5 +36,20 @@ struct TransportedProblem {
     G::validate(gT, "gT");
   }
 };
+
+/// The paper's initial guess: the body velocity of the geodesic from g0 to gT, log(g0^{-1} gT)/T.
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+groups::TangentOf<G> geodesic_guess(const TransportedProblem<G, L>& problem) {
+  return groups::log_between<G>(problem.g0, problem.gT) / problem.T;
+}
+
+/// The unit of xi on this problem (aux_scale; transported/shooting.hpp's header comment):
+/// T |v_ref| |mu_ref|, v_ref the geodesic velocity (or 1/T along the first axis when g0 = gT).
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+double xi_scale(const TransportedProblem<G, L>& problem) {
+  groups::TangentOf<G> v = geodesic_guess(problem);
+  if (!(v.norm() > 0)) v = groups::TangentOf<G>::Unit(0) / problem.T;
+  return aux_scale(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.g0, v).norm());
+}
 
 }  // namespace cartan::transported

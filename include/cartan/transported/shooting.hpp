@@ -28,21 +28,6 @@
 
 namespace cartan::transported {
 
-/// The paper's initial guess: the body velocity of the geodesic from g0 to gT, log(g0^{-1} gT)/T.
-template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-groups::TangentOf<G> geodesic_guess(const TransportedProblem<G, L>& problem) {
-  return groups::log_between<G>(problem.g0, problem.gT) / problem.T;
-}
-
-/// The size of xi on this problem (see the header comment): T |v_ref| |mu_ref|, with v_ref the
-/// geodesic velocity (or 1/T along the first axis when g0 = gT); at least the smallest normal.
-template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-double xi_scale(const TransportedProblem<G, L>& problem) {
-  groups::TangentOf<G> v = geodesic_guess(problem);
-  if (!(v.norm() > 0)) v = groups::TangentOf<G>::Unit(0) / problem.T;
-  return solvers::aux_scale(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.g0, v).norm());
-}
-
 namespace detail {
 
 /// Final recorded sweep shared by the solvers: fills trajectory and terminal figures. With

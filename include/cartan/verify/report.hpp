@@ -13,7 +13,6 @@
 
 #include "cartan/errors.hpp"
 #include "cartan/transported/compiled.hpp"
-#include "cartan/transported/shooting.hpp"
 #include "cartan/transported/solution.hpp"
 #include "cartan/verify/checks.hpp"
 #include "cartan/verify/verdict.hpp"
