@@ -156,6 +156,18 @@ struct ResultOf final : PathResult {
 
 }  // namespace detail
 
+/// A solution of the family of `Problem` as a PathResult, and back.
+template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
+PathResultPtr wrap(Solution s) {
+  return std::make_unique<detail::ResultOf<ShootingFamily<Problem>>>(std::move(s));
+}
+template <class Problem>
+typename ShootingFamily<Problem>::Solution take(PathResultPtr r) {
+  auto* of = dynamic_cast<detail::ResultOf<ShootingFamily<Problem>>*>(r.get());
+  if (of == nullptr) throw std::logic_error("solvers::take: a result of another family");
+  return std::move(of->value);
+}
+
 /// The family of `Problem` along the parameter p, make(p) the problem at p.
 template <class Problem, class Make>
 class FamilyPath final : public ShootingPath {
@@ -171,13 +183,9 @@ class FamilyPath final : public ShootingPath {
     sums_ = Family::inner_iterations(probe) == 1;
   }
 
-  static PathResultPtr wrap(Solution s) { return std::make_unique<detail::ResultOf<Family>>(std::move(s)); }
+  static PathResultPtr wrap(Solution s) { return solvers::wrap<Problem>(std::move(s)); }
   /// The solution a PathResult of this family holds, moved out.
-  static Solution take(PathResultPtr r) {
-    auto* of = dynamic_cast<detail::ResultOf<Family>*>(r.get());
-    if (of == nullptr) throw std::logic_error("solvers::FamilyPath::take: a result of another family");
-    return std::move(of->value);
-  }
+  static Solution take(PathResultPtr r) { return solvers::take<Problem>(std::move(r)); }
 
   PathResultPtr shoot(double p, const ShootingOptions& options, const Eigen::VectorXd& velocity,
                       const Eigen::VectorXd& auxiliary) const override {

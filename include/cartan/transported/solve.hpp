@@ -25,6 +25,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "cartan/solvers/attempts.hpp"
 #include "cartan/transported/collocation_solution.hpp"
 #include "cartan/transported/compiled.hpp"
 #include "cartan/mechanics/free_body.hpp"
@@ -205,41 +206,15 @@ TransportedSolution<G> shooting(const TransportedProblem<G, L>& problem, const S
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const SolveOptions& options,
                                 const SolveGuess<G>& guess) {
-  std::vector<std::string> failed;  // "shooting (no-progress, |r| = ...)"
-  std::ostringstream log;
-  TransportedSolution<G> best;
-  double best_size = std::numeric_limits<double>::infinity();
-  int sweeps = 0, iterations = 0;
-  // Records an attempt; returns true when it solved the problem (then `best` is it).
+  using Problem = TransportedProblem<G, L>;
+  solvers::Attempts attempts(solvers::wrap<Problem>(TransportedSolution<G>{}), [&problem] { return xi_scale(problem); });
+  // Records an attempt; returns true when it solved the problem.
   const auto attempt = [&](const std::string& name, TransportedSolution<G> s, bool requested_problem = true) {
-    sweeps += s.sweeps;
-    iterations += s.inner_iterations;
-    log << (failed.empty() && log.tellp() == 0 ? "" : "; ") << name << ": " << to_string(s.status);
-    if (s.converged()) {
-      std::string after;
-      for (std::size_t i = 0; i < failed.size(); ++i) after += (i ? (i + 1 == failed.size() ? " and " : ", ") : "") + failed[i];
-      s.branch = name + (s.branch.empty() ? "" : " (" + s.branch + ")") + (failed.empty() ? "" : ", after " + after + " failed");
-      best = std::move(s);
-      return true;
-    }
-    failed.push_back(name);
-    const double size = requested_problem ? solvers::detail::scaled_residual(problem, s) : std::numeric_limits<double>::infinity();
-    if (size < best_size) {
-      best_size = size;
-      best = std::move(s);
-    }
-    return false;
+    return attempts.attempt(name, solvers::wrap<Problem>(std::move(s)), requested_problem);
   };
   const auto stopped = [&] { return options.monitor.stop_requested(); };
   const auto finish = [&](bool solved) {
-    best.sweeps = sweeps;
-    best.inner_iterations = iterations;
-    if (!solved) {
-      best.status = stopped() ? Status::Interrupted : Status::StrategyFailed;
-      best.branch = "failed: " + log.str();
-    }
-    best.message = "default strategy: " + log.str() + "; the returned result: " + best.message;
-    return std::move(best);  // not a copy of its trajectory (0.3 GB at N = 2e6)
+    return solvers::take<Problem>(attempts.finish(solved, !solved && stopped()));
   };
 
   const bool guessed = !guess.empty();
@@ -287,10 +262,10 @@ TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const S
         from.v0 = continuous.v0;
         from.xi0 = continuous.xi0;
         TransportedSolution<G> polished = shooting(problem, direct, from);
-        sweeps += continuous.sweeps;
+        attempts.add_sweeps(continuous.sweeps);
         polished.branch = "from the collocation solution";
         if (attempt("shooting", std::move(polished))) return finish(true);
-        failed.pop_back();
+        attempts.forget_last_failure();
         continuous.branch = "of the continuous problem; shooting the discrete scheme from it failed";
       }
       if (attempt("collocation", std::move(continuous))) return finish(true);
