@@ -55,7 +55,9 @@ def test_verify_checks_results_without_a_solver():
     drivers = {"transported/" + name for name in ("shooting.hpp", "solve.hpp", "continuation.hpp",
                                                     "multiple_shooting.hpp", "two_level.hpp", "variational.hpp",
                                                     "collocation_solution.hpp")}
-    found = [f"verify/{h.name} -> {t}" for h in sorted((INCLUDE / "verify").glob("*.hpp")) for t in includes(h)
+    drivers |= {"general/" + name for name in ("shooting.hpp", "solve.hpp", "collocation.hpp", "lie_kernel.hpp")}
+    verifiers = sorted((INCLUDE / "verify").glob("*.hpp")) + [INCLUDE / "general" / "verify.hpp"]
+    found = [f"{h.parent.name}/{h.name} -> {t}" for h in verifiers for t in includes(h)
              if t in drivers or t.startswith("solvers/")]
     assert found == []
 

@@ -16,6 +16,7 @@
 #include "cartan/general/lagrangian.hpp"
 #include "cartan/manifolds/geometry.hpp"
 #include "cartan/numerics/spectrum.hpp"
+#include "cartan/principle/scales.hpp"
 
 namespace cartan::general {
 
@@ -54,5 +55,20 @@ struct GeneralProblem {
     }
   }
 };
+
+/// The geodesic guess: difference(q0, qT) / T in the components of the initial frame.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+manifolds::ComponentsOf<M> geodesic_guess(const GeneralProblem<M, L>& problem) {
+  return manifolds::dual_frame<M>(problem.initial_frame()) * problem.manifold.difference(problem.q0, problem.qT) /
+         problem.T;
+}
+
+/// The unit of Xi on this problem (aux_scale): T |v_ref| |mu_ref|, v_ref the geodesic guess.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+double xi_scale(const GeneralProblem<M, L>& problem) {
+  manifolds::ComponentsOf<M> v = geodesic_guess(problem);
+  if (!(v.norm() > 0)) v = manifolds::ComponentsOf<M>::Unit(0) / problem.T;
+  return aux_scale(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.q0, v).norm());
+}
 
 }  // namespace cartan::general

@@ -20,27 +20,11 @@
 #include "cartan/general/tangent.hpp"
 #include "cartan/numerics/nonlinear_solve.hpp"
 #include "cartan/numerics/shooting_driver.hpp"
-#include "cartan/principle/scales.hpp"
 #include "cartan/status.hpp"
 #include "cartan/principle/vocabulary.hpp"
 #include "cartan/solvers/shooting.hpp"
 
 namespace cartan::general {
-
-/// The geodesic guess: difference(q0, qT) / T in the components of the initial frame.
-template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-manifolds::ComponentsOf<M> geodesic_guess(const GeneralProblem<M, L>& problem) {
-  return manifolds::dual_frame<M>(problem.initial_frame()) * problem.manifold.difference(problem.q0, problem.qT) /
-         problem.T;
-}
-
-/// The size of Xi on this problem: T |v_ref| |mu_ref| (transported/shooting.hpp's xi_scale).
-template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-double xi_scale(const GeneralProblem<M, L>& problem) {
-  manifolds::ComponentsOf<M> v = geodesic_guess(problem);
-  if (!(v.norm() > 0)) v = manifolds::ComponentsOf<M>::Unit(0) / problem.T;
-  return aux_scale(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.q0, v).norm());
-}
 
 /// Runs the N steps from (v0, Xi0); returns the last node, or nothing (with `failure` set) when
 /// the state became non-finite, a callback failed or `monitor` has a stop pending (polled every

@@ -20,7 +20,7 @@
 
 #include "cartan/general/action.hpp"
 #include "cartan/general/compiled.hpp"
-#include "cartan/general/shooting.hpp"
+#include "cartan/general/problem.hpp"
 #include "cartan/numerics/spectrum.hpp"
 #include "cartan/verify/figures.hpp"
 #include "cartan/verify/verdict.hpp"
