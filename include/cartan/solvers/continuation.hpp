@@ -24,7 +24,6 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <type_traits>
 #include <utility>
 
 #include "cartan/principle/options.hpp"
@@ -229,31 +228,6 @@ auto horizon_family(const Problem& problem) {
     if (horizon == problem.T) p.N = problem.N;
     return p;
   });
-}
-
-/// continue_parameter on a family: make(s) the problem at s; `current` a solution at `from`.
-template <class MakeProblem, class Problem = std::invoke_result_t<MakeProblem, double>,
-          class Solution = typename ShootingFamily<Problem>::Solution>
-PathEnd continue_parameter(const MakeProblem& make, double from, double to, Solution& current,
-                           const ContinuationOptions& options, std::string_view parameter) {
-  const auto path = family_path<Problem>(std::cref(make));
-  PathResultPtr now = path.wrap(std::move(current));
-  PathEnd end = solvers::continue_parameter(path, from, to, now, options, parameter);
-  current = path.take(std::move(now));
-  return end;
-}
-
-/// best_iterate on a family: `problem` the requested one; `direct` (may be null) is moved from,
-/// `last_stage` (may be null) read.
-template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
-Solution best_iterate(const Problem& problem, Solution* direct, const Solution* last_stage,
-                      const ContinuationOptions& options, int sweeps, int iterations) {
-  using Family = ShootingFamily<Problem>;
-  const auto path = family_path<Problem>([&problem](double) { return problem; });
-  std::optional<Unknowns> last;
-  if (last_stage != nullptr) last = Unknowns{flat(Family::velocity(*last_stage)), flat(Family::auxiliary(*last_stage))};
-  return path.take(solvers::best_iterate(path, 0, direct != nullptr ? path.wrap(std::move(*direct)) : nullptr, last,
-                                         options, sweeps, iterations));
 }
 
 /// continue_in_T on a family (solve_continuation_in_T, transported/continuation.hpp;
