@@ -73,8 +73,10 @@ class SolveMonitor {
     copy.cancel_ = std::move(flag);
     return copy;
   }
-  /// The same callbacks, stopping also from `deadline` on (shared by every copy, stages included).
+  /// The same callbacks, stopping also from `deadline` on (shared by every copy, stages included);
+  /// an earlier deadline this monitor has stays (a solve inside a timed one keeps its caller's).
   SolveMonitor with_deadline(std::chrono::steady_clock::time_point deadline) const {
+    if (deadline_ && deadline_->at <= deadline) return *this;  // a nested solve keeps its caller's
     SolveMonitor copy = *this;
     copy.deadline_ = std::make_shared<Deadline>();
     copy.deadline_->at = deadline;

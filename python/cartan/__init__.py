@@ -533,7 +533,9 @@ def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, poten
         (the inverse Legendre map) and point_gradient(t, q, v) (an ambient (d,) covector with
         zeta . x = d/de l(t, step(q, e x), v)), taking and returning NumPy arrays.
 
-    method: "auto" (shooting from the guess, then continuation in T, then collocation), "shooting"
+    method: "auto" (the default strategy, as :func:`solve`'s: shooting from the guess, continuation in
+    T, collocation polished by shooting; on the Lie-group kernel also continuation in lambda and
+    multiple shooting), "shooting"
     (with continuation "none" or "T") or "collocation" of the continuous system (fourth order,
     adaptive mesh; from `guess` or the geodesic guess, and with continuation "T" from the order-2
     shooting solution when Newton fails from the geodesic guess). On a GroupManifold with connection

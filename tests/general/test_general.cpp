@@ -177,7 +177,7 @@ TEST(GeneralSolve, DefaultShootingAndContinuationInTAgree) {
   const auto problem = erased(typed);  // the library's compiled solvers (general/compiled.hpp)
   const auto direct = solve(problem);
   ASSERT_TRUE(direct.converged()) << direct.message;
-  EXPECT_EQ(direct.branch, "shooting (from the geodesic guess)");
+  EXPECT_EQ(direct.branch, "shooting (direct from the geodesic guess)");  // the default strategy's words
   // The typed shooting (instantiated here for KineticPotential) is the compiled one without the
   // indirect calls: the same operations in the same order, so the same iterates (to rounding,
   // 1e-14 relative, in case two compilations order a sum differently).

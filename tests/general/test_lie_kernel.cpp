@@ -282,7 +282,7 @@ TEST(LieKernel, GuessesAndOptionsMapOntoTheLieKernel) {
   const auto by_default = general::solve(p, automatic);
   ASSERT_TRUE(by_default.converged()) << by_default.message;
   EXPECT_TRUE(has(by_default.message, "Lie-group kernel")) << by_default.message;
-  EXPECT_EQ(by_default.branch, "shooting (from the geodesic guess)");
+  EXPECT_EQ(by_default.branch, "shooting (direct from the geodesic guess)");  // the default strategy's words
 
   // The oscillator at T = 12 (docs/paper-notes.md#erratum-4): direct shooting from the geodesic
   // guess fails at lambda = 1/2 (tests/cli/test_cli.py, the same Lie-group shooting), continuation
@@ -389,6 +389,25 @@ TEST(LieKernel, TheLieGroupMethodsAreTheKernelsCapabilities) {
   cartan::SolveOptions variational;
   variational.method = Method::Variational;
   expect_invalid([&] { (void)general::solve(p, variational); }, {"variational", "the Lie-group solve only"});
+}
+
+// The default strategy is one (solvers/strategy.hpp): on the Lie-group kernel it has the kernel's
+// capabilities and window, so where shooting and continuation in T fail (the oscillator at
+// lambda = 2, T = 3: tests/golden auto_oscillator_lambda_2_T3) general::solve takes the path
+// transported::solve takes, continuation in lambda from 0, and lands on the same solution (1e-8 at
+// the nodes: both stop within tol = 1e-10 of the same discrete root, as the methods above).
+TEST(LieKernel, TheDefaultStrategyHasTheKernelsCapabilities) {
+  const auto lie_problem = paper_oscillator(2.0, 300, 3);
+  cartan::SolveOptions automatic;
+  const auto reference = transported::solve(lie_problem, automatic);
+  const auto s = general::solve(on_cartan_schouten(lie_problem), automatic);
+  ASSERT_TRUE(reference.converged()) << reference.message;
+  ASSERT_TRUE(s.converged()) << s.message;
+  EXPECT_TRUE(reference.branch.starts_with("continuation in lambda from 0")) << reference.branch;
+  EXPECT_EQ(s.branch, reference.branch);
+  EXPECT_TRUE(has(s.message, "Lie-group kernel")) << s.message;
+  EXPECT_LE(max_gap(s.trajectory.q, reference.trajectory.g), 1e-8);
+  EXPECT_LE(max_gap(s.trajectory.mu, reference.trajectory.mu), 1e-8);
 }
 
 // Design §5.4, item 5: the general kernel everywhere else: another connection, Cartan–Schouten

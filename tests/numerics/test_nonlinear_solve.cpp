@@ -151,6 +151,16 @@ TEST(SolveMonitor, TheDeadlineLessTheReserveIsSharedByEveryStage) {
   EXPECT_TRUE(stage.stop_requested());  // expired stays expired
 }
 
+// A solve inside a timed solve (general::solve's Lie-group methods through transported::solve)
+// sets its own deadline from the same time limit: it never outlives its caller's.
+TEST(SolveMonitor, ANestedDeadlineNeverExtendsTheCallers) {
+  const auto now = std::chrono::steady_clock::now();
+  const SolveMonitor caller = SolveMonitor().with_deadline(now);
+  EXPECT_TRUE(caller.with_deadline(now + std::chrono::hours(1)).stop_pending());
+  const SolveMonitor later = SolveMonitor().with_deadline(now + std::chrono::hours(1));
+  EXPECT_TRUE(later.with_deadline(now).stop_pending());  // an earlier deadline applies
+}
+
 TEST(LevenbergMarquardt, RejectsBadInput) {
   using testing::expect_invalid;
   const Eigen::Vector2d start(-1.2, 1.0);

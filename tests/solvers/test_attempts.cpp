@@ -7,33 +7,10 @@
 #include <string>
 
 #include "cartan/solvers/attempts.hpp"
+#include "solvers/scripted_result.hpp"
 
 namespace cartan::solvers {
 namespace {
-
-struct Scripted final : PathResult {
-  ResultCore value;
-  bool trajectory = true;
-  ResultCore& core() override { return value; }
-  const ResultCore& core() const override { return value; }
-  Eigen::VectorXd velocity() const override { return Eigen::VectorXd::Zero(1); }
-  Eigen::VectorXd auxiliary() const override { return Eigen::VectorXd::Zero(1); }
-  bool has_trajectory() const override { return trajectory; }
-};
-
-/// A result with `status`, terminal figures (error, xi) and work (sweeps, iterations).
-PathResultPtr scripted(Status status, double error, double xi, int sweeps, int iterations, std::string message,
-                       bool trajectory = true) {
-  auto r = std::make_unique<Scripted>();
-  r->value.status = status;
-  r->value.terminal_error = error;
-  r->value.xi_terminal = xi;
-  r->value.sweeps = sweeps;
-  r->value.inner_iterations = iterations;
-  r->value.message = std::move(message);
-  r->trajectory = trajectory;
-  return r;
-}
 
 Attempts attempts_with_scale(double scale, int* asked = nullptr) {
   return Attempts(scripted(Status::NotConverged, 0, 0, 0, 0, "", false), [=] {

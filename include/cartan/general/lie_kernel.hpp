@@ -305,6 +305,7 @@ namespace detail {
 template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 struct LieKernel {
   using Problem = LieKernelProblem<G, L>;
+  using Group = G;
   Problem problem;
 
   const Problem& shooting_problem() const { return problem; }

@@ -6,8 +6,10 @@
 //   * Method::Collocation: collocation of the continuous system (collocation.hpp) from the guess
 //     trajectory or the geodesic guess; with Continuation::T, when Newton from the geodesic guess
 //     fails on the N-interval mesh, from the order-2 shooting solution found by continuation in T;
-//   * Method::Auto (default): shooting from the guess, then continuation in T, then collocation
-//     from the geodesic guess; the first success is returned and `branch` names the path.
+//   * Method::Auto (default): the default strategy of every solve (solvers/strategy.hpp) with this
+//     kernel's capabilities (StrategyKernel below): shooting from the guess, continuation in T,
+//     on the Lie-group kernel continuation in lambda, collocation polished by shooting, on the
+//     Lie-group kernel multiple shooting; the first success is returned and `branch` names the path.
 // Continuation in T is every kernel's path (solvers/continuation.hpp, through
 // ShootingFamily): halve the horizon (same step h, so N scales with T) until shooting from the
 // geodesic guess converges, then lengthen it with a secant predictor, accepting a stage only near
@@ -40,6 +42,7 @@
 #include "cartan/principle/options.hpp"
 #include "cartan/principle/vocabulary.hpp"
 #include "cartan/solvers/continuation.hpp"
+#include "cartan/solvers/strategy.hpp"
 #include "cartan/transported/compiled.hpp"
 
 namespace cartan::solvers {
@@ -126,20 +129,161 @@ struct GeneralKernel {
   GeneralSolution<M> result(GeneralSolution<M>&& s) const { return std::move(s); }
 };
 
+/// The Lie-group kernel's guess (xi0 = C(Xi0), a trajectory's xi = C(Xi)): design §4.
+template <groups::LieGroup G>
+transported::SolveGuess<G> lie_guess(const GeneralGuess<manifolds::GroupManifold<G>>& guess) {
+  transported::SolveGuess<G> lie;
+  lie.v0 = guess.v0;
+  if (guess.Xi0) lie.xi0 = aux_to_xi<G>(*guess.Xi0);
+  if (guess.trajectory) {
+    const GeneralTrajectory<manifolds::GroupManifold<G>>& x = *guess.trajectory;
+    transported::TransportedTrajectory<G> path;
+    path.t = x.t;
+    path.g = x.q;
+    path.v = x.v;
+    path.mu = x.mu;
+    for (const auto& Xi : x.Xi) path.xi.push_back(aux_to_xi<G>(Xi));
+    lie.trajectory = std::move(path);
+  }
+  return lie;
+}
+
+/// A method of the Lie-group kernel (header comment): transported::solve of the kernel's problem
+/// with its Lagrangian behind the erased type, then general's status rule.
+template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
+transported::TransportedSolution<G> lie_solve(const LieKernelProblem<G, L>& kernel, const SolveOptions& options,
+                                              const transported::SolveGuess<G>& guess) {
+  transported::TransportedSolution<G> s = transported::solve(transported::erased(kernel), options, guess);
+  apply_general_status_rule(kernel, s, options.tol);
+  return s;
+}
+
+/// The general solve's kernels as the default strategy sees them (solvers/strategy.hpp):
+/// shooting and continuation in T through `kernel` (GeneralKernel above, or LieKernel,
+/// lie_kernel.hpp), its guess Xi0 entering as `kernel.auxiliary(Xi0)`; collocation the general
+/// one (Newton per mesh capped at 40 iterations, so that a hopeless start ends early); on the
+/// Lie-group kernel of a group the library compiles, also its continuation in lambda and multiple
+/// shooting (lie_solve). Results stay the kernel's own until `take` converts the strategy's.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L, class Kernel>
+class StrategyKernel final : public solvers::StrategyKernel {
+ public:
+  using Problem = GeneralProblem<M, L>;
+  using KernelProblem = typename Kernel::Problem;
+  using Family = solvers::ShootingFamily<KernelProblem>;
+
+  StrategyKernel(const Problem& problem, const SolveOptions& options, const GeneralGuess<M>& guess, const Kernel& kernel)
+      : problem_(problem), options_(options), guess_(guess), kernel_(kernel) {}
+
+  solvers::PathResultPtr empty() const override { return solvers::wrap<Problem>(GeneralSolution<M>{}); }
+  double auxiliary_scale() const override { return Family::auxiliary_scale(kernel_.shooting_problem()); }
+  bool guessed() const override { return guess_.v0 || guess_.Xi0 || guess_.trajectory; }
+  int steps() const override { return problem_.N; }
+  bool time_rescaling_invariant() const override { return false; }  // not known of a general Lagrangian
+  std::optional<double> lambda() const override {
+    if constexpr (kLieMethods) return kernel_.problem.lambda;
+    return std::nullopt;
+  }
+  bool has_collocation() const override { return true; }
+  bool has_multiple_shooting() const override { return kLieMethods; }
+  /// The Lie-group kernel's is the Lie-group solve's (so that Auto takes the same path there). The
+  /// general kernel's Levenberg–Marquardt often stalls 6 iterations before it descends: on the
+  /// sphere (golden sphere_auto) a window of 6 sends it to continuation in T, 80 sweeps against
+  /// 28 from the guess with 8.
+  int first_shooting_window() const override { return kLieKernel ? ContinuationOptions{}.no_progress_window : 8; }
+
+  solvers::PathResultPtr shoot(const ShootingOptions& options) override {
+    return wrap(Family::shoot(kernel_.shooting_problem(), options, v0(), kernel_.auxiliary(Xi0())));
+  }
+  solvers::PathResultPtr shoot_from(const ShootingOptions& options, const solvers::PathResult& start) override {
+    const GeneralSolution<M>& s = dynamic_cast<const solvers::detail::ResultOf<solvers::ShootingFamily<Problem>>&>(start).value;
+    return wrap(Family::shoot(kernel_.shooting_problem(), options, s.v0, kernel_.auxiliary(s.Xi0)));
+  }
+  solvers::PathResultPtr continue_in_T(const ContinuationOptions& options, solvers::PathResultPtr failed_direct) override {
+    auto direct = solvers::take<KernelProblem>(std::move(failed_direct));
+    std::optional<typename Family::Velocity> v;
+    std::optional<typename Family::Auxiliary> a;
+    if (guessed()) {
+      v = v0();
+      a = kernel_.auxiliary(Xi0());
+    }
+    return wrap(solvers::detail::continue_in_T(kernel_.shooting_problem(), options, v, a, &direct));
+  }
+  /// transported::solve's (lie_solve), whose shooting options are `options_`'s, as `options`'.
+  solvers::PathResultPtr continue_in_lambda(const ContinuationOptions&, double start) override {
+    if constexpr (kLieMethods) {
+      SolveOptions o = options_;
+      o.method = Method::Shooting;
+      o.continuation = Continuation::Lambda;
+      o.lambda_start = start;
+      return wrap(lie_solve(kernel_.problem, o, {}));
+    }
+    throw std::logic_error("general::StrategyKernel: continuation in lambda is the Lie-group kernel's");
+  }
+  solvers::PathResultPtr collocate(const SolveOptions& options, int samples) override {
+    SolveOptions c = options;
+    c.max_iterations = std::min(options.max_iterations, 40);
+    c.samples = samples;
+    GeneralGuess<M> start;
+    start.trajectory = guess_.trajectory;
+    return solvers::wrap<Problem>(detail::collocation(problem_, c, start));
+  }
+  /// transported::solve's (lie_solve), which reports to its own stage of `options`' monitor.
+  solvers::PathResultPtr multiple_shoot(const SolveOptions& options, const SolveMonitor&) override {
+    if constexpr (kLieMethods) {
+      SolveOptions o = options;
+      o.method = Method::MultipleShooting;
+      return wrap(lie_solve(kernel_.problem, o, lie_guess(guess_)));
+    }
+    throw std::logic_error("general::StrategyKernel: multiple shooting is the Lie-group kernel's");
+  }
+
+  /// The strategy's result as the general solve's.
+  GeneralSolution<M> take(solvers::PathResultPtr r) const {
+    if (auto* of = dynamic_cast<solvers::detail::ResultOf<Family>*>(r.get())) return kernel_.result(std::move(of->value));
+    return solvers::take<Problem>(std::move(r));
+  }
+
+ private:
+  static constexpr bool kLieKernel = requires { typename Kernel::Group; };
+  static constexpr bool kLieMethods = [] {
+    if constexpr (kLieKernel) return transported::kCompiledGroup<typename Kernel::Group>;
+    return false;
+  }();
+
+  template <class Solution>
+  static solvers::PathResultPtr wrap(Solution s) {
+    return solvers::wrap<KernelProblem>(std::move(s));
+  }
+  typename Family::Velocity v0() const {
+    return guess_.trajectory ? guess_.trajectory->v.front() : guess_.v0.value_or(geodesic_guess(problem_));
+  }
+  manifolds::ComponentMatrixOf<M> Xi0() const {
+    return guess_.trajectory ? guess_.trajectory->Xi.front() : guess_.Xi0.value_or(manifolds::ComponentMatrixOf<M>::Zero());
+  }
+
+  const Problem& problem_;
+  const SolveOptions& options_;
+  const GeneralGuess<M>& guess_;
+  const Kernel& kernel_;
+};
+
 /// The methods of solve (below) after its checks, under the options' deadline, with the shooting
-/// and continuation in T of `kernel` (GeneralKernel above or LieKernel, lie_kernel.hpp): its
-/// `shooting_problem()` is shot through its ShootingFamily, a guess Xi0 enters as
-/// `auxiliary(Xi0)`, and `result` makes the returned solution a GeneralSolution<M>.
+/// and continuation in T of `kernel` (GeneralKernel above or LieKernel, lie_kernel.hpp): Auto is
+/// the default strategy (StrategyKernel above); shooting is shot through the kernel's
+/// ShootingFamily, from the guess (a guess Xi0 entering as `auxiliary(Xi0)`), then with
+/// Continuation::T continued in T; `result` makes the returned solution a GeneralSolution<M>.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L, class Kernel>
 GeneralSolution<M> run_strategy(const GeneralProblem<M, L>& problem, const SolveOptions& options,
                                 const GeneralGuess<M>& guess, const Kernel& kernel) {
   using Family = solvers::ShootingFamily<typename Kernel::Problem>;
   if (options.method == Method::Collocation) return detail::collocation(problem, options, guess);
-  GeneralShootingOptions shooting{.order = options.order, .tolerance = options.tol,
-                                  .max_iterations = options.max_iterations, .no_progress_window = 0,
-                                  .monitor = &options.monitor};
-  const bool auto_strategy = options.method == Method::Auto;
-  if (auto_strategy) shooting.no_progress_window = 8;
+  if (options.method == Method::Auto) {
+    StrategyKernel<M, L, Kernel> strategy(problem, options, guess, kernel);
+    return strategy.take(solvers::default_strategy(strategy, options));
+  }
+  const GeneralShootingOptions shooting{.order = options.order, .tolerance = options.tol,
+                                        .max_iterations = options.max_iterations, .no_progress_window = 0,
+                                        .monitor = &options.monitor};
   const std::string from =
       guess.v0 || guess.Xi0 || guess.trajectory ? "from the given guess" : "from the geodesic guess";
   const GeneralTrajectory<M>* path = guess.trajectory ? &*guess.trajectory : nullptr;
@@ -147,30 +291,10 @@ GeneralSolution<M> run_strategy(const GeneralProblem<M, L>& problem, const Solve
       kernel.shooting_problem(), shooting, path ? path->v.front() : guess.v0.value_or(geodesic_guess(problem)),
       kernel.auxiliary(path ? path->Xi.front() : guess.Xi0.value_or(manifolds::ComponentMatrixOf<M>::Zero())));
   direct.branch = "shooting (" + from + ")";
-  if (direct.converged() || direct.status == Status::Interrupted ||
-      (!auto_strategy && options.continuation == Continuation::None)) {
+  if (direct.converged() || direct.status == Status::Interrupted || options.continuation == Continuation::None) {
     return kernel.result(std::move(direct));
   }
-  auto continued = detail::continue_in_T(kernel.shooting_problem(), shooting, std::move(direct));
-  if (!auto_strategy || continued.converged() || continued.status == Status::Interrupted) {
-    if (auto_strategy) continued.branch += ", after shooting failed";
-    return kernel.result(std::move(continued));
-  }
-  SolveOptions c = options;
-  c.method = Method::Collocation;
-  c.max_iterations = std::min(options.max_iterations, 40);  // Newton per mesh: a hopeless start ends early
-  GeneralGuess<M> start;
-  start.trajectory = guess.trajectory;
-  GeneralSolution<M> collocated = detail::collocation(problem, c, start);
-  if (collocated.converged()) {
-    collocated.branch += ", after shooting and continuation in T failed";
-    return collocated;
-  }
-  GeneralSolution<M> failed = kernel.result(std::move(continued));
-  failed.status = collocated.status == Status::Interrupted ? Status::Interrupted : Status::StrategyFailed;
-  failed.message = "every method of the default strategy failed (shooting " + from +
-                   ", continuation in T, collocation): " + failed.message + "; collocation: " + collocated.message;
-  return failed;
+  return kernel.result(detail::continue_in_T(kernel.shooting_problem(), shooting, std::move(direct)));
 }
 
 /// run_strategy on the general scheme.
@@ -197,21 +321,7 @@ GeneralSolution<manifolds::GroupManifold<G>> run_lie_method(const GeneralProblem
                                                             double lambda, const SolveOptions& options,
                                                             const GeneralGuess<manifolds::GroupManifold<G>>& guess) {
   const LieKernelProblem<G, L> kernel = lie_kernel_problem(problem, lambda);
-  transported::SolveGuess<G> lie_guess;
-  lie_guess.v0 = guess.v0;
-  if (guess.Xi0) lie_guess.xi0 = aux_to_xi<G>(*guess.Xi0);
-  if (guess.trajectory) {
-    const GeneralTrajectory<manifolds::GroupManifold<G>>& x = *guess.trajectory;
-    transported::TransportedTrajectory<G> path;
-    path.t = x.t;
-    path.g = x.q;
-    path.v = x.v;
-    path.mu = x.mu;
-    for (const auto& Xi : x.Xi) path.xi.push_back(aux_to_xi<G>(Xi));
-    lie_guess.trajectory = std::move(path);
-  }
-  transported::TransportedSolution<G> s = transported::solve(transported::erased(kernel), options, lie_guess);
-  apply_general_status_rule(kernel, s, options.tol);
+  transported::TransportedSolution<G> s = lie_solve(kernel, options, lie_guess(guess));
   return general_solution_from_lie(kernel, std::move(s));
 }
 

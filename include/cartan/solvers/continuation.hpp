@@ -41,6 +41,8 @@ class PathResult {
   virtual Eigen::VectorXd velocity() const = 0;
   virtual Eigen::VectorXd auxiliary() const = 0;
   virtual bool has_trajectory() const = 0;
+  /// A copy (the default strategy keeps a failed shooting for continuation's first stage).
+  virtual std::unique_ptr<PathResult> clone() const = 0;
 };
 using PathResultPtr = std::unique_ptr<PathResult>;
 
@@ -151,6 +153,7 @@ struct ResultOf final : PathResult {
   Eigen::VectorXd velocity() const override { return flat(Family::velocity(value)); }
   Eigen::VectorXd auxiliary() const override { return flat(Family::auxiliary(value)); }
   bool has_trajectory() const override { return !value.trajectory.t.empty(); }
+  std::unique_ptr<PathResult> clone() const override { return std::make_unique<ResultOf>(value); }
 };
 
 }  // namespace detail

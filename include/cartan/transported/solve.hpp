@@ -7,17 +7,10 @@
 // `cartan sweep` call this; the result it returns is complete (method used,
 // branch, status, action), so no caller patches it.
 //
-// The default strategy:
-//   1. shooting, direct from the guess (abandoned once |r| stops decreasing);
-//   2. continuation in T, unless the Lagrangian is purely kinetic (rescaling time maps the
-//      problem at a shorter horizon onto the same problem) or N is too small to halve T;
-//   3. continuation in lambda from lambda = 0, then from lambda = 1 (the flat connections);
-//   4. collocation of the continuous problem (natural Lagrangians), then shooting of the
-//      discrete scheme from the collocation solution, so that the result is on the N steps;
-//   5. multiple shooting from the guess.
-// `branch` names the whole path, e.g. "collocation, after shooting and continuation in T failed".
-// When everything fails, the result is the best iterate *of the requested problem* (smallest
-// terminal residual) with status StrategyFailed and every attempt in `message`.
+// The default strategy is every kernel's (solvers/strategy.hpp, compiled once): shooting, then
+// continuation in T (unless the Lagrangian is purely kinetic), in lambda from 0 and from 1,
+// collocation polished by shooting (natural Lagrangians), multiple shooting; this kernel says what
+// it can do and runs each method (StrategyKernel below).
 
 #include <optional>
 #include <sstream>
@@ -25,7 +18,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "cartan/solvers/attempts.hpp"
+#include "cartan/solvers/strategy.hpp"
 #include "cartan/transported/collocation_solution.hpp"
 #include "cartan/transported/compiled.hpp"
 #include "cartan/mechanics/free_body.hpp"
@@ -179,10 +172,10 @@ TransportedSolution<G> collocation(const TransportedProblem<G, L>& problem, cons
   }
 }
 
-/// Shooting as `options` say; `failed_direct` (continuation in T), when not null, is moved from.
+/// Method::Shooting as `options` say.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> shooting(const TransportedProblem<G, L>& problem, const SolveOptions& options,
-                                const SolveGuess<G>& guess, TransportedSolution<G>* failed_direct = nullptr) {
+                                const SolveGuess<G>& guess) {
   const SolveMonitor stage = options.monitor.stage("shooting");
   ContinuationOptions c{.shooting = {.order = options.order, .tolerance = options.tol,
                                      .max_iterations = options.max_iterations, .monitor = &stage}};
@@ -190,8 +183,7 @@ TransportedSolution<G> shooting(const TransportedProblem<G, L>& problem, const S
   const std::optional<groups::CovectorOf<G>> xi0 = guess.start_xi0();
   switch (options.continuation) {
     case Continuation::T:
-      return failed_direct != nullptr ? solve_continuation_in_T(problem, c, v0, xi0, std::move(*failed_direct))
-                                      : solve_continuation_in_T(problem, c, v0, xi0);
+      return solve_continuation_in_T(problem, c, v0, xi0);
     case Continuation::Lambda:
       return solve_continuation_in_lambda(problem, options.lambda_start.value_or(0.0), c);
     case Continuation::None: break;
@@ -202,86 +194,64 @@ TransportedSolution<G> shooting(const TransportedProblem<G, L>& problem, const S
   return s;
 }
 
-/// The default strategy (header comment).
+/// The Lie-group kernel as the default strategy sees it (solvers/strategy.hpp): its methods on
+/// `problem` from `guess`, its results PathResults of the problem's family.
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+class StrategyKernel final : public solvers::StrategyKernel {
+ public:
+  using Problem = TransportedProblem<G, L>;
+  StrategyKernel(const Problem& problem, const SolveGuess<G>& guess) : problem_(problem), guess_(guess) {}
+
+  solvers::PathResultPtr empty() const override { return wrap(TransportedSolution<G>{}); }
+  double auxiliary_scale() const override { return xi_scale(problem_); }
+  bool guessed() const override { return !guess_.empty(); }
+  int steps() const override { return problem_.N; }
+  bool time_rescaling_invariant() const override { return kPurelyKinetic<L>; }
+  std::optional<double> lambda() const override { return problem_.lambda; }
+  bool has_collocation() const override { return kNatural<L>; }
+  bool has_multiple_shooting() const override { return true; }
+  int first_shooting_window() const override { return ContinuationOptions{}.no_progress_window; }  // the path's
+
+  solvers::PathResultPtr shoot(const ShootingOptions& options) override {
+    return wrap(solve_shooting(problem_, options, v0(), xi0()));
+  }
+  solvers::PathResultPtr shoot_from(const ShootingOptions& options, const solvers::PathResult& start) override {
+    const TransportedSolution<G>& s = dynamic_cast<const solvers::detail::ResultOf<Family>&>(start).value;
+    return wrap(solve_shooting(problem_, options, s.v0, s.xi0));
+  }
+  solvers::PathResultPtr continue_in_T(const ContinuationOptions& options, solvers::PathResultPtr failed_direct) override {
+    return wrap(solve_continuation_in_T(problem_, options, guess_.start_v0(), guess_.start_xi0(),
+                                        solvers::take<Problem>(std::move(failed_direct))));
+  }
+  solvers::PathResultPtr continue_in_lambda(const ContinuationOptions& options, double start) override {
+    return wrap(solve_continuation_in_lambda(problem_, start, options));
+  }
+  solvers::PathResultPtr collocate(const SolveOptions& options, int samples) override {
+    if constexpr (kNatural<L>) return wrap(collocation(problem_, options, guess_, samples));
+    throw std::logic_error("transported::StrategyKernel: collocation needs a natural Lagrangian");
+  }
+  solvers::PathResultPtr multiple_shoot(const SolveOptions& options, const SolveMonitor& stage) override {
+    const MultipleShootingOptions m{.order = options.order, .tolerance = options.tol,
+                                    .max_iterations = options.max_iterations, .monitor = &stage};
+    return wrap(solve_multiple_shooting(problem_, m, v0(), xi0()));
+  }
+
+ private:
+  using Family = solvers::ShootingFamily<Problem>;
+  static solvers::PathResultPtr wrap(TransportedSolution<G> s) { return solvers::wrap<Problem>(std::move(s)); }
+  groups::TangentOf<G> v0() const { return guess_.start_v0().value_or(geodesic_guess(problem_)); }
+  groups::CovectorOf<G> xi0() const { return guess_.start_xi0().value_or(groups::CovectorOf<G>::Zero()); }
+
+  const Problem& problem_;
+  const SolveGuess<G>& guess_;
+};
+
+/// The default strategy (solvers/strategy.hpp) on the Lie-group kernel.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const SolveOptions& options,
                                 const SolveGuess<G>& guess) {
-  using Problem = TransportedProblem<G, L>;
-  solvers::Attempts attempts(solvers::wrap<Problem>(TransportedSolution<G>{}), [&problem] { return xi_scale(problem); });
-  // Records an attempt; returns true when it solved the problem.
-  const auto attempt = [&](const std::string& name, TransportedSolution<G> s, bool requested_problem = true) {
-    return attempts.attempt(name, solvers::wrap<Problem>(std::move(s)), requested_problem);
-  };
-  const auto stopped = [&] { return options.monitor.stop_requested(); };
-  const auto finish = [&](bool solved) {
-    return solvers::take<Problem>(attempts.finish(solved, !solved && stopped()));
-  };
-
-  const bool guessed = !guess.empty();
-  SolveOptions direct = options;
-  direct.method = Method::Shooting;
-  // 1. Shooting from the guess, abandoned when it makes no progress.
-  TransportedSolution<G> direct_attempt;
-  constexpr int kMinStepsToHalve = 16;
-  const bool halve_horizon = !kPurelyKinetic<L> && problem.N >= kMinStepsToHalve;  // step 2
-  {
-    const SolveMonitor stage = options.monitor.stage("shooting");
-    const ShootingOptions s{.order = options.order, .tolerance = options.tol, .max_iterations = options.max_iterations,
-                            .no_progress_window = ContinuationOptions{}.no_progress_window, .monitor = &stage};
-    TransportedSolution<G> r = solve_shooting(problem, s, guess.start_v0().value_or(geodesic_guess(problem)),
-                                              guess.start_xi0().value_or(groups::CovectorOf<G>::Zero()));
-    r.branch = guessed ? "direct from the given guess" : "direct from the geodesic guess";
-    if (halve_horizon && !r.converged() && !stopped()) direct_attempt = r;  // step 2 starts from it (moved)
-    if (attempt("shooting", std::move(r))) return finish(true);
-  }
-  // 2. Continuation in T where a shorter horizon is an easier problem.
-  if (halve_horizon && !stopped()) {
-    direct.continuation = Continuation::T;
-    // Its first stage would repeat step 1 exactly (same start, same shooting options): reuse it.
-    if (attempt("continuation in T", shooting(problem, direct, guess, &direct_attempt))) return finish(true);
-  }
-  // 3. Continuation in lambda from the flat connections.
-  for (const double start : {0.0, 1.0}) {
-    if (problem.lambda == start || stopped()) continue;
-    direct.continuation = Continuation::Lambda;
-    direct.lambda_start = start;
-    if (attempt("continuation in lambda from " + format_value(start), shooting(problem, direct, SolveGuess<G>{}))) {
-      return finish(true);
-    }
-  }
-  direct.lambda_start.reset();
-  // 4. Collocation of the continuous problem, then the discrete scheme from its solution.
-  if constexpr (kNatural<L>) {
-    if (!stopped()) {
-      SolveOptions c = options;
-      c.method = Method::Collocation;
-      TransportedSolution<G> continuous = collocation(problem, c, guess, problem.N + 1);
-      if (continuous.converged()) {
-        direct.continuation = Continuation::None;
-        SolveGuess<G> from;
-        from.v0 = continuous.v0;
-        from.xi0 = continuous.xi0;
-        TransportedSolution<G> polished = shooting(problem, direct, from);
-        attempts.add_sweeps(continuous.sweeps);
-        polished.branch = "from the collocation solution";
-        if (attempt("shooting", std::move(polished))) return finish(true);
-        attempts.forget_last_failure();
-        continuous.branch = "of the continuous problem; shooting the discrete scheme from it failed";
-      }
-      if (attempt("collocation", std::move(continuous))) return finish(true);
-    }
-  }
-  // 5. Multiple shooting from the guess.
-  if (!stopped() && problem.N >= 2) {
-    const SolveMonitor stage = options.monitor.stage("multiple shooting");
-    MultipleShootingOptions m{.order = options.order, .tolerance = options.tol,
-                              .max_iterations = options.max_iterations, .monitor = &stage};
-    if (attempt("multiple shooting", solve_multiple_shooting(problem, m, guess.start_v0().value_or(geodesic_guess(problem)),
-                                                             guess.start_xi0().value_or(groups::CovectorOf<G>::Zero())))) {
-      return finish(true);
-    }
-  }
-  return finish(false);
+  StrategyKernel<G, L> kernel(problem, guess);
+  return solvers::take<TransportedProblem<G, L>>(solvers::default_strategy(kernel, options));
 }
 
 }  // namespace detail
