@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "cartan/mechanics/rigid_body.hpp"
+#include "cartan/verify/assemble.hpp"
 #include "cartan/verify/checks.hpp"
 #include "cartan/verify/report.hpp"
 #include "test_support.hpp"
@@ -207,6 +208,46 @@ TEST(VerifyReport, InvalidTrajectoriesAreRejected) {
   testing::expect_invalid([&] { (void)verify::verify_trajectory(longer, x, 1, 1e-10); }, "must run from 0 to T");
   testing::expect_invalid([&] { (void)verify::verify_trajectory(problem, x, 0, 1e-10); }, "order");
   testing::expect_invalid([&] { (void)verify::verify_trajectory(problem, x, 1, -1.0); }, "tol");
+}
+
+// The report assembled from a kernel's figures (verify/assemble.hpp): thresholds C a^q rho^p +
+// 10 tol + 1e-10 (verify/verdict.hpp) with q = p + 1 for the energy and q = p otherwise, capped at 1;
+// the order at most 2; the failing `converged` check first for a failed status; stationarity N/A
+// with the kernel's reason.
+TEST(VerifyAssemble, ThresholdsFollowTheFiguresOrderAndLambdaFactor) {
+  Figures f;
+  f.resolution = 0.1;
+  f.amplification = 2;
+  f.boundary = 1e-11;
+  f.legendre = 1e-12;
+  f.energy = 0.05;
+  f.energy_constant = 3;
+  f.residual = {0.2, "mu", 1.5};
+  f.residual_equations = "the local form";
+  f.stationarity_note = "not uniform";
+  const double tol = 1e-8, floor = 10 * tol + 1e-10;
+  const Report r = assemble(f, 4, tol, Status::MaxIterations);  // collocation: checked at order 2
+  EXPECT_EQ(r.order, 2);
+  EXPECT_EQ(r.amplification, 2);
+  ASSERT_EQ(r.checks.size(), 6u);
+  EXPECT_EQ(r.checks[0].name, "converged");
+  EXPECT_FALSE(r.checks[0].passed());
+  EXPECT_EQ(r.checks[1].threshold, tol);
+  EXPECT_EQ(r.checks[2].threshold, kLegendreThreshold);
+  EXPECT_DOUBLE_EQ(r.checks[3].threshold, 3 * std::pow(2.0, 3) * 0.01 + floor);  // C a^(p+1) rho^p
+  EXPECT_TRUE(r.checks[3].passed());                                             // 0.05 <= 0.24
+  EXPECT_DOUBLE_EQ(r.checks[4].threshold, kResidualConstant * 4 * 0.01 + floor);  // C a^p rho^p = 0.06
+  EXPECT_FALSE(r.checks[4].passed());                                             // 0.2 > 0.06
+  EXPECT_EQ(r.checks[4].note, "the local form by finite differences, worst: mu at t = 1.5");
+  EXPECT_FALSE(r.checks[5].applicable);
+  EXPECT_EQ(r.checks[5].note, "not uniform");
+  f.resolution = 10;  // C a^q rho^p far above 1: capped
+  f.stationarity = 0.5;
+  const Report coarse = assemble(f, 1, tol, Status::Converged);
+  ASSERT_EQ(coarse.checks.size(), 5u);
+  EXPECT_EQ(coarse.checks[2].threshold, 1.0);
+  EXPECT_TRUE(coarse.checks[4].applicable);
+  EXPECT_EQ(coarse.checks[4].threshold, 1.0);
 }
 
 }  // namespace

@@ -61,8 +61,8 @@ struct ShootingFamily<general::GeneralProblem<M, L>> {
   static const Auxiliary& auxiliary(const Solution& s) { return s.Xi0; }
   static Velocity guess(const Problem& p) { return general::geodesic_guess(p); }
   static double auxiliary_scale(const Problem& p) { return general::xi_scale(p); }
-  static int inner_iterations(const Solution&) { return 0; }  // one level: no inner iterations
-  static void set_inner_iterations(Solution&, int) {}
+  /// A path's result reports its last solve's iterations (docs/design/one-core.md, D8).
+  static constexpr bool kSumsInnerIterations = false;
 };
 
 }  // namespace cartan::solvers

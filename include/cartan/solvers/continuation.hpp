@@ -124,7 +124,7 @@ PathResultPtr continue_in_parameter(const ShootingPath& path, double from, doubl
 
 /// How continuation drives shooting on one problem family (header comment): the types Solution,
 /// Velocity, Auxiliary; shoot(problem, options, velocity, auxiliary); velocity(s), auxiliary(s),
-/// guess(problem), auxiliary_scale(problem); inner_iterations(s), set_inner_iterations(s, n).
+/// guess(problem), auxiliary_scale(problem); kSumsInnerIterations (ShootingPath::sums_inner_iterations).
 template <class Problem>
 struct ShootingFamily;
 
@@ -179,11 +179,7 @@ class FamilyPath final : public ShootingPath {
   using Velocity = typename Family::Velocity;
   using Auxiliary = typename Family::Auxiliary;
 
-  explicit FamilyPath(Make make) : make_(std::move(make)) {
-    Solution probe;  // the family counts inner iterations along a path iff it keeps what it is given
-    Family::set_inner_iterations(probe, 1);
-    sums_ = Family::inner_iterations(probe) == 1;
-  }
+  explicit FamilyPath(Make make) : make_(std::move(make)) {}
 
   static PathResultPtr wrap(Solution s) { return solvers::wrap<Problem>(std::move(s)); }
   /// The solution a PathResult of this family holds, moved out.
@@ -199,11 +195,10 @@ class FamilyPath final : public ShootingPath {
   double auxiliary_scale(double p) const override { return Family::auxiliary_scale(make_(p)); }
   double velocity_norm(const Eigen::VectorXd& v) const override { return detail::typed<Velocity>(v).norm(); }
   double auxiliary_norm(const Eigen::VectorXd& a) const override { return detail::typed<Auxiliary>(a).norm(); }
-  bool sums_inner_iterations() const override { return sums_; }
+  bool sums_inner_iterations() const override { return Family::kSumsInnerIterations; }
 
  private:
   Make make_;
-  bool sums_ = true;
 };
 
 template <class Problem, class Make>

@@ -39,8 +39,7 @@ struct ShootingFamily<transported::TransportedProblem<G, L>> {
   static const Auxiliary& auxiliary(const Solution& s) { return s.xi0; }
   static Velocity guess(const transported::TransportedProblem<G, L>& p) { return transported::geodesic_guess(p); }
   static double auxiliary_scale(const transported::TransportedProblem<G, L>& p) { return transported::xi_scale(p); }
-  static int inner_iterations(const Solution& s) { return s.inner_iterations; }
-  static void set_inner_iterations(Solution& s, int n) { s.inner_iterations = n; }
+  static constexpr bool kSumsInnerIterations = true;  // along a path (two-level's inner solves too)
 };
 
 }  // namespace cartan::solvers

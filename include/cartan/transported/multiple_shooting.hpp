@@ -27,9 +27,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <sstream>
 
-#include "cartan/numerics/spectrum.hpp"
+#include "cartan/solvers/multiple_shooting.hpp"
 #include "cartan/transported/shooting.hpp"
 
 namespace cartan::transported {
@@ -248,15 +247,37 @@ double single_sweep_residual(const TransportedScheme<G, L>& scheme, const groups
   return std::hypot(scheme.terminal_residual(out.last).norm(), out.last.xi.norm() / xi_scale(scheme.problem()));
 }
 
-/// sigma_min / sigma_max of the lifted Jacobian at x (NaN if the evaluation failed): a value
-/// near rounding means LM stopped at a local minimum of |r| on a fold, not near a root.
+/// The lifted system as the compiled driver sees it (solvers/multiple_shooting.hpp): one
+/// recorded into `solution`, the guess (v0, xi0) its start.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-double jacobian_conditioning(MultipleShootingSystem<G, L>& system, const Eigen::VectorXd& x) {
-  Eigen::VectorXd r;
-  Eigen::MatrixXd jac;
-  if (!system.evaluate(x, r, &jac)) return std::nan("");
-  return numerics::singular_value_ratio(jac);
-}
+class LiftedScheme final : public solvers::LiftedSystem {
+ public:
+  using System = MultipleShootingSystem<G, L>;
+  LiftedScheme(const TransportedScheme<G, L>& scheme, System& system, const groups::TangentOf<G>& v0,
+               const groups::CovectorOf<G>& xi0, TransportedSolution<G>& solution)
+      : scheme_(scheme), system_(system), v0_(v0), xi0_(xi0), solution_(solution) {}
+
+  std::optional<Eigen::VectorXd> initialise() override { return system_.initialise(v0_, xi0_); }
+  void recentre(Eigen::VectorXd& x) override { system_.recentre(x); }
+  bool evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) override {
+    return system_.evaluate(x, r, jac);
+  }
+  double single_sweep_residual(const Eigen::VectorXd& x) override {
+    return detail::single_sweep_residual(scheme_, System::v0(x), System::xi0(x));
+  }
+  bool record(const Eigen::VectorXd& x) override {
+    return detail::record_solution(scheme_, System::v0(x), System::xi0(x), nullptr, solution_);
+  }
+  double auxiliary_scale() const override { return xi_scale(scheme_.problem()); }
+  const std::string& failure() const override { return system_.failure(); }
+
+ private:
+  const TransportedScheme<G, L>& scheme_;
+  System& system_;
+  groups::TangentOf<G> v0_;
+  groups::CovectorOf<G> xi0_;
+  TransportedSolution<G>& solution_;
+};
 
 }  // namespace detail
 
@@ -288,81 +309,13 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
   solution.method = Method::MultipleShooting;
   solution.order = static_cast<int>(options.order);
   solution.branch = "from the initial guess, segment states from a sweep from the guess";
-  std::ostringstream message;
-  message << "multiple shooting (" << segments << " segments of ~" << problem.N / segments << " steps): ";
-
-  if (segments > 1) ++solution.sweeps;
-  std::optional<Eigen::VectorXd> x = system.initialise(v0_guess, xi0_guess);
-  if (!x) {
-    const bool stopped = options.monitor != nullptr && options.monitor->stop_requested();
-    solution.status = stopped ? Status::Interrupted : Status::NonFinite;
-    solution.message = message.str() + "the initial segment states failed: " + system.failure();
-    solution.solve_time_s = detail::seconds_since(start);
-    return solution;
-  }
-  const numerics::ResidualFunction f = [&](const Eigen::VectorXd& y, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
-    ++solution.sweeps;
-    return system.evaluate(y, r, jac);
-  };
-  // Rounds of LM, re-centring the charts in between (the first point of a round repeats the
-  // last of the previous one and is not recorded twice).
-  numerics::NonlinearSolveReport report;
-  double lifted_tolerance = options.tolerance;
-  int rounds = 0, tightenings = 0;
-  bool lifted_converged = false;
-  while (solution.inner_iterations < options.max_iterations) {
-    const int budget = std::min(options.recentre_every, options.max_iterations - solution.inner_iterations);
-    report = numerics::levenberg_marquardt(f, *x, {.tolerance = lifted_tolerance, .max_iterations = budget,
-                                         .monitor = options.monitor, .evaluations_stop = true});  // segments poll
-    solution.inner_iterations += report.iterations;
-    const auto& h = report.residual_history;
-    solution.residual_history.insert(solution.residual_history.end(), h.begin() + (rounds > 0 && !h.empty()), h.end());
-    ++rounds;
-    *x = report.x;
-    if (report.status == Status::MaxIterations) {
-      system.recentre(*x);
-      continue;
-    }
-    // Below the tolerance; after a tightening, a stall at the rounding floor counts too.
-    lifted_converged = report.status == Status::Converged ||
-                       (tightenings > 0 && report.status == Status::Stalled);
-    if (!lifted_converged) break;
-    ++solution.sweeps;
-    const double single = detail::single_sweep_residual(scheme, System::v0(*x), System::xi0(*x));
-    if (single <= options.tolerance || tightenings == 3) break;
-    ++tightenings;
-    lifted_tolerance = report.residual_norm * 0.5 * options.tolerance / single;
-    if (!(lifted_tolerance > 0)) break;  // single is inf (its sweep failed) or |r| is exactly 0
-  }
-  ++solution.sweeps;
-  const bool recorded = detail::record_solution(scheme, System::v0(*x), System::xi0(*x), nullptr, solution);
-  const bool consistent =
-      recorded && std::hypot(solution.terminal_error, solution.xi_terminal / xi_scale(problem)) <= options.tolerance;
-  solution.status = !recorded                     ? Status::NonFinite
-                    : lifted_converged && consistent ? Status::Converged
-                    : lifted_converged               ? Status::Inconsistent
-                                                     : report.status;
-  double conditioning = 0;
-  if (!lifted_converged) {
-    ++solution.sweeps;
-    conditioning = detail::jacobian_conditioning(system, *x);
-  }
-  message << report.message << " in round " << rounds << " (" << solution.inner_iterations
-          << " iterations in all, lifted tolerance " << format_value(lifted_tolerance) << "), " << solution.sweeps
-          << " sweeps; |r| history [";
-  for (std::size_t i = 0; i < solution.residual_history.size(); ++i) {
-    message << (i ? ", " : "") << format_value(solution.residual_history[i]);
-  }
-  message << "]";
-  if (recorded) {
-    message << "; single sweep from v0: terminal error " << format_value(solution.terminal_error) << ", |xi_N| "
-            << format_value(solution.xi_terminal);
-  }
-  if (!lifted_converged) {
-    message << "; sigma_min / sigma_max of the Jacobian at the last point: " << format_value(conditioning);
-  }
-  if (!system.failure().empty()) message << "; last failed segment sweep: " << system.failure();
-  solution.message = message.str();
+  const std::string header = "multiple shooting (" + std::to_string(segments) + " segments of ~" +
+                             std::to_string(problem.N / segments) + " steps): ";
+  detail::LiftedScheme<G, L> lifted(scheme, system, v0_guess, xi0_guess, solution);
+  solvers::solve_lifted(lifted,
+                        {.segments = segments, .tolerance = options.tolerance, .max_iterations = options.max_iterations,
+                         .recentre_every = options.recentre_every, .monitor = options.monitor},
+                        header, solution);
   solution.solve_time_s = detail::seconds_since(start);
   return solution;
 }

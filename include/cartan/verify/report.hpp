@@ -14,6 +14,7 @@
 #include "cartan/errors.hpp"
 #include "cartan/transported/compiled.hpp"
 #include "cartan/transported/solution.hpp"
+#include "cartan/verify/assemble.hpp"
 #include "cartan/verify/checks.hpp"
 #include "cartan/verify/verdict.hpp"
 
@@ -31,41 +32,26 @@ Report verify_trajectory(const transported::TransportedProblem<G, L>& problem, t
   if (!(tol > 0) || !std::isfinite(tol)) throw_invalid("verify", "tol", format_value(tol), "must be positive and finite");
   x.validate(problem.T, "verify", true, 1e-9);
   const TrajectoryChecks<G, L> checks(problem.lagrangian, problem.lambda, problem.T, std::move(x));
-  Report report;
-  report.order = std::min(order, 2);
-  report.resolution = checks.max_step() * checks.frequency();
-  report.amplification = checks.amplification();
-  // At most 1: every figure is relative, and a threshold above 100 % says nothing. It also keeps
-  // thresholds finite when absurd data (found by fuzzing: an xi of 1e215) make a overflow.
-  auto threshold = [&](double constant, int extra_power) {
-    const double lambda_factor = std::pow(report.amplification, report.order + extra_power);
-    const double value =
-        discretisation_threshold(constant * lambda_factor, report.resolution, report.order) + threshold_floor(tol);
-    return std::isfinite(value) ? std::min(value, 1.0) : 1.0;
-  };
-  if (status != Status::Converged) report.checks.push_back(convergence_check(status));
+  Figures f;
+  f.resolution = checks.max_step() * checks.frequency();
+  f.amplification = checks.amplification();
   // Shooting stops at |xi_N| / xi_scale <= tol (shooting.hpp), so xi_N may exceed tol where
   // xi_scale > 1: measure it in units of max(1, xi_scale), never looser than absolute.
   const double xi_unit = std::max(1.0, transported::xi_scale(problem));
-  report.checks.push_back({"boundary", checks.boundary_error(problem.g0, problem.gT, xi_unit), tol, true,
-                           "max(|log(g0^-1 g_0)|, |log(gT^-1 g_N)|, |xi_N| / max(1, xi_scale)) against tol"});
-  report.checks.push_back({"legendre", checks.legendre_residual(), kLegendreThreshold, true,
-                           "max |mu - dl/dv(g, v)|, relative"});
-  report.checks.push_back({"energy", checks.energy_drift(), threshold(kEnergyConstant, 1), true,
-                           "max |E - E(0)| / max |E|, E = mu.v - l (conserved for every lambda when l does not depend "
-                           "on t)"});
-  const Residual residual = checks.equation_residual();
-  report.checks.push_back({"residual", residual.relative, threshold(kResidualConstant, 0), true,
-                           "eq:reduced-system by finite differences, worst: " + residual.equation + " at t = " +
-                               Report::format(residual.t)});
-  const bool uniform = is_uniform(checks.trajectory().t);
-  report.checks.push_back({"stationarity", uniform ? checks.action_stationarity(kVariations, kVariationSeed) : 0,
-                           threshold(kActionConstant, 0), uniform,
-                           uniform ? "max |dS| / (size of its terms) over " + std::to_string(kVariations) +
-                                         " random endpoint-fixed variations"
-                                   : "t is not uniform (collocation on its own mesh): sample it uniformly "
-                                     "(samples = M)"});
-  return report;
+  f.boundary = checks.boundary_error(problem.g0, problem.gT, xi_unit);
+  f.boundary_note = "max(|log(g0^-1 g_0)|, |log(gT^-1 g_N)|, |xi_N| / max(1, xi_scale)) against tol";
+  f.legendre = checks.legendre_residual();
+  f.legendre_note = "max |mu - dl/dv(g, v)|, relative";
+  f.energy = checks.energy_drift();
+  f.energy_note = "max |E - E(0)| / max |E|, E = mu.v - l (conserved for every lambda when l does not depend on t)";
+  f.residual = checks.equation_residual();
+  f.residual_equations = "eq:reduced-system";
+  if (is_uniform(checks.trajectory().t)) {
+    f.stationarity = checks.action_stationarity(kVariations, kVariationSeed);
+  } else {
+    f.stationarity_note = "t is not uniform (collocation on its own mesh): sample it uniformly (samples = M)";
+  }
+  return assemble(f, order, tol, status);
 }
 
 }  // namespace cartan::verify
