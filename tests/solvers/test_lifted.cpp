@@ -11,14 +11,14 @@
 namespace cartan::solvers {
 namespace {
 
-struct Toy final : LiftedSystem {
+struct ToyLifted final : LiftedSystem {
   ResultCore& result;
   double inflation = 1;
   bool start_fails = false;
   int recentred = 0;
   std::string why;
 
-  explicit Toy(ResultCore& r) : result(r) {}
+  explicit ToyLifted(ResultCore& r) : result(r) {}
   std::optional<Eigen::VectorXd> initialise() override {
     if (start_fails) {
       why = "the sweep from the guess failed";
@@ -44,7 +44,7 @@ struct Toy final : LiftedSystem {
 
 TEST(LiftedDriver, ConvergesAndCountsItsSweeps) {
   ResultCore r;
-  Toy toy(r);
+  ToyLifted toy(r);
   solve_lifted(toy, {.segments = 2, .tolerance = 1e-12}, "toy: ", r);
   EXPECT_EQ(r.status, Status::Converged) << r.message;
   EXPECT_LE(r.terminal_error, 1e-12);
@@ -57,7 +57,7 @@ TEST(LiftedDriver, ConvergesAndCountsItsSweeps) {
 
 TEST(LiftedDriver, RecentresBetweenRoundsAndKeepsOneHistory) {
   ResultCore r;
-  Toy toy(r);
+  ToyLifted toy(r);
   solve_lifted(toy, {.tolerance = 1e-12, .recentre_every = 1}, "", r);  // one iteration per round
   EXPECT_EQ(r.status, Status::Converged) << r.message;
   EXPECT_EQ(toy.recentred, r.inner_iterations - 1);  // between rounds, not after the last
@@ -67,7 +67,7 @@ TEST(LiftedDriver, RecentresBetweenRoundsAndKeepsOneHistory) {
 
 TEST(LiftedDriver, ASweepThatAmplifiesTheJoinsIsInconsistentAfterThreeTightenings) {
   ResultCore r;
-  Toy toy(r);
+  ToyLifted toy(r);
   toy.inflation = 1e20;  // no lifted tolerance above rounding makes the plain sweep meet 1e-8
   solve_lifted(toy, {.tolerance = 1e-8}, "", r);
   EXPECT_EQ(r.status, Status::Inconsistent) << r.message;
@@ -76,13 +76,13 @@ TEST(LiftedDriver, ASweepThatAmplifiesTheJoinsIsInconsistentAfterThreeTightening
 
 TEST(LiftedDriver, AFailedStartIsNonFiniteOrInterrupted) {
   ResultCore r;
-  Toy toy(r);
+  ToyLifted toy(r);
   toy.start_fails = true;
   solve_lifted(toy, {.segments = 3}, "toy: ", r);
   EXPECT_EQ(r.status, Status::NonFinite);
   EXPECT_EQ(r.message, "toy: the initial segment states failed: the sweep from the guess failed");
   ResultCore stopped;
-  Toy again(stopped);
+  ToyLifted again(stopped);
   again.start_fails = true;
   const SolveMonitor monitor(nullptr, [] { return true; });
   solve_lifted(again, {.monitor = &monitor}, "", stopped);

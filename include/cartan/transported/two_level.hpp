@@ -6,8 +6,13 @@
 // The plain fixed point has no convergence guarantee (docs/paper-notes.md#erratum-4); failures of
 // either loop are reported with their iteration counts and residuals.
 
-#include <sstream>
+#include <algorithm>
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
 
+#include "cartan/solvers/two_level.hpp"
 #include "cartan/transported/shooting.hpp"
 
 namespace cartan::transported {
@@ -31,112 +36,89 @@ struct TwoLevelOptions {
   }
 };
 
+namespace detail {
+
+/// The scheme's sweeps as the compiled two-level driver sees them (solvers/two_level.hpp): the
+/// inner residual log(gT^{-1} g_N) with the sequence xi held fixed (xi0 = 0), its update by the
+/// backward recursion xi_k = xi_{k+1} - h rate_k with xi_N = 0 (disc-aux), the trajectory
+/// recorded into `solution`.
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+class FixedPointScheme final : public solvers::FixedPointSystem {
+ public:
+  FixedPointScheme(const TransportedScheme<G, L>& scheme, const SolveMonitor* monitor, TransportedSolution<G>& solution)
+      : scheme_(scheme), monitor_(monitor), solution_(solution),
+        xi_(static_cast<std::size_t>(scheme.problem().N) + 1, groups::CovectorOf<G>::Zero()) {}  // xi^(0) = 0 (Step 1)
+
+  bool inner(const Eigen::VectorXd& v0, Eigen::VectorXd& r, Eigen::MatrixXd* jac) override {
+    SweepOutput<G, L> out;
+    out.monitor = monitor_;
+    const int columns = jac != nullptr ? G::kDim : 0;
+    const auto begin = std::chrono::steady_clock::now();
+    if (!forward_sweep(scheme_, groups::TangentOf<G>(v0), groups::CovectorOf<G>::Zero(), &xi_, columns, out)) {
+      failure_ = out.failure;
+      return false;
+    }
+    // After a stop: a recording sweep (these sweeps record nothing).
+    if (monitor_) {
+      monitor_->reserve_after_stop(std::chrono::duration_cast<std::chrono::nanoseconds>(
+          (std::chrono::steady_clock::now() - begin) * SolveMonitor::sweeps_after_stop(false, columns > 0)));
+    }
+    const groups::TangentOf<G> rg = scheme_.terminal_residual(out.last);
+    r = rg;
+    if (columns > 0) *jac = scheme_.terminal_residual_tangent(rg, *out.tangent);
+    return true;
+  }
+  std::optional<double> update(const Eigen::VectorXd& v0) override {
+    SweepOutput<G, L> out;
+    out.xi_rates = &rates_;
+    if (!forward_sweep(scheme_, groups::TangentOf<G>(v0), groups::CovectorOf<G>::Zero(), &xi_, 0, out)) {
+      failure_ = out.failure;
+      return std::nullopt;
+    }
+    const double dt = scheme_.step_size();
+    const std::size_t nodes = xi_.size();
+    std::vector<groups::CovectorOf<G>> xi_new(nodes, groups::CovectorOf<G>::Zero());
+    for (std::size_t k = nodes - 1; k-- > 0;) xi_new[k] = xi_new[k + 1] - dt * rates_[k];
+    double change = 0;
+    for (std::size_t k = 0; k < nodes; ++k) change = std::max(change, (xi_new[k] - xi_[k]).cwiseAbs().maxCoeff());
+    xi_ = std::move(xi_new);
+    return change;
+  }
+  bool record(const Eigen::VectorXd& v0) override {
+    return record_solution(scheme_, groups::TangentOf<G>(v0), groups::CovectorOf<G>::Zero(), &xi_, solution_);
+  }
+  const std::string& failure() const override { return failure_; }
+
+ private:
+  const TransportedScheme<G, L>& scheme_;
+  const SolveMonitor* monitor_;
+  TransportedSolution<G>& solution_;
+  std::vector<groups::CovectorOf<G>> xi_, rates_;
+  std::string failure_;
+};
+
+}  // namespace detail
+
+/// The two-level scheme (header comment) from v0_guess: the driver is compiled
+/// (solvers::solve_fixed_point), the sweeps are this kernel's.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 TransportedSolution<G> solve_two_level(const TransportedProblem<G, L>& problem, const TwoLevelOptions& options,
                                        const groups::TangentOf<G>& v0_guess) {
   problem.validate();
   options.validate();
   require_finite(v0_guess, "solve_two_level", "v0_guess");
-  constexpr int n = G::kDim;
   const auto start = std::chrono::steady_clock::now();
   const TransportedScheme<G, L> scheme(problem, options.order);
-  const double dt = scheme.step_size();
-  const std::size_t nodes = static_cast<std::size_t>(problem.N) + 1;
   TransportedSolution<G> solution;
   solution.method = Method::TwoLevel;
   solution.order = static_cast<int>(options.order);
-
-  std::vector<groups::CovectorOf<G>> xi(nodes, groups::CovectorOf<G>::Zero());  // xi^(0) = 0 (Step 1)
-  std::vector<groups::CovectorOf<G>> rates;
-  std::string failure;
-  auto inner_residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jac) {
-    SweepOutput<G, L> out;
-    out.monitor = options.monitor;
-    ++solution.sweeps;
-    const int columns = (jac != nullptr && options.analytic_jacobian) ? n : 0;
-    const auto begin = std::chrono::steady_clock::now();
-    if (!forward_sweep(scheme, groups::TangentOf<G>(x), groups::CovectorOf<G>::Zero(), &xi, columns, out)) {
-      failure = out.failure;
-      return false;
-    }
-    // After a stop: a recording sweep (these sweeps record nothing).
-    if (options.monitor) {
-      options.monitor->reserve_after_stop(std::chrono::duration_cast<std::chrono::nanoseconds>(
-          (std::chrono::steady_clock::now() - begin) * SolveMonitor::sweeps_after_stop(false, columns > 0)));
-    }
-    const groups::TangentOf<G> rg = scheme.terminal_residual(out.last);
-    r = rg;
-    if (columns > 0) *jac = scheme.terminal_residual_tangent(rg, *out.tangent);
-    return true;
-  };
-  numerics::ResidualFunction inner = inner_residual;
-  if (!options.analytic_jacobian) {
-    inner = numerics::with_forward_difference_jacobian(
-        [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) { return inner_residual(x, r, nullptr); }, 1e-7);
-  }
-
-  // The outer test max_k |xi_new - xi_old| < tolerance is relative to xi's size (shooting.hpp).
-  const double scale = xi_scale(problem);
-  // Until a loop decides, the status is the initial NotConverged.
-  const auto decided = [](Status s) { return s != Status::NotConverged; };
-  solution.status = Status::NotConverged;
-  Eigen::VectorXd v0 = v0_guess;
-  double change = std::numeric_limits<double>::infinity();
-  numerics::NonlinearSolveReport report;
-  std::ostringstream history;
-  for (int outer = 0; outer < options.max_outer; ++outer) {
-    solution.outer_iterations = outer + 1;
-    // Steps 2-3: inner shooting for v0 with the current {xi_k}.
-    report = numerics::levenberg_marquardt(inner, v0, {.tolerance = options.inner_tolerance, .max_iterations = options.max_inner,
-                                             .monitor = options.monitor, .evaluations_stop = true});  // sweeps poll
-    solution.inner_iterations += report.iterations;
-    v0 = report.x;
-    if (report.status != Status::Converged) {
-      solution.status = report.status == Status::Interrupted ? Status::Interrupted : Status::InnerNotConverged;
-      solution.message = "two-level: inner shooting failed in outer iteration " + std::to_string(outer + 1) + ": " +
-                         report.message + (failure.empty() ? "" : "; last failed sweep: " + failure);
-      break;
-    }
-    // Step 4: backward recursion xi_k = xi_{k+1} - h * rate_k with xi_N = 0 (disc-aux).
-    SweepOutput<G, L> out;
-    out.xi_rates = &rates;
-    ++solution.sweeps;
-    if (!forward_sweep(scheme, groups::TangentOf<G>(v0), groups::CovectorOf<G>::Zero(), &xi, 0, out)) {
-      solution.status = Status::NonFinite;
-      solution.message = "two-level: the sweep for the xi rates failed in outer iteration " +
-                         std::to_string(outer + 1) + ": " + out.failure;
-      break;
-    }
-    std::vector<groups::CovectorOf<G>> xi_new(nodes, groups::CovectorOf<G>::Zero());
-    for (std::size_t k = nodes - 1; k-- > 0;) xi_new[k] = xi_new[k + 1] - dt * rates[k];
-    change = 0;
-    for (std::size_t k = 0; k < nodes; ++k) change = std::max(change, (xi_new[k] - xi[k]).cwiseAbs().maxCoeff());
-    xi = std::move(xi_new);
-    history << (outer ? ", " : "") << format_value(change);
-    solution.residual_history.push_back(change);
-    // Step 5: stop when the sequence no longer changes.
-    if (change < options.tolerance * scale) {
-      solution.status = Status::Converged;
-      break;
-    }
-    if (!std::isfinite(change)) {
-      solution.status = Status::NonFinite;
-      break;
-    }
-  }
-  if (!decided(solution.status)) solution.status = Status::OuterNotConverged;
-  // Step 6: the trajectory for the final {xi_k}.
-  ++solution.sweeps;
-  if (!detail::record_solution(scheme, groups::TangentOf<G>(v0), groups::CovectorOf<G>::Zero(), &xi, solution)) {
-    solution.status = Status::NonFinite;
-  }
-  std::ostringstream message;
-  message << "two-level: " << to_string(solution.status) << " after " << solution.outer_iterations << " outer and "
-          << solution.inner_iterations << " inner iterations, " << solution.sweeps
-          << " sweeps; outer changes max|xi_new - xi_old| = [" << history.str() << "]; terminal error "
-          << format_value(solution.terminal_error);
-  if (!solution.message.empty()) message << "; " << solution.message;
-  solution.message = message.str();
+  detail::FixedPointScheme<G, L> system(scheme, options.monitor, solution);
+  solvers::solve_fixed_point(system,
+                             {.tolerance = options.tolerance, .auxiliary_scale = xi_scale(problem),
+                              .inner_tolerance = options.inner_tolerance, .max_outer = options.max_outer,
+                              .max_inner = options.max_inner, .analytic_jacobian = options.analytic_jacobian,
+                              .monitor = options.monitor},
+                             Eigen::VectorXd(v0_guess), solution);
   solution.solve_time_s = detail::seconds_since(start);
   return solution;
 }
