@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "cartan/groups/exp_jacobian.hpp"
+#include "cartan/solvers/variational.hpp"
 #include "cartan/transported/action.hpp"
 #include "cartan/transported/shooting.hpp"
 #include "cartan/transported/solution.hpp"
@@ -317,6 +318,36 @@ std::vector<groups::TangentOf<G>> node_velocities(const std::vector<groups::Tang
   return v;
 }
 
+/// The path of nodes as the compiled Newton iteration sees it (solvers/variational.hpp): the
+/// current path `g` with its steps, and a trial path with its own.
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+class PathScheme final : public solvers::PathSystem {
+ public:
+  PathScheme(VariationalNewton<G, L>& newton, std::vector<groups::ElementOf<G>>& g, std::vector<ActionStep<G>>& steps)
+      : newton_(newton), g_(g), steps_(steps) {}
+
+  Eigen::Index unknowns() const override { return newton_.unknowns(); }
+  bool gradient(Eigen::VectorXd& out) override { return newton_.evaluate(g_, steps_, out); }
+  bool hessian(const Eigen::VectorXd& gradient, Eigen::MatrixXd& out) override {
+    return newton_.hessian(g_, steps_, gradient, out);
+  }
+  bool trial(const Eigen::VectorXd& delta, double s, Eigen::VectorXd& gradient) override {
+    trial_ = moved_interior<G>(g_, delta, s);
+    return newton_.evaluate(trial_, trial_steps_, gradient);
+  }
+  void accept() override {
+    g_ = trial_;
+    std::swap(steps_, trial_steps_);
+  }
+
+ private:
+  VariationalNewton<G, L>& newton_;
+  std::vector<groups::ElementOf<G>>& g_;
+  std::vector<ActionStep<G>>& steps_;
+  std::vector<groups::ElementOf<G>> trial_;
+  std::vector<ActionStep<G>> trial_steps_;
+};
+
 }  // namespace detail
 
 /// Solves the discrete Euler–Lagrange equations of S_h for the interior nodes of `problem`
@@ -343,67 +374,17 @@ TransportedSolution<G> solve_variational(const TransportedProblem<G, L>& problem
   solution.method = Method::Variational;
   solution.order = kVariationalOrder;
   detail::VariationalNewton<G, L> newton(problem, options);
-  std::vector<detail::ActionStep<G>> steps, trial_steps;
-  Eigen::VectorXd gradient, trial_gradient;
-  Eigen::MatrixXd hessian;
-  std::ostringstream why;
-  Status status = Status::MaxIterations;
-  int iteration = 0;
-  if (!newton.evaluate(g, steps, gradient)) {
-    status = Status::NonFinite;
-    why << "the gradient at the start is not finite";
-  } else if (newton.unknowns() == 0) {
-    status = Status::Converged;  // N = 1: no interior node, the path is the step from g0 to gT
-  }
-  auto iteration_begin = std::chrono::steady_clock::now();
-  for (; status == Status::MaxIterations && iteration < options.max_iterations; ++iteration) {
-    const auto now = std::chrono::steady_clock::now();
-    const auto last_iteration = now - iteration_begin;  // the next one is begun only if it can end in time
-    iteration_begin = now;
-    if (options.monitor && options.monitor->stop_requested_before(last_iteration)) {
-      status = Status::Interrupted;
-      break;
-    }
-    if (!newton.hessian(g, steps, gradient, hessian)) {
-      status = Status::NonFinite;
-      why << "the Hessian is not finite at iteration " << iteration;
-      break;
-    }
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(hessian);
-    const Eigen::VectorXd delta = -lu.solve(gradient);
-    if (!delta.allFinite()) {
-      status = Status::SingularJacobian;
-      why << "the Hessian is singular at iteration " << iteration;
-      break;
-    }
-    // Damping by the natural monotonicity test (header comment).
-    double s = 1;
-    Eigen::VectorXd correction;
-    for (;; s /= 2) {
-      if (s < 1.0 / 1024) break;
-      const std::vector<groups::ElementOf<G>> trial = detail::moved_interior<G>(g, delta, s);
-      if (!newton.evaluate(trial, trial_steps, trial_gradient)) continue;
-      correction = -lu.solve(trial_gradient);
-      if (correction.norm() <= (1 - s / 4) * delta.norm()) {
-        g = trial;
-        std::swap(steps, trial_steps);
-        std::swap(gradient, trial_gradient);
-        break;
-      }
-    }
-    if (s < 1.0 / 1024) {
-      status = Status::Stalled;
-      why << "no damped step passed the monotonicity test at iteration " << iteration << " (|delta| = "
-          << format_value(delta.cwiseAbs().maxCoeff()) << ")";
-      break;
-    }
-    const double remaining = correction.cwiseAbs().maxCoeff();
-    solution.residual_history.push_back(remaining);
-    if (options.monitor) options.monitor->report(iteration, remaining);
-    if (remaining <= options.tolerance) status = Status::Converged;
-  }
+  std::vector<detail::ActionStep<G>> steps;
+  detail::PathScheme<G, L> path(newton, g, steps);
+  const solvers::PathNewtonOutcome outcome =
+      solvers::newton_on_path(path, {.tolerance = options.tolerance, .max_iterations = options.max_iterations,
+                                     .monitor = options.monitor},
+                              solution.residual_history);
+  const Status status = outcome.status;
+  const int iteration = outcome.iterations;
 
   // The result: the last accepted iterate (the start when nothing was accepted).
+  Eigen::VectorXd gradient;
   newton.evaluate(g, steps, gradient);
   TransportedTrajectory<G>& tr = solution.trajectory;
   tr.t = detail::uniform_times("solve_variational", problem.T, static_cast<std::size_t>(problem.N));
@@ -432,7 +413,7 @@ TransportedSolution<G> solve_variational(const TransportedProblem<G, L>& problem
           << to_string(status) << " after " << iteration << " iterations, " << newton.gradients()
           << " gradient sweeps, max |gradient| = " << format_value(report.gradient_norm);
   if (!solution.residual_history.empty()) message << ", last correction " << format_value(solution.residual_history.back());
-  if (!why.str().empty()) message << "; " << why.str();
+  if (!outcome.why.empty()) message << "; " << outcome.why;
   solution.message = message.str();
   solution.variational = std::move(report);
   solution.solve_time_s = detail::seconds_since(started);
