@@ -9,6 +9,7 @@
 
 #include "cartan/numerics/collocation.hpp"
 #include "cartan/numerics/scipy_refinement.hpp"
+#include "cartan/solvers/collocation.hpp"
 
 namespace cartan::numerics {
 namespace {
@@ -395,6 +396,40 @@ TEST(CollocationBadInput, ThrowsNamingTheValue) {
   BvpSystem zero = s;
   zero.n = 0;
   expect_invalid([&] { solve_collocation(zero, t, MatrixXd(0, 4), none); }, "system.n = 0");
+}
+
+// Every kernel's start of collocation (solvers::collocate_from_mesh, src/solvers/collocation.cpp):
+// Newton on the start's mesh, then refinement with both runs' counters summed; after a failure on
+// the mesh, the failure itself (Report) or the adaptive solver from the same start (Adaptive):
+// the same calls as made by hand, so the same results to the bit.
+TEST(Collocation, TheMeshFirstStartIsNewtonOnTheMeshThenRefinement) {
+  const BvpSystem s = quadratic_problem(true);
+  const VectorXd t = uniform(0, 1, 5);
+  const CollocationOptions options{.tol = 1e-8};
+  const MatrixXd near = perturbed_guess(t, quadratic_exact, 0.05);
+  const solvers::MeshFirst good = solvers::collocate_from_mesh(s, t, near, options, solvers::OnMeshFailure::Report);
+  ASSERT_TRUE(good.converged_on_mesh);
+  const BvpResult on_mesh = solve_collocation_on_mesh(s, t, near, VectorXd(0), options);
+  const BvpResult refined = solve_collocation(s, on_mesh, options);
+  ASSERT_TRUE(refined.success()) << refined.message;
+  EXPECT_EQ(good.result.newton_iterations, on_mesh.newton_iterations + refined.newton_iterations);
+  EXPECT_EQ(good.result.jacobian_evaluations, on_mesh.jacobian_evaluations + refined.jacobian_evaluations);
+  EXPECT_EQ(good.result.t, refined.t);
+  EXPECT_LE(max_error_at(good.result, uniform(0, 1, 21), quadratic_exact), 1e-6);
+
+  // One Newton iteration cannot converge from a start this far: the mesh attempt fails.
+  const CollocationOptions one{.tol = 1e-8, .max_newton_iterations = 1};
+  const MatrixXd far = perturbed_guess(t, quadratic_exact, 1.0);
+  const solvers::MeshFirst reported = solvers::collocate_from_mesh(s, t, far, one, solvers::OnMeshFailure::Report);
+  EXPECT_FALSE(reported.converged_on_mesh);
+  EXPECT_FALSE(reported.result.success());
+  EXPECT_EQ(reported.result.newton_iterations, solve_collocation_on_mesh(s, t, far, VectorXd(0), one).newton_iterations);
+  const solvers::MeshFirst retried = solvers::collocate_from_mesh(s, t, far, one, solvers::OnMeshFailure::Adaptive);
+  const BvpResult adaptive = solve_collocation(s, t, far, VectorXd(0), one);
+  EXPECT_FALSE(retried.converged_on_mesh);
+  EXPECT_EQ(retried.result.status, adaptive.status);
+  EXPECT_EQ(retried.result.newton_iterations, adaptive.newton_iterations);
+  EXPECT_EQ(retried.result.t, adaptive.t);
 }
 
 }  // namespace

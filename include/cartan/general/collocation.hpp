@@ -190,16 +190,10 @@ GeneralSolution<M> solve_general_collocation(const GeneralProblem<M, L>& problem
   }
   // Newton on the given mesh first, then refinement: from a poor start, the adaptive solver alone
   // refines a diverged iterate up to max_nodes (measured on SO(3) under a Levi-Civita connection).
-  const numerics::BvpSystem system = collocation.system();
-  numerics::BvpResult r = numerics::solve_collocation_on_mesh(system, t, y, Eigen::VectorXd(0), options);
-  if (r.success()) {
-    numerics::BvpResult refined = numerics::solve_collocation(system, r, options);
-    refined.newton_iterations += r.newton_iterations;
-    refined.jacobian_evaluations += r.jacobian_evaluations;
-    r = std::move(refined);
-  } else if (adaptive_retry && r.status != Status::Interrupted) {
-    r = numerics::solve_collocation(system, t, y, Eigen::VectorXd(0), options);
-  }
+  const numerics::BvpResult r =
+      solvers::collocate_from_mesh(collocation.system(), t, y, options,
+                                   adaptive_retry ? solvers::OnMeshFailure::Adaptive : solvers::OnMeshFailure::Report)
+          .result;
   GeneralSolution<M> s = general_collocation_solution(collocation, r, solvers::output_times(r, samples, problem.T));
   s.branch = start != nullptr ? "collocation from the given trajectory" : "collocation from the geodesic guess";
   s.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();

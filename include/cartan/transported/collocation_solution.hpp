@@ -114,13 +114,9 @@ TransportedSolution<G> solve_transported_by_collocation(const TransportedProblem
       C::geodesic_guess(problem, t, y);
     }
     if (fallback == Continuation::None) return numerics::solve_collocation(system, t, y, Eigen::VectorXd(0), options);
-    numerics::BvpResult first = numerics::solve_collocation_on_mesh(system, t, y, Eigen::VectorXd(0), options);
-    if (first.success()) {
-      numerics::BvpResult refined = numerics::solve_collocation(system, first, options);
-      refined.newton_iterations += first.newton_iterations;
-      refined.jacobian_evaluations += first.jacobian_evaluations;
-      return refined;
-    }
+    solvers::MeshFirst mesh_first = solvers::collocate_from_mesh(system, t, y, options, solvers::OnMeshFailure::Report);
+    if (mesh_first.converged_on_mesh) return std::move(mesh_first.result);
+    numerics::BvpResult& first = mesh_first.result;
     const ContinuationOptions continuation{
         .shooting = {.order = SchemeOrder::Second, .tolerance = options.tol, .max_iterations = options.max_newton_iterations,
                      .monitor = options.monitor}};
