@@ -464,8 +464,8 @@ class GeneralSolveResult(Result):
     v0, Xi0: the initial values; terminal_error: how far q_N is from qT, ``|difference(qT, q_N)|`` where
     that is a logarithm and the distance of the stored points at the cut locus (never 0 there);
     xi_terminal = ``|Xi_N|``;
-    iterations (Levenberg-Marquardt or collocation's Newton; on the Lie-group kernel of
-    :func:`solve_general`, summed over the stages of a continuation in T), sweeps (runs of the scheme;
+    iterations (Levenberg-Marquardt's, summed over the stages of a continuation in T and the
+    attempts of the default strategy; or collocation's Newton), sweeps (runs of the scheme;
     collocation: Jacobian evaluations); residual_history; solve_time: seconds in the solver; mesh_size,
     max_residual: collocation only (else None; order is then 4).
     """

@@ -411,7 +411,7 @@ def test_guess_frame_and_progress():
     assert r.converged and seen and seen[0][0] == "shooting"
     again = cartan.solve_general(Sphere(), T=1.0, N=100, q0=q0, qT=qT, gravity=9.81, tol=1e-12, method="shooting",
                                  v0=r.v0, Xi0=r.Xi0)
-    assert again.converged and again.iterations <= 2 and again.branch == "shooting (from the given guess)"
+    assert again.converged and again.iterations <= 2 and again.branch == "direct from the given guess"
     # Another frame: v0 are components in it, the curve is the same.
     e = Sphere().tangent_basis(q0)
     frame0 = e @ np.array([[0.0, 2.0], [1.0, 0.0]])

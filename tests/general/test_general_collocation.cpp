@@ -75,7 +75,8 @@ TEST(GeneralCollocation, SphericalPendulumIsTheClassicalOne) {
   options.samples = 101;
   const auto s = solve(problem, options);
   ASSERT_TRUE(s.converged()) << s.message;
-  EXPECT_EQ(s.branch.rfind("collocation from the order-2 shooting solution (shooting", 0), 0u) << s.branch;
+  EXPECT_EQ(s.branch.rfind("collocation from the order-2 shooting solution (direct from the geodesic guess)", 0), 0u)
+      << s.branch;
   ASSERT_EQ(s.trajectory.t.size(), 101u);
   EXPECT_DOUBLE_EQ(s.trajectory.t.back(), T);
   const Eigen::Vector3d reached = spherical_pendulum_endpoint(problem.q0, problem.initial_frame() * s.v0, G, T);

@@ -268,8 +268,8 @@ GeneralTrajectory<manifolds::GroupManifold<G>> general_trajectory_from_lie(const
 /// shooting of LieKernelProblem's family, a continuation path's result or run_lie_method's
 /// (solve.hpp): general's status rule applied), the method as it is, the message prefixed with
 /// "Lie-group kernel (Cartan–Schouten, lambda = ...): ".
-/// The counters are the Lie kernel's: inner_iterations Levenberg–Marquardt's, summed over the stages of a continuation in T (the general
-/// kernel reports its last solve's); sweeps and residual_history are the Lie kernel's (2m
+/// The counters are the Lie kernel's: inner_iterations Levenberg–Marquardt's, summed over the
+/// stages of a continuation in T (as the general kernel's); sweeps and residual_history are the Lie kernel's (2m
 /// unknowns, not m + m^2). A result without a trajectory keeps none.
 template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 GeneralSolution<manifolds::GroupManifold<G>> general_solution_from_lie(const LieKernelProblem<G, L>& problem,

@@ -47,7 +47,7 @@ struct GeneralTrajectory {
 
 /// The general kernel's result (ResultCore, principle/result.hpp): its trajectory and unknowns.
 /// Its action is NaN (the general kernel computes none); inner_iterations are
-/// Levenberg–Marquardt's or collocation's Newton's (along a continuation path: the last solve's).
+/// Levenberg–Marquardt's (summed along a continuation path) or collocation's Newton's.
 template <manifolds::ManifoldWithConnection M>
 struct GeneralSolution : ResultCore {
   /// Every node of the requested problem's discrete solution (at a failure: of the best iterate).

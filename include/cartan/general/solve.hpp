@@ -61,8 +61,7 @@ struct ShootingFamily<general::GeneralProblem<M, L>> {
   static const Auxiliary& auxiliary(const Solution& s) { return s.Xi0; }
   static Velocity guess(const Problem& p) { return general::geodesic_guess(p); }
   static double auxiliary_scale(const Problem& p) { return general::xi_scale(p); }
-  /// A path's result reports its last solve's iterations (docs/design/one-core.md, D8).
-  static constexpr bool kSumsInnerIterations = false;
+  static constexpr bool kSumsInnerIterations = true;  // along a path (docs/design/one-core.md, D8)
 };
 
 }  // namespace cartan::solvers
@@ -73,14 +72,13 @@ namespace detail {
 
 /// Continuation in T (solvers/continuation.hpp's path) of a problem family: the general
 /// problem (ShootingFamily above) or the Lie kernel's (lie_kernel.hpp). `direct` is the failed
-/// attempt at the full horizon, not repeated (pass it moved: the path keeps it).
+/// attempt at the full horizon, not repeated (pass it moved: the path keeps it); the branch is
+/// the path's ("continued in T from T = ... (k stages)"), as the Lie-group solve's.
 template <class Problem, class Solution = typename solvers::ShootingFamily<Problem>::Solution>
 Solution continue_in_T(const Problem& problem, const GeneralShootingOptions& shooting, Solution direct) {
   ContinuationOptions options;
   options.shooting = shooting;
-  Solution result = solvers::detail::continue_in_T(problem, options, std::nullopt, std::nullopt, &direct);
-  result.branch = "continuation in T (" + result.branch + ")";
-  return result;
+  return solvers::detail::continue_in_T(problem, options, std::nullopt, std::nullopt, &direct);
 }
 
 /// Method::Collocation (header comment).
@@ -101,7 +99,7 @@ GeneralSolution<M> collocation(const GeneralProblem<M, L>& problem, const SolveO
                                   .max_iterations = options.max_iterations, .no_progress_window = 8,
                                   .monitor = &options.monitor};
   GeneralSolution<M> direct = solve_general_shooting(problem, shooting);
-  direct.branch = "shooting from the geodesic guess";
+  direct.branch = "direct from the geodesic guess";
   GeneralSolution<M> path = direct.converged() ? std::move(direct) : continue_in_T(problem, shooting, std::move(direct));
   if (!path.converged()) {
     s.status = Status::ContinuationFailed;
@@ -284,13 +282,12 @@ GeneralSolution<M> run_strategy(const GeneralProblem<M, L>& problem, const Solve
   const GeneralShootingOptions shooting{.order = options.order, .tolerance = options.tol,
                                         .max_iterations = options.max_iterations, .no_progress_window = 0,
                                         .monitor = &options.monitor};
-  const std::string from =
-      guess.v0 || guess.Xi0 || guess.trajectory ? "from the given guess" : "from the geodesic guess";
   const GeneralTrajectory<M>* path = guess.trajectory ? &*guess.trajectory : nullptr;
   auto direct = Family::shoot(
       kernel.shooting_problem(), shooting, path ? path->v.front() : guess.v0.value_or(geodesic_guess(problem)),
       kernel.auxiliary(path ? path->Xi.front() : guess.Xi0.value_or(manifolds::ComponentMatrixOf<M>::Zero())));
-  direct.branch = "shooting (" + from + ")";
+  direct.branch = guess.v0 || guess.Xi0 || guess.trajectory ? "direct from the given guess"
+                                                             : "direct from the geodesic guess";
   if (direct.converged() || direct.status == Status::Interrupted || options.continuation == Continuation::None) {
     return kernel.result(std::move(direct));
   }
