@@ -68,6 +68,15 @@ struct GeneralGuess {
   /// A whole trajectory from 0 to T (e.g. an earlier solution): the start of collocation, and its
   /// first node the (v0, Xi0) of shooting.
   std::optional<GeneralTrajectory<M>> trajectory;
+
+  bool empty() const { return !v0 && !Xi0 && !trajectory; }
+  /// The guess of v(0) and of Xi(0): given directly, or the trajectory's first node; none if neither.
+  std::optional<manifolds::ComponentsOf<M>> start_v0() const {
+    return v0 ? v0 : trajectory ? std::optional(trajectory->v.front()) : std::nullopt;
+  }
+  std::optional<manifolds::ComponentMatrixOf<M>> start_Xi0() const {
+    return Xi0 ? Xi0 : trajectory ? std::optional(trajectory->Xi.front()) : std::nullopt;
+  }
 };
 
 }  // namespace cartan::general

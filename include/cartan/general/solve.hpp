@@ -174,7 +174,7 @@ class StrategyKernel final : public solvers::StrategyKernel {
 
   solvers::PathResultPtr empty() const override { return solvers::wrap<Problem>(GeneralSolution<M>{}); }
   double auxiliary_scale() const override { return Family::auxiliary_scale(kernel_.shooting_problem()); }
-  bool guessed() const override { return guess_.v0 || guess_.Xi0 || guess_.trajectory; }
+  bool guessed() const override { return !guess_.empty(); }
   int steps() const override { return problem_.N; }
   bool time_rescaling_invariant() const override { return false; }  // not known of a general Lagrangian
   std::optional<double> lambda() const override {
@@ -252,11 +252,9 @@ class StrategyKernel final : public solvers::StrategyKernel {
   static solvers::PathResultPtr wrap(Solution s) {
     return solvers::wrap<KernelProblem>(std::move(s));
   }
-  typename Family::Velocity v0() const {
-    return guess_.trajectory ? guess_.trajectory->v.front() : guess_.v0.value_or(geodesic_guess(problem_));
-  }
+  typename Family::Velocity v0() const { return guess_.start_v0().value_or(geodesic_guess(problem_)); }
   manifolds::ComponentMatrixOf<M> Xi0() const {
-    return guess_.trajectory ? guess_.trajectory->Xi.front() : guess_.Xi0.value_or(manifolds::ComponentMatrixOf<M>::Zero());
+    return guess_.start_Xi0().value_or(manifolds::ComponentMatrixOf<M>::Zero());
   }
 
   const Problem& problem_;
@@ -282,12 +280,9 @@ GeneralSolution<M> run_strategy(const GeneralProblem<M, L>& problem, const Solve
   const GeneralShootingOptions shooting{.order = options.order, .tolerance = options.tol,
                                         .max_iterations = options.max_iterations, .no_progress_window = 0,
                                         .monitor = &options.monitor};
-  const GeneralTrajectory<M>* path = guess.trajectory ? &*guess.trajectory : nullptr;
-  auto direct = Family::shoot(
-      kernel.shooting_problem(), shooting, path ? path->v.front() : guess.v0.value_or(geodesic_guess(problem)),
-      kernel.auxiliary(path ? path->Xi.front() : guess.Xi0.value_or(manifolds::ComponentMatrixOf<M>::Zero())));
-  direct.branch = guess.v0 || guess.Xi0 || guess.trajectory ? "direct from the given guess"
-                                                             : "direct from the geodesic guess";
+  auto direct = Family::shoot(kernel.shooting_problem(), shooting, guess.start_v0().value_or(geodesic_guess(problem)),
+                              kernel.auxiliary(guess.start_Xi0().value_or(manifolds::ComponentMatrixOf<M>::Zero())));
+  direct.branch = guess.empty() ? "direct from the geodesic guess" : "direct from the given guess";
   if (direct.converged() || direct.status == Status::Interrupted || options.continuation == Continuation::None) {
     return kernel.result(std::move(direct));
   }

@@ -18,7 +18,6 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -207,13 +206,6 @@ FamilyPath<Problem, Make> family_path(Make make) {
 }
 
 namespace detail {
-
-/// The size of a result's terminal residual in the units of the convergence test.
-template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
-double scaled_residual(const Problem& problem, const Solution& s) {
-  if (s.trajectory.t.empty()) return std::numeric_limits<double>::infinity();
-  return solvers::scaled_residual(s, ShootingFamily<Problem>::auxiliary_scale(problem));
-}
 
 /// The problem of the T path at horizon T' (same step h = T / N, N' = round(T' / h) >= 1; exactly
 /// `problem` at T).

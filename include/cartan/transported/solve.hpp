@@ -13,7 +13,6 @@
 // it can do and runs each method (StrategyKernel below).
 
 #include <optional>
-#include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
