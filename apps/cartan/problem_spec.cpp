@@ -93,8 +93,8 @@ std::vector<ProblemField> make_fields() {
       {"continuation", &S::continuation,
        enum_choices<cartan::Continuation>() +
            " (default none). shooting: how to reach a problem that fails from the guess (T: from a "
-           "shorter horizon; lambda: from the lambda = 0 solution); so3 collocation: where to start "
-           "when Newton from the geodesic guess fails (from that order-2 shooting solution)",
+           "shorter horizon; lambda: from the lambda = 0 solution); collocation: where to start again "
+           "when Newton fails on the start's mesh (from that order-2 shooting solution)",
        false, nullptr, ProblemField::Scope::Any},
       {"v0", &S::v0, "guess of v(0), n numbers (shooting methods; default the geodesic velocity)", false, nullptr, ProblemField::Scope::Any},
       {"xi0", &S::xi0, "guess of xi(0), n numbers (shooting, multiple-shooting; default 0)", false, nullptr, ProblemField::Scope::Group},

@@ -4,12 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "cartan/numerics/collocation.hpp"
 #include "cartan/numerics/scipy_refinement.hpp"
 #include "cartan/solvers/collocation.hpp"
+#include "solvers/scripted_result.hpp"
 
 namespace cartan::numerics {
 namespace {
@@ -430,6 +433,177 @@ TEST(Collocation, TheMeshFirstStartIsNewtonOnTheMeshThenRefinement) {
   EXPECT_EQ(retried.result.status, adaptive.status);
   EXPECT_EQ(retried.result.newton_iterations, adaptive.newton_iterations);
   EXPECT_EQ(retried.result.t, adaptive.t);
+}
+
+
+/// The quadratic problem as a kernel's continuous problem: starts from the exact solution
+/// perturbed by `start_offset` (a given trajectory or the geodesic guess, as `given` says), and
+/// from a shooting result at the exact solution perturbed by 0.01.
+struct QuadraticContinuous final : solvers::ContinuousProblem {
+  VectorXd mesh = uniform(0, 1, 5);
+  double start_offset = 1.0;
+  bool given = false, on_mesh = false;
+  mutable std::string shooting_seen;
+  BvpSystem system() const override { return quadratic_problem(true); }
+  bool start(VectorXd& t, MatrixXd& y) const override {
+    t = mesh;
+    y = perturbed_guess(t, quadratic_exact, start_offset);
+    return given;
+  }
+  void start_from(solvers::PathResultPtr shooting, VectorXd& t, MatrixXd& y) const override {
+    shooting_seen = shooting->core().message;
+    t = mesh;
+    y = perturbed_guess(t, quadratic_exact, 0.01);
+  }
+  bool starts_on_mesh() const override { return on_mesh; }
+};
+
+/// The discrete kernel of collocation's fallback: each method returns its scripted status (the
+/// path's failure by default) with 3 sweeps, and records what it was asked.
+class FallbackKernel final : public solvers::StrategyKernel {
+ public:
+  std::map<std::string, Status> outcome;
+  std::vector<std::string> calls;
+  ShootingOptions shooting_seen, path_seen;
+  std::string failed_direct_seen;
+  double lambda_start_seen = -1;
+
+  solvers::PathResultPtr empty() const override { return solvers::scripted(Status::NotConverged, 0, 0, 0, 0, "", false); }
+  double auxiliary_scale() const override { return 1; }
+  bool guessed() const override { return false; }
+  int steps() const override { return 4; }
+  bool time_rescaling_invariant() const override { return false; }
+  std::optional<double> lambda() const override { return 0.5; }
+  bool has_collocation() const override { return true; }
+  bool has_multiple_shooting() const override { return false; }
+  int first_shooting_window() const override { return 7; }
+  solvers::PathResultPtr shoot(const ShootingOptions& options) override {
+    shooting_seen = options;
+    return run("shooting");
+  }
+  solvers::PathResultPtr shoot_from(const ShootingOptions&, const solvers::PathResult&) override {
+    return run("shoot_from");
+  }
+  solvers::PathResultPtr continue_in_T(const ContinuationOptions& options, solvers::PathResultPtr failed) override {
+    path_seen = options.shooting;
+    failed_direct_seen = failed ? failed->core().message : "none";
+    return run("T");
+  }
+  solvers::PathResultPtr continue_in_lambda(const ContinuationOptions& options, double start) override {
+    path_seen = options.shooting;
+    lambda_start_seen = start;
+    return run("lambda");
+  }
+  solvers::PathResultPtr collocate(const SolveOptions&, int) override { return run("collocate"); }
+  solvers::PathResultPtr multiple_shoot(const SolveOptions&, const SolveMonitor&) override {
+    return run("multiple");
+  }
+
+ private:
+  solvers::PathResultPtr run(const std::string& name) {
+    calls.push_back(name);
+    const Status status = outcome.contains(name) ? outcome.at(name) : Status::ContinuationFailed;
+    return solvers::scripted(status, status == Status::Converged ? 0.0 : 0.5, 0, 3, 2, name);
+  }
+};
+
+// Collocation's driver, every kernel's (solvers::collocate): without a fallback the kernel's way
+// of solving a start (adaptive, or on the mesh first); with one, Newton must converge on the
+// start's mesh, else the order-2 shooting solution (shooting within the kernel's window, then
+// continuation in T from that failed attempt; or continuation in lambda from 0) is the start, the
+// work of every run summed; a failed fallback is a failure with its status. Compared with the same
+// calls made by hand.
+TEST(Collocation, TheDriverFallsBackToTheOrderTwoShootingSolution) {
+  const CollocationOptions options{.tol = 1e-8, .max_newton_iterations = 3};
+  QuadraticContinuous problem;
+  const BvpSystem s = quadratic_problem(true);
+  const MatrixXd far = perturbed_guess(problem.mesh, quadratic_exact, 1.0);
+  const BvpResult failed_on_mesh = solve_collocation_on_mesh(s, problem.mesh, far, VectorXd(0), options);
+  ASSERT_FALSE(failed_on_mesh.success());  // three Newton iterations do not reach the solution from 1.0 away
+  const solvers::MeshFirst from_near = solvers::collocate_from_mesh(
+      s, problem.mesh, perturbed_guess(problem.mesh, quadratic_exact, 0.01), options, solvers::OnMeshFailure::Adaptive);
+  ASSERT_TRUE(from_near.converged_on_mesh);
+
+  {  // no fallback: the adaptive solver, or the mesh first, from the start
+    FallbackKernel discrete;
+    const solvers::Collocated alone = solvers::collocate(problem, discrete, Continuation::None, options);
+    const BvpResult adaptive = solve_collocation(s, problem.mesh, far, VectorXd(0), options);
+    EXPECT_EQ(alone.result.status, adaptive.status);
+    EXPECT_EQ(alone.result.newton_iterations, adaptive.newton_iterations);
+    EXPECT_EQ(alone.branch, "direct from the geodesic guess on a uniform mesh of N intervals");
+    problem.on_mesh = problem.given = true;
+    const solvers::Collocated mesh_first = solvers::collocate(problem, discrete, Continuation::None, options);
+    EXPECT_EQ(mesh_first.result.newton_iterations,
+              solvers::collocate_from_mesh(s, problem.mesh, far, options, solvers::OnMeshFailure::Adaptive)
+                  .result.newton_iterations);
+    EXPECT_EQ(mesh_first.branch, "from the given trajectory");
+    EXPECT_TRUE(discrete.calls.empty());
+  }
+  problem.on_mesh = problem.given = false;
+  {  // the direct shooting converges: its solution starts collocation
+    FallbackKernel discrete;
+    discrete.outcome["shooting"] = Status::Converged;
+    const solvers::Collocated c = solvers::collocate(problem, discrete, Continuation::T, options);
+    ASSERT_TRUE(c.result.success()) << c.result.message;
+    EXPECT_EQ(discrete.calls, std::vector<std::string>{"shooting"});
+    EXPECT_EQ(discrete.shooting_seen.order, SchemeOrder::Second);
+    EXPECT_EQ(discrete.shooting_seen.tolerance, options.tol);
+    EXPECT_EQ(discrete.shooting_seen.max_iterations, options.max_newton_iterations);
+    EXPECT_EQ(discrete.shooting_seen.no_progress_window, 7);  // the kernel's first window
+    EXPECT_EQ(problem.shooting_seen, "shooting");
+    EXPECT_EQ(c.branch,
+              "from the order-2 shooting solution (direct from the geodesic guess) after Newton from the geodesic "
+              "guess failed on the N-interval mesh");
+    const BvpResult by_hand = solve_collocation(s, problem.mesh, perturbed_guess(problem.mesh, quadratic_exact, 0.01),
+                                                VectorXd(0), options);
+    EXPECT_EQ(c.result.t, by_hand.t);
+    EXPECT_EQ(c.result.newton_iterations, by_hand.newton_iterations + failed_on_mesh.newton_iterations);
+    EXPECT_EQ(c.result.jacobian_evaluations, by_hand.jacobian_evaluations + failed_on_mesh.jacobian_evaluations);
+    EXPECT_EQ(c.shooting_sweeps, 3);
+  }
+  {  // the direct shooting fails: continuation in T takes it over; a given start is named
+    FallbackKernel discrete;
+    discrete.outcome["T"] = Status::Converged;
+    problem.given = true;
+    const solvers::Collocated c = solvers::collocate(problem, discrete, Continuation::T, options);
+    ASSERT_TRUE(c.result.success()) << c.result.message;
+    EXPECT_EQ(discrete.calls, (std::vector<std::string>{"shooting", "T"}));
+    EXPECT_EQ(discrete.failed_direct_seen, "shooting");
+    EXPECT_EQ(discrete.path_seen.order, SchemeOrder::Second);
+    EXPECT_EQ(discrete.path_seen.no_progress_window, 0);  // the path sets its own (ContinuationOptions)
+    EXPECT_EQ(problem.shooting_seen, "T");
+    EXPECT_EQ(c.branch.rfind("from the order-2 shooting solution (", 0), 0u) << c.branch;
+    EXPECT_NE(c.branch.find("after Newton from the given trajectory failed on its mesh"), std::string::npos) << c.branch;
+    EXPECT_EQ(c.shooting_sweeps, 6);  // the direct attempt's and the path's
+    problem.given = false;
+  }
+  {  // continuation in lambda from 0
+    FallbackKernel discrete;
+    discrete.outcome["lambda"] = Status::Converged;
+    const solvers::Collocated c = solvers::collocate(problem, discrete, Continuation::Lambda, options);
+    ASSERT_TRUE(c.result.success()) << c.result.message;
+    EXPECT_EQ(discrete.calls, std::vector<std::string>{"lambda"});
+    EXPECT_EQ(discrete.lambda_start_seen, 0.0);
+    EXPECT_EQ(c.shooting_sweeps, 3);
+  }
+  {  // the fallback fails: collocation's failure on the mesh, with the path's status and words
+    FallbackKernel discrete;
+    const solvers::Collocated c = solvers::collocate(problem, discrete, Continuation::T, options);
+    EXPECT_EQ(c.result.status, Status::ContinuationFailed);
+    EXPECT_EQ(c.result.t, failed_on_mesh.t);
+    EXPECT_EQ(c.result.newton_iterations, failed_on_mesh.newton_iterations);
+    EXPECT_EQ(c.result.message, failed_on_mesh.message + "; the order-2 shooting fallback failed too: T");
+    EXPECT_EQ(c.branch, "failed: direct from the geodesic guess on a uniform mesh of N intervals, then the order-2 "
+                        "shooting fallback");
+  }
+  {  // Newton converges on the mesh: no fallback
+    FallbackKernel discrete;
+    problem.start_offset = 0.01;
+    const solvers::Collocated c = solvers::collocate(problem, discrete, Continuation::T, options);
+    EXPECT_TRUE(c.result.success());
+    EXPECT_TRUE(discrete.calls.empty());
+    EXPECT_EQ(c.shooting_sweeps, 0);
+  }
 }
 
 }  // namespace

@@ -167,37 +167,4 @@ GeneralSolution<M> general_collocation_solution(const GeneralCollocation<M, L>& 
   return s;
 }
 
-/// Solves the general problem by collocation of its continuous form, from `start` (a trajectory
-/// from 0 to T, e.g. a shooting solution) or the geodesic guess; output at the final mesh
-/// (samples == 0) or `samples` uniform times. Newton runs on the start's mesh first, then the
-/// mesh is refined; when Newton fails there, `adaptive_retry` runs the adaptive solver from the
-/// start (false: report that failure, e.g. to fall back to another start). Throws
-/// std::invalid_argument for invalid input.
-template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-GeneralSolution<M> solve_general_collocation(const GeneralProblem<M, L>& problem, const numerics::CollocationOptions& options,
-                                             int samples, const GeneralTrajectory<M>* start = nullptr,
-                                             bool adaptive_retry = true) {
-  problem.validate();
-  check_samples(samples);
-  const auto clock = std::chrono::steady_clock::now();
-  const GeneralCollocation<M, L> collocation(problem);
-  Eigen::VectorXd t;
-  Eigen::MatrixXd y;
-  if (start != nullptr) {
-    GeneralCollocation<M, L>::guess_from(*start, t, y);
-  } else {
-    collocation.geodesic_guess(t, y);
-  }
-  // Newton on the given mesh first, then refinement: from a poor start, the adaptive solver alone
-  // refines a diverged iterate up to max_nodes (measured on SO(3) under a Levi-Civita connection).
-  const numerics::BvpResult r =
-      solvers::collocate_from_mesh(collocation.system(), t, y, options,
-                                   adaptive_retry ? solvers::OnMeshFailure::Adaptive : solvers::OnMeshFailure::Report)
-          .result;
-  GeneralSolution<M> s = general_collocation_solution(collocation, r, solvers::output_times(r, samples, problem.T));
-  s.branch = start != nullptr ? "collocation from the given trajectory" : "collocation from the geodesic guess";
-  s.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
-  return s;
-}
-
 }  // namespace cartan::general

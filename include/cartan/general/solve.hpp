@@ -4,8 +4,9 @@
 //   * Method::Shooting: shooting from the guess (default: the geodesic guess), or with
 //     Continuation::T by continuation in the horizon;
 //   * Method::Collocation: collocation of the continuous system (collocation.hpp) from the guess
-//     trajectory or the geodesic guess; with Continuation::T, when Newton from the geodesic guess
-//     fails on the N-interval mesh, from the order-2 shooting solution found by continuation in T;
+//     trajectory or the geodesic guess (solvers::collocate, every kernel's driver); with
+//     Continuation::T, when Newton fails on the start's mesh, from the order-2 shooting solution
+//     of the kernel below (shooting, then continuation in T);
 //   * Method::Auto (default): the default strategy of every solve (solvers/strategy.hpp) with this
 //     kernel's capabilities (StrategyKernel below): shooting from the guess, continuation in T,
 //     on the Lie-group kernel continuation in lambda, collocation polished by shooting, on the
@@ -81,38 +82,52 @@ Solution continue_in_T(const Problem& problem, const GeneralShootingOptions& sho
   return solvers::detail::continue_in_T(problem, options, std::nullopt, std::nullopt, &direct);
 }
 
-/// Method::Collocation (header comment).
-template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+/// Method::Collocation (header comment), through the collocation driver of every kernel
+/// (solvers::collocate): the general continuous system (collocation.hpp) from the guess
+/// trajectory or the geodesic guess, Newton on the start's mesh first; with Continuation::T its
+/// fallback runs on `discrete` (StrategyKernel below, of the same problem and guess), whose
+/// `take` turns a shooting result into a GeneralSolution. Counters are summed over every run.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L, class Discrete>
 GeneralSolution<M> collocation(const GeneralProblem<M, L>& problem, const SolveOptions& options,
-                               const GeneralGuess<M>& guess) {
+                               const GeneralGuess<M>& guess, Discrete& discrete) {
+  problem.validate();
+  check_samples(options.samples);
+  const auto clock = std::chrono::steady_clock::now();
   const SolveMonitor stage = options.monitor.stage("collocation");
   const numerics::CollocationOptions c{.tol = options.tol,
                                        .max_nodes = options.max_nodes.value_or(kDefaultMaxNodes),
                                        .max_newton_iterations = options.max_iterations,
                                        .monitor = &stage};
-  const GeneralTrajectory<M>* start = guess.trajectory ? &*guess.trajectory : nullptr;
-  const bool fallback = !start && options.continuation == Continuation::T;
-  GeneralSolution<M> s = solve_general_collocation(problem, c, options.samples, start, !fallback);
-  if (!fallback || s.converged() || s.status == Status::Interrupted) return s;
-  const double seconds = s.solve_time_s;
-  GeneralShootingOptions shooting{.order = SchemeOrder::Second, .tolerance = options.tol,
-                                  .max_iterations = options.max_iterations, .no_progress_window = 8,
-                                  .monitor = &options.monitor};
-  GeneralSolution<M> direct = solve_general_shooting(problem, shooting);
-  direct.branch = "direct from the geodesic guess";
-  GeneralSolution<M> path = direct.converged() ? std::move(direct) : continue_in_T(problem, shooting, std::move(direct));
-  if (!path.converged()) {
-    s.status = Status::ContinuationFailed;
-    s.message += "; the order-2 shooting fallback failed too: " + path.message;
-    s.branch += " (Newton failed on the N-interval mesh)";
-    s.solve_time_s += path.solve_time_s;
-    return s;
-  }
-  GeneralSolution<M> refined = solve_general_collocation(problem, c, options.samples, &path.trajectory);
-  refined.branch = "collocation from the order-2 shooting solution (" + path.branch +
-                   ") after Newton from the geodesic guess failed on the N-interval mesh";
-  refined.solve_time_s += seconds + path.solve_time_s;
-  return refined;
+  struct Continuous final : solvers::ContinuousProblem {
+    const GeneralCollocation<M, L> system_of;
+    const GeneralTrajectory<M>* guess;
+    const Discrete& discrete;
+    Continuous(const GeneralProblem<M, L>& p, const GeneralTrajectory<M>* g, const Discrete& d)
+        : system_of(p), guess(g), discrete(d) {}
+    numerics::BvpSystem system() const override { return system_of.system(); }
+    bool start(Eigen::VectorXd& t, Eigen::MatrixXd& y) const override {
+      if (guess == nullptr) {
+        system_of.geodesic_guess(t, y);
+        return false;
+      }
+      GeneralCollocation<M, L>::guess_from(*guess, t, y);
+      return true;
+    }
+    void start_from(solvers::PathResultPtr shooting, Eigen::VectorXd& t, Eigen::MatrixXd& y) const override {
+      GeneralCollocation<M, L>::guess_from(discrete.take(std::move(shooting)).trajectory, t, y);
+    }
+    // From a poor start the adaptive solver alone refines a diverged iterate up to max_nodes
+    // (measured on SO(3) under a Levi-Civita connection).
+    bool starts_on_mesh() const override { return true; }
+  };
+  const Continuous continuous(problem, guess.trajectory ? &*guess.trajectory : nullptr, discrete);
+  const solvers::Collocated r = solvers::collocate(continuous, discrete, options.continuation, c);
+  GeneralSolution<M> s =
+      general_collocation_solution(continuous.system_of, r.result, solvers::output_times(r.result, options.samples, problem.T));
+  s.branch = r.branch;
+  s.sweeps += r.shooting_sweeps;
+  s.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+  return s;
 }
 
 /// run_strategy's shooting on the general scheme: the general problem's family (ShootingFamily
@@ -223,7 +238,7 @@ class StrategyKernel final : public solvers::StrategyKernel {
     c.samples = samples;
     GeneralGuess<M> start;
     start.trajectory = guess_.trajectory;
-    return solvers::wrap<Problem>(detail::collocation(problem_, c, start));
+    return solvers::wrap<Problem>(detail::collocation(problem_, c, start, *this));
   }
   /// transported::solve's (lie_solve), which reports to its own stage of `options`' monitor.
   solvers::PathResultPtr multiple_shoot(const SolveOptions& options, const SolveMonitor&) override {
@@ -272,9 +287,9 @@ template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L, class Ke
 GeneralSolution<M> run_strategy(const GeneralProblem<M, L>& problem, const SolveOptions& options,
                                 const GeneralGuess<M>& guess, const Kernel& kernel) {
   using Family = solvers::ShootingFamily<typename Kernel::Problem>;
-  if (options.method == Method::Collocation) return detail::collocation(problem, options, guess);
-  if (options.method == Method::Auto) {
+  if (options.method == Method::Collocation || options.method == Method::Auto) {
     StrategyKernel<M, L, Kernel> strategy(problem, options, guess, kernel);
+    if (options.method == Method::Collocation) return detail::collocation(problem, options, guess, strategy);
     return strategy.take(solvers::default_strategy(strategy, options));
   }
   const GeneralShootingOptions shooting{.order = options.order, .tolerance = options.tol,

@@ -83,62 +83,52 @@ TransportedSolution<groups::Heisenberg> solve_heisenberg_transported(const Heise
   return s;
 }
 
-/// Any group by the generic system (TransportedCollocation), xi read from the state.
-/// `fallback` says what to do when Newton from the geodesic guess does not converge on the
-/// problem's N-interval mesh (long horizons, e.g. the paper's T = 12 oscillator): nothing
-/// (Continuation::None: report the adaptive solve from the geodesic guess), or start again from
-/// the order-2 shooting solution found by continuation in T or in lambda (from lambda = 0), whose
-/// solution branch the collocation then refines to the continuous solution; `branch` says which.
-/// With a fallback, Newton from the geodesic guess must first converge on the N-interval mesh: otherwise
-/// the adaptive solver would refine a guess outside Newton's basin up to max_nodes (most of the
-/// solve time; bench/README.md, "collocation fallback") before the fallback could start. A `guess` trajectory (times
-/// from 0 to T) replaces the geodesic guess.
+/// Any group by the generic system (TransportedCollocation), xi read from the state, through
+/// the collocation driver of every kernel (solvers::collocate): from the given trajectory (times
+/// from 0 to T) or the geodesic guess, by the adaptive solver; with a `fallback` (T, or lambda
+/// from lambda = 0), Newton must first converge on the start's mesh, else the start is the
+/// order-2 shooting solution that `discrete` (the Lie-group kernel of this problem and guess,
+/// transported/solve.hpp) finds by that continuation, whose solution branch collocation then
+/// refines to the continuous solution; `branch` says which. Counters are summed over every run.
 template <groups::LieGroup G, mechanics::Potential<G> V>
 TransportedSolution<G> solve_transported_by_collocation(const TransportedProblem<G, mechanics::NaturalLagrangian<G, V>>& problem,
                                                         const numerics::CollocationOptions& options, int samples,
-                                                        Continuation fallback = Continuation::None,
-                                                        const TransportedTrajectory<G>* guess = nullptr) {
+                                                        Continuation fallback, const TransportedTrajectory<G>* guess,
+                                                        solvers::StrategyKernel& discrete) {
   using C = TransportedCollocation<G, V>;
+  using Problem = TransportedProblem<G, mechanics::NaturalLagrangian<G, V>>;
   check_samples(samples);
   problem.validate();
-  double seconds = 0;
-  std::string branch = "direct from the geodesic guess on a uniform mesh of N intervals";
-  const numerics::BvpResult r = timed(seconds, [&] {
-    const numerics::BvpSystem system = C::system(problem);
-    Eigen::VectorXd t;
-    Eigen::MatrixXd y;
-    if (guess != nullptr) {
+  struct Continuous final : solvers::ContinuousProblem {
+    const Problem& problem;
+    const TransportedTrajectory<G>* guess;
+    Continuous(const Problem& p, const TransportedTrajectory<G>* g) : problem(p), guess(g) {}
+    numerics::BvpSystem system() const override { return C::system(problem); }
+    bool start(Eigen::VectorXd& t, Eigen::MatrixXd& y) const override {
+      if (guess == nullptr) {
+        C::geodesic_guess(problem, t, y);
+        return false;
+      }
       C::guess_from(problem, *guess, t, y);
-      branch = "from the given trajectory";
-    } else {
-      C::geodesic_guess(problem, t, y);
+      return true;
     }
-    if (fallback == Continuation::None) return numerics::solve_collocation(system, t, y, Eigen::VectorXd(0), options);
-    solvers::MeshFirst mesh_first = solvers::collocate_from_mesh(system, t, y, options, solvers::OnMeshFailure::Report);
-    if (mesh_first.converged_on_mesh) return std::move(mesh_first.result);
-    numerics::BvpResult& first = mesh_first.result;
-    const ContinuationOptions continuation{
-        .shooting = {.order = SchemeOrder::Second, .tolerance = options.tol, .max_iterations = options.max_newton_iterations,
-                     .monitor = options.monitor}};
-    const TransportedSolution<G> shooting = fallback == Continuation::Lambda
-                                                ? solve_continuation_in_lambda(problem, 0.0, continuation)
-                                                : solve_continuation_in_T(problem, continuation);
-    if (!shooting.converged()) {
-      first.message += "; the order-2 shooting fallback failed too: " + shooting.message;
-      return first;
+    void start_from(solvers::PathResultPtr shooting, Eigen::VectorXd& t, Eigen::MatrixXd& y) const override {
+      C::guess_from(problem, solvers::take<Problem>(std::move(shooting)).trajectory, t, y);
     }
-    branch = "from the order-2 shooting solution (" + shooting.branch +
-             ") after Newton from the geodesic guess failed on the N-interval mesh";
-    C::guess_from(problem, shooting.trajectory, t, y);
-    return numerics::solve_collocation(system, t, y, Eigen::VectorXd(0), options);
-  });
+    bool starts_on_mesh() const override { return false; }
+  };
+  double seconds = 0;
+  const solvers::Collocated c =
+      timed(seconds, [&] { return solvers::collocate(Continuous(problem, guess), discrete, fallback, options); });
+  const numerics::BvpResult& r = c.result;
   auto s = collocation_solution<G>(problem, r, output_times(r, samples, problem.T),
                                    [](Eigen::Index, const Eigen::VectorXd& y) {
                                      return TransportedState<G>{C::element(y, C::kG),
                                                                 y.template segment<C::kDim>(C::kV),
                                                                 y.template segment<C::kDim>(C::kXi)};
                                    });
-  s.branch = branch;
+  s.branch = c.branch;
+  s.sweeps += c.shooting_sweeps;
   s.solve_time_s = seconds;
   if constexpr (std::same_as<G, groups::SO3>) s.collocation->group_defect = C::orthogonality_defect(r);
   return s;

@@ -153,11 +153,12 @@ void check_method_inputs(const SolveOptions& options, const SolveGuess<G>& guess
 }
 
 /// The continuous problem by collocation (a natural Lagrangian; on H3 from the straight line, so
-/// a trajectory guess and the continuation are not used there).
+/// a trajectory guess and the continuation are not used there), its fallback on `discrete` (the
+/// kernel below, of the same problem and guess).
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
   requires kNatural<L>
 TransportedSolution<G> collocation(const TransportedProblem<G, L>& problem, const SolveOptions& options,
-                                   const SolveGuess<G>& guess, int samples) {
+                                   const SolveGuess<G>& guess, int samples, solvers::StrategyKernel& discrete) {
   const SolveMonitor stage = options.monitor.stage("collocation");
   const numerics::CollocationOptions c{.tol = options.tol,
                                        .max_nodes = options.max_nodes.value_or(kDefaultMaxNodes),
@@ -167,7 +168,7 @@ TransportedSolution<G> collocation(const TransportedProblem<G, L>& problem, cons
     return solve_heisenberg_transported(problem, c, samples);
   } else {
     return solve_transported_by_collocation(problem, c, samples, options.continuation,
-                                            guess.trajectory ? &*guess.trajectory : nullptr);
+                                            guess.trajectory ? &*guess.trajectory : nullptr, discrete);
   }
 }
 
@@ -226,7 +227,7 @@ class StrategyKernel final : public solvers::StrategyKernel {
     return wrap(solve_continuation_in_lambda(problem_, start, options));
   }
   solvers::PathResultPtr collocate(const SolveOptions& options, int samples) override {
-    if constexpr (kNatural<L>) return wrap(collocation(problem_, options, guess_, samples));
+    if constexpr (kNatural<L>) return wrap(collocation(problem_, options, guess_, samples, *this));
     throw std::logic_error("transported::StrategyKernel: collocation needs a natural Lagrangian");
   }
   solvers::PathResultPtr multiple_shoot(const SolveOptions& options, const SolveMonitor& stage) override {
@@ -301,7 +302,10 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
       break;
     }
     case Method::Collocation:
-      if constexpr (detail::kNatural<L>) s = detail::collocation(problem, options, guess, options.samples);  // else validate threw
+      if constexpr (detail::kNatural<L>) {  // else validate threw
+        detail::StrategyKernel<G, L> discrete(problem, guess);
+        s = detail::collocation(problem, options, guess, options.samples, discrete);
+      }
       break;
     case Method::Variational: {
       const SolveMonitor stage = options.monitor.stage("variational");
