@@ -1,6 +1,7 @@
 // The default strategy of every kernel (solvers/strategy.hpp), compiled once.
 #include "cartan/solvers/strategy.hpp"
 
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -78,6 +79,49 @@ PathResultPtr default_strategy(StrategyKernel& kernel, const SolveOptions& optio
     if (attempts.attempt("multiple shooting", kernel.multiple_shoot(options, stage))) return finish(true);
   }
   return finish(false);
+}
+
+PathResultPtr StrategyKernel::two_level(const SolveOptions&, const SolveMonitor&) {
+  throw std::logic_error("solvers::StrategyKernel: the two-level scheme is not a method of this kernel");
+}
+
+PathResultPtr StrategyKernel::variational(const SolveOptions&, const SolveMonitor&) {
+  throw std::logic_error("solvers::StrategyKernel: the variational method is not a method of this kernel");
+}
+
+PathResultPtr run_method(StrategyKernel& kernel, const SolveOptions& options) {
+  const char* from_guess = kernel.guessed() ? "direct from the given guess" : "direct from the geodesic guess";
+  switch (options.method) {
+    case Method::Auto: return default_strategy(kernel, options);
+    case Method::Shooting: {
+      const SolveMonitor stage = options.monitor.stage("shooting");
+      const ContinuationOptions c{.shooting = shooting_options(options, stage)};
+      switch (options.continuation) {
+        case Continuation::T: return kernel.continue_in_T(c, nullptr);
+        case Continuation::Lambda: return kernel.continue_in_lambda(c, options.lambda_start.value_or(0.0));
+        case Continuation::None: break;
+      }
+      PathResultPtr r = kernel.shoot(c.shooting);
+      r->core().branch = from_guess;
+      return r;
+    }
+    case Method::MultipleShooting: {
+      const SolveMonitor stage = options.monitor.stage("multiple shooting");
+      return kernel.multiple_shoot(options, stage);
+    }
+    case Method::TwoLevel: {
+      const SolveMonitor stage = options.monitor.stage("two-level");
+      PathResultPtr r = kernel.two_level(options, stage);
+      r->core().branch = from_guess;
+      return r;
+    }
+    case Method::Collocation: return kernel.collocate(options, options.samples);
+    case Method::Variational: {
+      const SolveMonitor stage = options.monitor.stage("variational");
+      return kernel.variational(options, stage);
+    }
+  }
+  throw std::logic_error("solvers::run_method: unknown method");
 }
 
 }  // namespace cartan::solvers

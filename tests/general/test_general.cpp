@@ -199,7 +199,9 @@ TEST(GeneralSolve, DefaultShootingAndContinuationInTAgree) {
   one_iteration.max_iterations = 1;
   const auto failed = solve_general_shooting(problem, one_iteration);  // the path's failed direct attempt
   ASSERT_FALSE(failed.converged());
-  const auto continued = detail::continue_in_T(problem, {.tolerance = 1e-10}, failed);
+  auto path_copy = failed;  // the path moves from it
+  const auto continued = cartan::solvers::detail::continue_in_T(
+      problem, cartan::ContinuationOptions{.shooting = {.tolerance = 1e-10}}, std::nullopt, std::nullopt, &path_copy);
   ASSERT_TRUE(continued.converged()) << continued.message;
   EXPECT_EQ(continued.branch.rfind("continued in T from T = 0.75", 0), 0u) << continued.branch;
   EXPECT_GT(continued.inner_iterations, failed.inner_iterations);  // summed along the path (D8)

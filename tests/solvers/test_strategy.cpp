@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -179,6 +180,45 @@ TEST(Strategy, AStopEndsTheStrategyInterrupted) {
   EXPECT_EQ(k.calls, (Calls{"shooting"}));
   EXPECT_EQ(k.failed_direct_seen, "");  // continuation in T never ran
   EXPECT_EQ(r->core().status, Status::Interrupted);
+}
+
+
+// The explicit methods (run_method): each goes to the kernel's method, shooting with the options'
+// window (0: no abandon), continuation in T with no failed attempt (the path makes its own first
+// stage, D7), continuation in lambda from lambda_start, collocation at the options' samples;
+// a method the kernel lacks is a logic error (each solve's validate refuses it first, by name).
+TEST(Strategy, AnExplicitMethodRunsTheKernelsMethodAlone) {
+  const auto run = [](Method method, Continuation continuation, ScriptedKernel& k) {
+    SolveOptions options;
+    options.method = method;
+    options.continuation = continuation;
+    options.samples = k.N + 1;
+    if (continuation == Continuation::Lambda) options.lambda_start = 1.0;
+    return run_method(k, options);
+  };
+  ScriptedKernel k;
+  k.collocation = k.multiple = true;
+  PathResultPtr r = run(Method::Shooting, Continuation::None, k);
+  EXPECT_EQ(k.calls, (Calls{"shooting"}));
+  EXPECT_EQ(k.window_seen, 0);
+  EXPECT_EQ(r->core().branch, "direct from the geodesic guess");
+  EXPECT_EQ(r->core().status, Status::NoProgress);  // the kernel's result as it is
+  k.calls.clear();
+  run(Method::Shooting, Continuation::T, k);
+  EXPECT_EQ(k.calls, (Calls{"T"}));
+  EXPECT_EQ(k.failed_direct_seen, "none");
+  k.calls.clear();
+  run(Method::Shooting, Continuation::Lambda, k);
+  EXPECT_EQ(k.calls, (Calls{"lambda 1"}));
+  k.calls.clear();
+  run(Method::Collocation, Continuation::None, k);
+  run(Method::MultipleShooting, Continuation::None, k);
+  EXPECT_EQ(k.calls, (Calls{"collocation", "multiple"}));
+  EXPECT_THROW(run(Method::TwoLevel, Continuation::None, k), std::logic_error);
+  EXPECT_THROW(run(Method::Variational, Continuation::None, k), std::logic_error);
+  k.calls.clear();
+  k.outcome["shooting"] = Status::Converged;
+  EXPECT_EQ(run(Method::Auto, Continuation::None, k)->core().branch, "shooting (direct from the geodesic guess)");
 }
 
 }  // namespace

@@ -265,9 +265,9 @@ GeneralTrajectory<manifolds::GroupManifold<G>> general_trajectory_from_lie(const
 /// A Lie-kernel result as the general solve's (design §2.4): the trajectory converted
 /// (general_trajectory_from_lie), Xi0 its Xi_0 (with its part in the kernel of C, so not C^+ xi0),
 /// terminal_error = separation(qT, q_N) and xi_terminal = |Xi_N|, the status as it is (`lie` is a
-/// shooting of LieKernelProblem's family, a continuation path's result or run_lie_method's
-/// (solve.hpp): general's status rule applied), the method as it is, the message prefixed with
-/// "Lie-group kernel (Cartan–Schouten, lambda = ...): ".
+/// shooting of LieKernelProblem's family, a continuation path's result or a method's through
+/// lie_solve (solve.hpp): general's status rule applied), the method as it is, the message
+/// prefixed with "Lie-group kernel (Cartan–Schouten, lambda = ...): ".
 /// The counters are the Lie kernel's: inner_iterations Levenberg–Marquardt's, summed over the
 /// stages of a continuation in T (as the general kernel's); sweeps and residual_history are the Lie kernel's (2m
 /// unknowns, not m + m^2). A result without a trajectory keeps none.

@@ -71,17 +71,6 @@ namespace cartan::general {
 
 namespace detail {
 
-/// Continuation in T (solvers/continuation.hpp's path) of a problem family: the general
-/// problem (ShootingFamily above) or the Lie kernel's (lie_kernel.hpp). `direct` is the failed
-/// attempt at the full horizon, not repeated (pass it moved: the path keeps it); the branch is
-/// the path's ("continued in T from T = ... (k stages)"), as the Lie-group solve's.
-template <class Problem, class Solution = typename solvers::ShootingFamily<Problem>::Solution>
-Solution continue_in_T(const Problem& problem, const GeneralShootingOptions& shooting, Solution direct) {
-  ContinuationOptions options;
-  options.shooting = shooting;
-  return solvers::detail::continue_in_T(problem, options, std::nullopt, std::nullopt, &direct);
-}
-
 /// Method::Collocation (header comment), through the collocation driver of every kernel
 /// (solvers::collocate): the general continuous system (collocation.hpp) from the guess
 /// trajectory or the geodesic guess, Newton on the start's mesh first; with Continuation::T its
@@ -212,14 +201,15 @@ class StrategyKernel final : public solvers::StrategyKernel {
     return wrap(Family::shoot(kernel_.shooting_problem(), options, s.v0, kernel_.auxiliary(s.Xi0)));
   }
   solvers::PathResultPtr continue_in_T(const ContinuationOptions& options, solvers::PathResultPtr failed_direct) override {
-    auto direct = solvers::take<KernelProblem>(std::move(failed_direct));
+    std::optional<typename Family::Solution> direct;
+    if (failed_direct != nullptr) direct = solvers::take<KernelProblem>(std::move(failed_direct));
     std::optional<typename Family::Velocity> v;
     std::optional<typename Family::Auxiliary> a;
     if (guessed()) {
       v = v0();
       a = kernel_.auxiliary(Xi0());
     }
-    return wrap(solvers::detail::continue_in_T(kernel_.shooting_problem(), options, v, a, &direct));
+    return wrap(solvers::detail::continue_in_T(kernel_.shooting_problem(), options, v, a, direct ? &*direct : nullptr));
   }
   /// transported::solve's (lie_solve), whose shooting options are `options_`'s, as `options`'.
   solvers::PathResultPtr continue_in_lambda(const ContinuationOptions&, double start) override {
@@ -242,12 +232,11 @@ class StrategyKernel final : public solvers::StrategyKernel {
   }
   /// transported::solve's (lie_solve), which reports to its own stage of `options`' monitor.
   solvers::PathResultPtr multiple_shoot(const SolveOptions& options, const SolveMonitor&) override {
-    if constexpr (kLieMethods) {
-      SolveOptions o = options;
-      o.method = Method::MultipleShooting;
-      return wrap(lie_solve(kernel_.problem, o, lie_guess(guess_)));
-    }
-    throw std::logic_error("general::StrategyKernel: multiple shooting is the Lie-group kernel's");
+    return lie_method(options, Method::MultipleShooting);
+  }
+  /// transported::solve's (lie_solve), which reports to its own stage of `options`' monitor.
+  solvers::PathResultPtr two_level(const SolveOptions& options, const SolveMonitor&) override {
+    return lie_method(options, Method::TwoLevel);
   }
 
   /// The strategy's result as the general solve's.
@@ -267,6 +256,15 @@ class StrategyKernel final : public solvers::StrategyKernel {
   static solvers::PathResultPtr wrap(Solution s) {
     return solvers::wrap<KernelProblem>(std::move(s));
   }
+  /// A method of the Lie-group kernel, as transported::solve runs it (lie_solve), from the guess.
+  solvers::PathResultPtr lie_method(const SolveOptions& options, Method method) const {
+    if constexpr (kLieMethods) {
+      SolveOptions o = options;
+      o.method = method;
+      return wrap(lie_solve(kernel_.problem, o, lie_guess(guess_)));
+    }
+    throw std::logic_error("general::StrategyKernel: " + std::string(to_string(method)) + " is the Lie-group kernel's");
+  }
   typename Family::Velocity v0() const { return guess_.start_v0().value_or(geodesic_guess(problem_)); }
   manifolds::ComponentMatrixOf<M> Xi0() const {
     return guess_.start_Xi0().value_or(manifolds::ComponentMatrixOf<M>::Zero());
@@ -278,30 +276,16 @@ class StrategyKernel final : public solvers::StrategyKernel {
   const Kernel& kernel_;
 };
 
-/// The methods of solve (below) after its checks, under the options' deadline, with the shooting
-/// and continuation in T of `kernel` (GeneralKernel above or LieKernel, lie_kernel.hpp): Auto is
-/// the default strategy (StrategyKernel above); shooting is shot through the kernel's
-/// ShootingFamily, from the guess (a guess Xi0 entering as `auxiliary(Xi0)`), then with
-/// Continuation::T continued in T; `result` makes the returned solution a GeneralSolution<M>.
+/// The methods of solve (below) after its checks, under the options' deadline, on `kernel`
+/// (GeneralKernel above or LieKernel, lie_kernel.hpp) as StrategyKernel above offers them:
+/// every method's choice is the compiled solvers::run_method's (Auto the default strategy,
+/// Shooting from the guess, a guess Xi0 entering as `auxiliary(Xi0)`, or continued in T or in
+/// lambda); `take` makes the returned solution a GeneralSolution<M>.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L, class Kernel>
 GeneralSolution<M> run_strategy(const GeneralProblem<M, L>& problem, const SolveOptions& options,
                                 const GeneralGuess<M>& guess, const Kernel& kernel) {
-  using Family = solvers::ShootingFamily<typename Kernel::Problem>;
-  if (options.method == Method::Collocation || options.method == Method::Auto) {
-    StrategyKernel<M, L, Kernel> strategy(problem, options, guess, kernel);
-    if (options.method == Method::Collocation) return detail::collocation(problem, options, guess, strategy);
-    return strategy.take(solvers::default_strategy(strategy, options));
-  }
-  const GeneralShootingOptions shooting{.order = options.order, .tolerance = options.tol,
-                                        .max_iterations = options.max_iterations, .no_progress_window = 0,
-                                        .monitor = &options.monitor};
-  auto direct = Family::shoot(kernel.shooting_problem(), shooting, guess.start_v0().value_or(geodesic_guess(problem)),
-                              kernel.auxiliary(guess.start_Xi0().value_or(manifolds::ComponentMatrixOf<M>::Zero())));
-  direct.branch = guess.empty() ? "direct from the geodesic guess" : "direct from the given guess";
-  if (direct.converged() || direct.status == Status::Interrupted || options.continuation == Continuation::None) {
-    return kernel.result(std::move(direct));
-  }
-  return kernel.result(detail::continue_in_T(kernel.shooting_problem(), shooting, std::move(direct)));
+  StrategyKernel<M, L, Kernel> methods(problem, options, guess, kernel);
+  return methods.take(solvers::run_method(methods, options));
 }
 
 /// run_strategy on the general scheme.
@@ -318,18 +302,6 @@ GeneralSolution<manifolds::GroupManifold<G>> run_methods_lie(const GeneralProble
                                                              double lambda, const SolveOptions& options,
                                                              const GeneralGuess<manifolds::GroupManifold<G>>& guess) {
   return run_strategy(problem, options, guess, LieKernel<G, L>{lie_kernel_problem(problem, lambda)});
-}
-
-/// The Lie-group kernel's own methods (header comment): transported::solve of the kernel's problem
-/// with its Lagrangian behind the erased type, a guess as the Lie-group solver's (xi = C(Xi)),
-/// general's status rule, the result converted (general_solution_from_lie).
-template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
-GeneralSolution<manifolds::GroupManifold<G>> run_lie_method(const GeneralProblem<manifolds::GroupManifold<G>, L>& problem,
-                                                            double lambda, const SolveOptions& options,
-                                                            const GeneralGuess<manifolds::GroupManifold<G>>& guess) {
-  const LieKernelProblem<G, L> kernel = lie_kernel_problem(problem, lambda);
-  transported::TransportedSolution<G> s = lie_solve(kernel, options, lie_guess(guess));
-  return general_solution_from_lie(kernel, std::move(s));
 }
 
 }  // namespace detail
@@ -376,11 +348,6 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const SolveOptions
   const SolveOptions timed = with_deadline(options, start);
   GeneralSolution<M> s = [&] {
     if constexpr (kIsGroupManifold<M>) {
-      if constexpr (transported::kCompiledGroup<typename M::Group>) {
-        if (lie_method) {
-          return detail::run_lie_method(problem, *problem.manifold.cartan_schouten_lambda(), timed, guess);
-        }
-      }
       if (lie_kernel_applies(problem, timed)) {
         return detail::run_methods_lie(problem, *problem.manifold.cartan_schouten_lambda(), timed, guess);
       }

@@ -55,18 +55,33 @@ class StrategyKernel {
   /// Shooting from the unknowns of `start`, a result of collocate().
   virtual PathResultPtr shoot_from(const ShootingOptions& options, const PathResult& start) = 0;
   /// Continuation in T from the guess; `failed_direct`, a failed shoot() with the same shooting
-  /// options, is the path's first attempt at the full horizon (not repeated).
+  /// options, is the path's first attempt at the full horizon (not repeated); null: the path
+  /// makes its own.
   virtual PathResultPtr continue_in_T(const ContinuationOptions& options, PathResultPtr failed_direct) = 0;
   /// Continuation in lambda from the solution at lambda = `start` (no guess).
   virtual PathResultPtr continue_in_lambda(const ContinuationOptions& options, double start) = 0;
   /// Collocation of the continuous problem (the options' method is Collocation), its solution
   /// sampled at `samples` uniform times.
   virtual PathResultPtr collocate(const SolveOptions& options, int samples) = 0;
-  /// Multiple shooting from the guess, reporting to `stage`.
+  /// Multiple shooting from the guess (the options' segments), reporting to `stage`.
   virtual PathResultPtr multiple_shoot(const SolveOptions& options, const SolveMonitor& stage) = 0;
+  /// The two-level scheme from the guess's v0, reporting to `stage` (the Lie-group kernel's).
+  virtual PathResultPtr two_level(const SolveOptions& options, const SolveMonitor& stage);
+  /// Newton on the discrete Euler–Lagrange equations from the guess trajectory or the geodesic
+  /// path, reporting to `stage` (the Lie-group solve's); names its own branch.
+  virtual PathResultPtr variational(const SolveOptions& options, const SolveMonitor& stage);
 };
 
 /// The default strategy (header comment) on `kernel` under `options` (with their deadline).
 PathResultPtr default_strategy(StrategyKernel& kernel, const SolveOptions& options);
+
+/// The method `options` ask for on `kernel`, once the caller has checked that the kernel has it
+/// (each solve's validate: its refusals name the kernel): Auto is default_strategy; Shooting is
+/// shooting from the guess, or with Continuation::T continuation in T from the guess (its first
+/// stage the path's: docs/design/one-core.md D7), with Lambda continuation in lambda from
+/// lambda_start; the other methods the kernel's own. Stages of the options' monitor are named
+/// after the method ("shooting", "multiple shooting", "two-level", "collocation", "variational").
+/// Throws std::logic_error for a method the kernel lacks.
+PathResultPtr run_method(StrategyKernel& kernel, const SolveOptions& options);
 
 }  // namespace cartan::solvers

@@ -7,10 +7,10 @@
 // `cartan sweep` call this; the result it returns is complete (method used,
 // branch, status, action), so no caller patches it.
 //
-// The default strategy is every kernel's (solvers/strategy.hpp, compiled once): shooting, then
-// continuation in T (unless the Lagrangian is purely kinetic), in lambda from 0 and from 1,
-// collocation polished by shooting (natural Lagrangians), multiple shooting; this kernel says what
-// it can do and runs each method (StrategyKernel below).
+// The choice of method is every kernel's (solvers/strategy.hpp, compiled once: run_method), and
+// so is the default strategy: shooting, then continuation in T (unless the Lagrangian is purely
+// kinetic), in lambda from 0 and from 1, collocation polished by shooting (natural Lagrangians),
+// multiple shooting; this kernel says what it can do and runs each method (StrategyKernel below).
 
 #include <optional>
 #include <string>
@@ -172,28 +172,6 @@ TransportedSolution<G> collocation(const TransportedProblem<G, L>& problem, cons
   }
 }
 
-/// Method::Shooting as `options` say.
-template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-TransportedSolution<G> shooting(const TransportedProblem<G, L>& problem, const SolveOptions& options,
-                                const SolveGuess<G>& guess) {
-  const SolveMonitor stage = options.monitor.stage("shooting");
-  ContinuationOptions c{.shooting = {.order = options.order, .tolerance = options.tol,
-                                     .max_iterations = options.max_iterations, .monitor = &stage}};
-  const std::optional<groups::TangentOf<G>> v0 = guess.start_v0();
-  const std::optional<groups::CovectorOf<G>> xi0 = guess.start_xi0();
-  switch (options.continuation) {
-    case Continuation::T:
-      return solve_continuation_in_T(problem, c, v0, xi0);
-    case Continuation::Lambda:
-      return solve_continuation_in_lambda(problem, options.lambda_start.value_or(0.0), c);
-    case Continuation::None: break;
-  }
-  TransportedSolution<G> s =
-      solve_shooting(problem, c.shooting, v0.value_or(geodesic_guess(problem)), xi0.value_or(groups::CovectorOf<G>::Zero()));
-  s.branch = guess.empty() ? "direct from the geodesic guess" : "direct from the given guess";
-  return s;
-}
-
 /// The Lie-group kernel as the default strategy sees it (solvers/strategy.hpp): its methods on
 /// `problem` from `guess`, its results PathResults of the problem's family.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
@@ -220,6 +198,9 @@ class StrategyKernel final : public solvers::StrategyKernel {
     return wrap(solve_shooting(problem_, options, s.v0, s.xi0));
   }
   solvers::PathResultPtr continue_in_T(const ContinuationOptions& options, solvers::PathResultPtr failed_direct) override {
+    if (failed_direct == nullptr) {
+      return wrap(solve_continuation_in_T(problem_, options, guess_.start_v0(), guess_.start_xi0()));
+    }
     return wrap(solve_continuation_in_T(problem_, options, guess_.start_v0(), guess_.start_xi0(),
                                         solvers::take<Problem>(std::move(failed_direct))));
   }
@@ -231,9 +212,23 @@ class StrategyKernel final : public solvers::StrategyKernel {
     throw std::logic_error("transported::StrategyKernel: collocation needs a natural Lagrangian");
   }
   solvers::PathResultPtr multiple_shoot(const SolveOptions& options, const SolveMonitor& stage) override {
-    const MultipleShootingOptions m{.order = options.order, .tolerance = options.tol,
+    const MultipleShootingOptions m{.order = options.order, .segments = options.segments, .tolerance = options.tol,
                                     .max_iterations = options.max_iterations, .monitor = &stage};
     return wrap(solve_multiple_shooting(problem_, m, v0(), xi0()));
+  }
+  solvers::PathResultPtr two_level(const SolveOptions& options, const SolveMonitor& stage) override {
+    const TwoLevelOptions o{.order = options.order, .tolerance = options.tol, .max_outer = options.max_iterations,
+                            .max_inner = options.max_iterations, .monitor = &stage};
+    return wrap(solve_two_level(problem_, o, v0()));
+  }
+  solvers::PathResultPtr variational(const SolveOptions& options, const SolveMonitor& stage) override {
+    const std::vector<groups::ElementOf<G>> path =
+        guess_.trajectory ? path_at_nodes(problem_, *guess_.trajectory) : geodesic_path(problem_);
+    TransportedSolution<G> s =
+        solve_variational(problem_, {.tolerance = options.tol, .max_iterations = options.max_iterations, .monitor = &stage},
+                          &path);
+    s.branch = guess_.empty() ? "direct from the geodesic path" : "direct from the given trajectory";
+    return wrap(std::move(s));
   }
 
  private:
@@ -245,14 +240,6 @@ class StrategyKernel final : public solvers::StrategyKernel {
   const Problem& problem_;
   const SolveGuess<G>& guess_;
 };
-
-/// The default strategy (solvers/strategy.hpp) on the Lie-group kernel.
-template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
-TransportedSolution<G> strategy(const TransportedProblem<G, L>& problem, const SolveOptions& options,
-                                const SolveGuess<G>& guess) {
-  StrategyKernel<G, L> kernel(problem, guess);
-  return solvers::take<TransportedProblem<G, L>>(solvers::default_strategy(kernel, options));
-}
 
 }  // namespace detail
 
@@ -275,48 +262,8 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
   validate(problem, requested, guess);
   const auto start = std::chrono::steady_clock::now();
   const SolveOptions options = with_deadline(requested, start);
-  TransportedSolution<G> s;
-  switch (options.method) {
-    case Method::Auto:
-      s = detail::strategy(problem, options, guess);
-      break;
-    case Method::Shooting:
-      s = detail::shooting(problem, options, guess);
-      break;
-    case Method::MultipleShooting: {
-      const SolveMonitor stage = options.monitor.stage("multiple shooting");
-      s = solve_multiple_shooting(problem,
-                                  {.order = options.order, .segments = options.segments, .tolerance = options.tol,
-                                   .max_iterations = options.max_iterations, .monitor = &stage},
-                                  guess.start_v0().value_or(geodesic_guess(problem)),
-                                  guess.start_xi0().value_or(groups::CovectorOf<G>::Zero()));
-      break;
-    }
-    case Method::TwoLevel: {
-      const SolveMonitor stage = options.monitor.stage("two-level");
-      s = solve_two_level(problem,
-                          {.order = options.order, .tolerance = options.tol, .max_outer = options.max_iterations,
-                           .max_inner = options.max_iterations, .monitor = &stage},
-                          guess.start_v0().value_or(geodesic_guess(problem)));
-      s.branch = guess.empty() ? "direct from the geodesic guess" : "direct from the given guess";
-      break;
-    }
-    case Method::Collocation:
-      if constexpr (detail::kNatural<L>) {  // else validate threw
-        detail::StrategyKernel<G, L> discrete(problem, guess);
-        s = detail::collocation(problem, options, guess, options.samples, discrete);
-      }
-      break;
-    case Method::Variational: {
-      const SolveMonitor stage = options.monitor.stage("variational");
-      const std::vector<groups::ElementOf<G>> path =
-          guess.trajectory ? path_at_nodes(problem, *guess.trajectory) : geodesic_path(problem);
-      s = solve_variational(problem, {.tolerance = options.tol, .max_iterations = options.max_iterations, .monitor = &stage},
-                            &path);
-      s.branch = guess.empty() ? "direct from the geodesic path" : "direct from the given trajectory";
-      break;
-    }
-  }
+  detail::StrategyKernel<G, L> kernel(problem, guess);
+  TransportedSolution<G> s = solvers::take<TransportedProblem<G, L>>(solvers::run_method(kernel, options));
   if (const std::string note = detail::cut_locus_note(problem); !note.empty()) s.message += "; note: " + note;
   apply_time_limit(options, s.status, s.message);
   detail::complete(problem, s, start);
