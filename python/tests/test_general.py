@@ -373,6 +373,19 @@ def test_python_lagrangian_object_equals_kinetic_potential():
     np.testing.assert_allclose(python.Xi0, builtin.Xi0, atol=1e-10)
 
 
+def test_a_lagrangian_whose_velocity_does_not_invert_its_momentum_is_refused():
+    """The schemes recover v from mu with `velocity` at every step: a Python Lagrangian whose
+    velocity is off (here by 1e-4) would converge to a wrong answer, so it is refused first."""
+    class Broken(SphereKinetic):
+        def velocity(self, t, q, mu):
+            return super().velocity(t, q, mu) + np.array([1e-4, 0.0])
+
+    kwargs = dict(T=1.2, N=50, q0=Sphere.point([1, 0.2, 0.1]), qT=Sphere.point([-0.2, 1, -0.4]))
+    with pytest.raises(ValueError, match="lagrangian .* does not invert its momentum"):
+        cartan.solve_general(Sphere(), lagrangian=Broken(np.eye(2), 3.0), **kwargs)
+    assert cartan.solve_general(Sphere(), lagrangian=SphereKinetic(np.eye(2), 3.0), **kwargs).converged
+
+
 def test_flat_plane_gives_newtons_equations():
     """R^2, Gamma = 0, l = 1/2 |v|^2 - k/2 |q|^2: q(t) = q0 cos wt + c sin wt, v0 = w c exactly;
     the scheme of order 2 reaches it at O(h^2)."""

@@ -11,7 +11,7 @@
 
 #include "cartan/general/action.hpp"
 #include "cartan/general/compiled.hpp"  // the erased Lagrangian's compiled instantiations
-#include "cartan/general/solve.hpp"     // detail::continue_in_T
+#include "cartan/general/solve.hpp"     // solvers::detail::continue_in_T on the general family
 #include "cartan/manifolds/euclidean.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"
@@ -326,6 +326,29 @@ TEST(GeneralSolver, BadInputIsRejectedWithTheValue) {
   off << 1, 0, 0, 1, 0.5, 0;  // not tangent at the north pole
   expect_invalid([&] { solve_general_shooting(erased(GeneralProblem<S2, KineticPotential<S2>>{S2{}, l, 1, 10, q, q, off})); }, "frame0");
   expect_invalid([] { KineticPotential<S2>(Eigen::Vector2d(1, -1).asDiagonal()); }, {"inertia", "positive definite"});
+  // A hand-written Lagrangian whose velocity does not invert its momentum (here off by 1e-4 in one
+  // component: a wrong answer that would converge) is refused before any work, as by the
+  // Lie-group solve (D11).
+  struct BrokenInverse {
+    KineticPotential<S2> kinetic{Eigen::Matrix2d::Identity()};
+    double value(double t, const Eigen::Vector3d& x, const Eigen::Vector2d& v) const { return kinetic.value(t, x, v); }
+    Eigen::Vector2d momentum(double t, const Eigen::Vector3d& x, const Eigen::Vector2d& v) const {
+      return kinetic.momentum(t, x, v);
+    }
+    Eigen::Vector2d velocity(double t, const Eigen::Vector3d& x, const Eigen::Vector2d& mu) const {
+      return kinetic.velocity(t, x, mu) + Eigen::Vector2d(1e-4, 0);
+    }
+    Eigen::Vector3d point_gradient(double t, const Eigen::Vector3d& x, const Eigen::Vector2d& v) const {
+      return kinetic.point_gradient(t, x, v);
+    }
+  };
+  const Eigen::Vector3d east = Eigen::Vector3d::UnitX();
+  const auto broken = erased(GeneralProblem<S2, BrokenInverse>{S2{}, BrokenInverse{}, 1, 10, q, east, std::nullopt});
+  expect_invalid([&] { solve(broken, cartan::SolveOptions{}); },
+                 {"general::solve: lagrangian = (velocity(t, g, momentum(t, g, v))", "does not invert its momentum"});
+  // The same Lagrangian with its inverse exact is solved.
+  const auto kinetic = erased(GeneralProblem<S2, KineticPotential<S2>>{S2{}, l, 1, 10, q, east, std::nullopt});
+  EXPECT_TRUE(solve(kinetic, cartan::SolveOptions{}).converged());
 }
 
 }  // namespace

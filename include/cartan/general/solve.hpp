@@ -40,6 +40,7 @@
 #include "cartan/general/compiled.hpp"
 #include "cartan/general/lie_kernel.hpp"
 #include "cartan/general/shooting.hpp"
+#include "cartan/mechanics/legendre_check.hpp"
 #include "cartan/principle/options.hpp"
 #include "cartan/principle/vocabulary.hpp"
 #include "cartan/solvers/continuation.hpp"
@@ -316,6 +317,16 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const SolveOptions
                          const GeneralGuess<M>& guess) {
   problem.validate();
   options.validate();
+  // The inverse Legendre map, at t = 0, q0 and t = T, qT, on the geodesic velocity (where qT is
+  // not at q0's cut locus) and the basis vectors (D11 of docs/design/one-core.md).
+  std::optional<manifolds::ComponentsOf<M>> geodesic;
+  try {
+    geodesic = geodesic_guess(problem);
+  } catch (const std::exception&) {  // difference(q0, qT) undefined there: the solve will say so
+  }
+  if (geodesic && !geodesic->allFinite()) geodesic.reset();
+  mechanics::check_legendre_inverse<L, manifolds::PointOf<M>, manifolds::ComponentsOf<M>>(
+      "general::solve", problem.lagrangian, {{0.0, problem.q0}, {problem.T, problem.qT}}, geodesic);
   // The Lie-group kernel's own methods (header comment): multiple shooting, two-level, and
   // continuation in lambda of shooting.
   const bool collocation = options.method == Method::Collocation;

@@ -22,6 +22,7 @@
 #include "cartan/transported/compiled.hpp"
 #include "cartan/mechanics/free_body.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
+#include "cartan/mechanics/legendre_check.hpp"
 #include "cartan/mechanics/natural_system.hpp"
 #include "cartan/mechanics/rigid_body.hpp"
 #include "cartan/transported/continuation.hpp"
@@ -71,24 +72,12 @@ std::string cut_locus_note(const TransportedProblem<G, L>& problem) {
   return {};
 }
 
-/// Throws std::invalid_argument when the Lagrangian's `velocity` does not invert its `momentum`
-/// (the scheme recovers v from mu with it at every step): checked at t = 0, g0 and t = T, gT on
-/// the geodesic velocity and the basis vectors, to 1e-6 relative (an exact inverse agrees to
-/// rounding; an iterative one to its own tolerance, which should be far below the solver's).
+/// The check of the Lagrangian's inverse Legendre map (mechanics/legendre_check.hpp) at t = 0,
+/// g0 and t = T, gT, on the geodesic velocity and the basis vectors.
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 void check_legendre_inverse(const TransportedProblem<G, L>& problem) {
-  const groups::TangentOf<G> geodesic = geodesic_guess(problem);
-  for (const auto& [t, g] : {std::pair{0.0, problem.g0}, std::pair{problem.T, problem.gT}}) {
-    for (int i = -1; i < G::kDim; ++i) {
-      const groups::TangentOf<G> v = i < 0 ? geodesic : groups::TangentOf<G>(groups::TangentOf<G>::Unit(i));
-      const groups::TangentOf<G> back = problem.lagrangian.velocity(t, g, problem.lagrangian.momentum(t, g, v));
-      if (!((back - v).norm() <= 1e-6 * (1 + v.norm()))) {
-        throw_invalid("solve", "lagrangian", "(velocity(t, g, momentum(t, g, v)) = " + format_value(back) +
-                                                 " for v = " + format_value(v) + " at t = " + format_value(t) + ")",
-                      "does not invert its momentum: velocity must be the inverse Legendre map of momentum");
-      }
-    }
-  }
+  mechanics::check_legendre_inverse<L, groups::ElementOf<G>, groups::TangentOf<G>>(
+      "solve", problem.lagrangian, {{0.0, problem.g0}, {problem.T, problem.gT}}, geodesic_guess(problem));
 }
 
 /// Fills what every result carries: the action S_h of its trajectory, the total time. A result
