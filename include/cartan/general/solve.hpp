@@ -17,9 +17,11 @@
 // its prediction. A failure returns the best iterate of the requested problem (never a stage at
 // another T), and `branch` names the path.
 // Multiple shooting, two-level and continuation in lambda are the Lie-group kernel's capabilities:
-// on a Lie group whose connection is Cartan–Schouten given by its lambda with frame0 the identity
-// they run as transported::solve runs them (on the kernel's problem behind the erased reduced
-// Lagrangian, whose solve the library compiles for SO(3), H3, SE(2) and SE(3): transported/compiled.hpp),
+// on a Lie group whose connection is Cartan–Schouten given by its lambda with frame0 the identity,
+// continuation in lambda runs on the kernel's problem family (general's status rule on every
+// stage, as continuation in T), the other two as transported::solve runs them (on the kernel's
+// problem behind the erased reduced Lagrangian, whose solve the library compiles for SO(3), H3,
+// SE(2) and SE(3): transported/compiled.hpp),
 // with general's status rule and the result converted (their trajectories are the scheme's, so the
 // frame and Xi rebuild exactly); anywhere else (another group included) asking for them is an error
 // naming them. The variational method stays the Lie-group solve's: its node velocities are means
@@ -165,8 +167,9 @@ transported::TransportedSolution<G> lie_solve(const LieKernelProblem<G, L>& kern
 /// shooting and continuation in T through `kernel` (GeneralKernel above, or LieKernel,
 /// lie_kernel.hpp), its guess Xi0 entering as `kernel.auxiliary(Xi0)`; collocation the general
 /// one (Newton per mesh capped at 40 iterations, so that a hopeless start ends early); on the
-/// Lie-group kernel of a group the library compiles, also its continuation in lambda and multiple
-/// shooting (lie_solve). Results stay the kernel's own until `take` converts the strategy's.
+/// Lie-group kernel of a group the library compiles, also continuation in lambda (on the kernel's
+/// family, like continuation in T), multiple shooting and the two-level scheme (lie_solve).
+/// Results stay the kernel's own until `take` converts the strategy's.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L, class Kernel>
 class StrategyKernel final : public solvers::StrategyKernel {
  public:
@@ -212,15 +215,10 @@ class StrategyKernel final : public solvers::StrategyKernel {
     }
     return wrap(solvers::detail::continue_in_T(kernel_.shooting_problem(), options, v, a, direct ? &*direct : nullptr));
   }
-  /// transported::solve's (lie_solve), whose shooting options are `options_`'s, as `options`'.
-  solvers::PathResultPtr continue_in_lambda(const ContinuationOptions&, double start) override {
-    if constexpr (kLieMethods) {
-      SolveOptions o = options_;
-      o.method = Method::Shooting;
-      o.continuation = Continuation::Lambda;
-      o.lambda_start = start;
-      return wrap(lie_solve(kernel_.problem, o, {}));
-    }
+  /// The path in lambda on the Lie-group kernel's family (general's status rule on every stage,
+  /// docs/design/one-core.md D10), from the solution at lambda = `start`.
+  solvers::PathResultPtr continue_in_lambda(const ContinuationOptions& options, double start) override {
+    if constexpr (kLieMethods) return wrap(solvers::detail::continue_in_lambda(kernel_.problem, start, options));
     throw std::logic_error("general::StrategyKernel: continuation in lambda is the Lie-group kernel's");
   }
   solvers::PathResultPtr collocate(const SolveOptions& options, int samples) override {

@@ -235,6 +235,24 @@ Solution continue_in_T(const Problem& problem, const ContinuationOptions& option
                                           failed_direct != nullptr ? path.wrap(std::move(*failed_direct)) : nullptr));
 }
 
+/// Continuation in lambda on a family (solve_continuation_in_lambda, transported/continuation.hpp;
+/// the Lie-group kernel inside the general solve, general/solve.hpp): from the solution at
+/// lambda = `start` (continue_in_T's, directly from the geodesic guess when that converges) to
+/// the problem's lambda.
+template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
+Solution continue_in_lambda(const Problem& problem, double start, const ContinuationOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  auto make = [&problem](double lambda) {
+    Problem p = problem;
+    p.lambda = lambda;
+    return p;
+  };
+  const auto path = family_path<Problem>(std::cref(make));
+  Solution first = continue_in_T(make(start), options, std::nullopt, std::nullopt, static_cast<Solution*>(nullptr));
+  return path.take(
+      solvers::continue_in_parameter(path, start, problem.lambda, path.wrap(std::move(first)), options, "lambda", started));
+}
+
 }  // namespace detail
 
 }  // namespace cartan::solvers

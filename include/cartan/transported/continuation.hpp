@@ -84,16 +84,7 @@ TransportedSolution<G> solve_continuation_in_lambda(const TransportedProblem<G, 
   problem.validate();
   options.validate();
   require_finite(lambda_start, "solve_continuation_in_lambda", "lambda_start");
-  const auto start_time = std::chrono::steady_clock::now();
-  auto make = [&](double lambda) {
-    TransportedProblem<G, L> p = problem;
-    p.lambda = lambda;
-    return p;
-  };
-  const auto path = solvers::family_path<TransportedProblem<G, L>>(std::cref(make));
-  return path.take(solvers::continue_in_parameter(path, lambda_start, problem.lambda,
-                                                  path.wrap(solve_continuation_in_T(make(lambda_start), options)),
-                                                  options, "lambda", start_time));
+  return solvers::detail::continue_in_lambda(problem, lambda_start, options);
 }
 
 }  // namespace cartan::transported
