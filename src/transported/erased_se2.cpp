@@ -4,3 +4,4 @@
 #include "cartan/verify/report.hpp"
 
 CARTAN_TRANSPORTED_COMPILED_ERASED(template, ::cartan::groups::SE2)
+CARTAN_TRANSPORTED_SHOOTING_ERASED(template, ::cartan::groups::SE2)

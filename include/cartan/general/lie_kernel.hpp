@@ -199,7 +199,9 @@ void apply_general_status_rule(const LieKernelProblem<G, L>& problem, transporte
 
 namespace cartan::solvers {
 
-/// The Lie kernel's problems as a family of the continuation path: the Lie-group shooting, then
+/// The Lie kernel's problems as a family of the continuation path: the Lie-group shooting of the
+/// kernel's problem behind the erased Lagrangian (compiled in the library on the shipped groups:
+/// transported/shooting.hpp; the erased type forwards every call, so the same operations), then
 /// general's status rule (general::detail::apply_general_status_rule) at the shooting's tolerance.
 template <groups::LieGroup G, general::ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 struct ShootingFamily<general::LieKernelProblem<G, L>>
@@ -207,7 +209,8 @@ struct ShootingFamily<general::LieKernelProblem<G, L>>
   using Lie = ShootingFamily<transported::TransportedProblem<G, general::LieLagrangian<G, L>>>;
   static typename Lie::Solution shoot(const general::LieKernelProblem<G, L>& p, const ShootingOptions& o,
                                       const typename Lie::Velocity& v, const typename Lie::Auxiliary& a) {
-    typename Lie::Solution s = Lie::shoot(p, o, v, a);
+    const transported::TransportedProblem<G, general::LieLagrangian<G, L>>& typed = p;
+    typename Lie::Solution s = transported::solve_shooting(transported::erased(typed), o, v, a);
     general::detail::apply_general_status_rule(p, s, o.tolerance);
     return s;
   }
@@ -227,8 +230,11 @@ GeneralTrajectory<manifolds::GroupManifold<G>> general_trajectory_from_lie(const
                                                                            transported::TransportedTrajectory<G>&& lie) {
   using Tangent = groups::TangentOf<G>;
   using Matrix = groups::AlgebraMatrixOf<G>;
-  // The order-2 step's predictor is its order-1 step (transported/scheme.hpp: step).
-  const transported::TransportedScheme<G, LieLagrangian<G, L>> euler(problem, SchemeOrder::First);
+  // The order-2 step's predictor is its order-1 step (transported/scheme.hpp: step), on the
+  // problem behind the erased Lagrangian as the kernel's shooting (the same operations).
+  const transported::TransportedProblem<G, LieLagrangian<G, L>>& typed = problem;
+  const transported::ErasedProblem<G> erased = transported::erased(typed);
+  const transported::TransportedScheme<G, mechanics::ErasedLagrangian<G>> euler(erased, SchemeOrder::First);
   const double dt = euler.step_size();
   const std::size_t nodes = lie.t.size();
   GeneralTrajectory<manifolds::GroupManifold<G>> out;

@@ -8,7 +8,8 @@
 //   - every built-in model (CARTAN_TRANSPORTED_BUILTIN_MODELS): solve and validate;
 //   - the erased Lagrangian (mechanics/erased_lagrangian.hpp; `erased(problem)` puts any
 //     Lagrangian behind it) on every shipped group (CARTAN_TRANSPORTED_SHIPPED_GROUPS): solve,
-//     validate, verify_trajectory, along_solution and along_transport.
+//     validate, verify_trajectory, along_solution and along_transport, and single shooting
+//     (solve_shooting, declared where it is defined: shooting.hpp).
 // A call with any other Lagrangian through this header alone does not link: call it as
 // `solve(erased(problem))`, or include the definitions (solve.hpp, along.hpp, verify/report.hpp)
 // for the fully typed instantiation (faster to run, slower to compile). The definition headers

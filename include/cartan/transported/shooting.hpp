@@ -22,6 +22,7 @@
 #include "cartan/numerics/nonlinear_solve.hpp"
 #include "cartan/numerics/shooting_driver.hpp"
 #include "cartan/solvers/shooting.hpp"
+#include "cartan/transported/compiled.hpp"
 #include "cartan/transported/solution.hpp"
 #include "cartan/transported/solve_options.hpp"
 #include "cartan/transported/sweep.hpp"
@@ -131,3 +132,15 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
 }
 
 }  // namespace cartan::transported
+
+// Shooting on the erased Lagrangian of every shipped group is compiled once, in the library
+// (src/transported/erased_*.cpp): the Lie-group kernel inside general::solve shoots through it
+// (general/lie_kernel.hpp), so that no unit instantiates the scheme on its own Lagrangian type.
+#define CARTAN_TRANSPORTED_SHOOTING_ERASED(prefix, G)                                                         \
+  prefix ::cartan::transported::TransportedSolution<G> cartan::transported::solve_shooting(                  \
+      const ::cartan::transported::ErasedProblem<G>&, const ::cartan::ShootingOptions&,                     \
+      const ::cartan::groups::TangentOf<G>&, const ::cartan::groups::CovectorOf<G>&);
+#define CARTAN_TRANSPORTED_EXTERN_SHOOTING(G) CARTAN_TRANSPORTED_SHOOTING_ERASED(extern template, G)
+CARTAN_TRANSPORTED_SHIPPED_GROUPS(CARTAN_TRANSPORTED_EXTERN_SHOOTING)
+#undef CARTAN_TRANSPORTED_EXTERN_SHOOTING
+
