@@ -91,11 +91,19 @@ struct SO3 {
   /// during Newton iterations, off the group). Validate user input with validate/from_matrix.
   static Tangent log(const Element& r);
 
+  /// Written entry by entry, not with Eigen's comma initializer, so that GCC inlines it into the
+  /// scheme's rates in a large unit (bench/README.md, "Solve speed against the start").
   static MatrixRep hat(const Tangent& v) {
     MatrixRep x;
-    x << 0, -v.z(), v.y(),  //
-        v.z(), 0, -v.x(),   //
-        -v.y(), v.x(), 0;
+    x(0, 0) = 0;
+    x(0, 1) = -v.z();
+    x(0, 2) = v.y();
+    x(1, 0) = v.z();
+    x(1, 1) = 0;
+    x(1, 2) = -v.x();
+    x(2, 0) = -v.y();
+    x(2, 1) = v.x();
+    x(2, 2) = 0;
     return x;
   }
   /// Reads the skew-symmetric part of x.
