@@ -1,7 +1,6 @@
 // Collocation's driver, every kernel's (solvers/collocation.hpp).
 #include "cartan/solvers/collocation.hpp"
 
-#include <chrono>
 #include <optional>
 #include <utility>
 
@@ -50,7 +49,7 @@ PathResultPtr order_two_shooting(StrategyKernel& discrete, Continuation fallback
   const std::optional<SolveMonitor> named = SolveMonitor::staged(options.monitor, "shooting");
   if (named) first.monitor = &*named;
   PathResultPtr direct = discrete.shoot(first);
-  direct->core().branch = discrete.guessed() ? "direct from the given guess" : "direct from the geodesic guess";
+  direct->core().branch = direct_branch(discrete);
   sweeps = direct->core().sweeps;
   if (direct->core().converged() || direct->core().status == Status::Interrupted) return direct;
   PathResultPtr r = discrete.continue_in_T(path, std::move(direct));
@@ -76,9 +75,7 @@ Collocated collocate(const ContinuousProblem& problem, StrategyKernel& discrete,
   out.result = std::move(on_mesh.result);
   if (on_mesh.converged_on_mesh || out.result.status == Status::Interrupted) return out;
 
-  const auto clock = std::chrono::steady_clock::now();
   PathResultPtr shooting = order_two_shooting(discrete, fallback, options, out.shooting_sweeps);
-  out.shooting_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
   if (!shooting->core().converged()) {
     out.result.status = shooting->core().status;
     out.result.message += "; the order-2 shooting fallback failed too: " + shooting->core().message;

@@ -33,7 +33,7 @@ PathResultPtr default_strategy(StrategyKernel& kernel, const SolveOptions& optio
     ShootingOptions s = shooting_options(options, stage);
     s.no_progress_window = kernel.first_shooting_window();
     PathResultPtr r = kernel.shoot(s);
-    r->core().branch = kernel.guessed() ? "direct from the given guess" : "direct from the geodesic guess";
+    r->core().branch = direct_branch(kernel);
     if (halve_horizon && !r->core().converged() && !stopped()) direct_attempt = r->clone();  // step 2 starts from it
     if (attempts.attempt("shooting", std::move(r))) return finish(true);
   }
@@ -90,7 +90,6 @@ PathResultPtr StrategyKernel::variational(const SolveOptions&, const SolveMonito
 }
 
 PathResultPtr run_method(StrategyKernel& kernel, const SolveOptions& options) {
-  const char* from_guess = kernel.guessed() ? "direct from the given guess" : "direct from the geodesic guess";
   switch (options.method) {
     case Method::Auto: return default_strategy(kernel, options);
     case Method::Shooting: {
@@ -102,7 +101,7 @@ PathResultPtr run_method(StrategyKernel& kernel, const SolveOptions& options) {
         case Continuation::None: break;
       }
       PathResultPtr r = kernel.shoot(c.shooting);
-      r->core().branch = from_guess;
+      r->core().branch = direct_branch(kernel);
       return r;
     }
     case Method::MultipleShooting: {
@@ -112,7 +111,7 @@ PathResultPtr run_method(StrategyKernel& kernel, const SolveOptions& options) {
     case Method::TwoLevel: {
       const SolveMonitor stage = options.monitor.stage("two-level");
       PathResultPtr r = kernel.two_level(options, stage);
-      r->core().branch = from_guess;
+      r->core().branch = direct_branch(kernel);
       return r;
     }
     case Method::Collocation: return kernel.collocate(options, options.samples);

@@ -79,11 +79,10 @@ namespace detail {
 /// trajectory or the geodesic guess, Newton on the start's mesh first; with Continuation::T its
 /// fallback runs on `discrete` (StrategyKernel below, of the same problem and guess), whose
 /// `take` turns a shooting result into a GeneralSolution. Counters are summed over every run.
+/// Reached from solve (below) only, whose checks cover the problem and the options' samples.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L, class Discrete>
 GeneralSolution<M> collocation(const GeneralProblem<M, L>& problem, const SolveOptions& options,
                                const GeneralGuess<M>& guess, Discrete& discrete) {
-  problem.validate();
-  check_samples(options.samples);
   const auto clock = std::chrono::steady_clock::now();
   const SolveMonitor stage = options.monitor.stage("collocation");
   const numerics::CollocationOptions c{.tol = options.tol,

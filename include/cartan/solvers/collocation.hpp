@@ -59,7 +59,6 @@ struct Collocated {
   /// or "failed: ..." when the fallback failed too.
   std::string branch;
   int shooting_sweeps = 0;  ///< the order-2 shooting fallback's sweeps (0 when it did not run)
-  double shooting_seconds = 0;
 };
 
 /// Collocation of `problem` from its start. With a `fallback` (Continuation::T, or Lambda where

@@ -72,6 +72,12 @@ class StrategyKernel {
   virtual PathResultPtr variational(const SolveOptions& options, const SolveMonitor& stage);
 };
 
+/// The branch of a shooting from the kernel's guess: "direct from the given guess" or "direct
+/// from the geodesic guess".
+inline const char* direct_branch(const StrategyKernel& kernel) {
+  return kernel.guessed() ? "direct from the given guess" : "direct from the geodesic guess";
+}
+
 /// The default strategy (header comment) on `kernel` under `options` (with their deadline).
 PathResultPtr default_strategy(StrategyKernel& kernel, const SolveOptions& options);
 
