@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "json_io.hpp"
+#include "cartan/api/json_io.hpp"
 
 namespace cartan::cli {
 
@@ -33,12 +33,12 @@ ProblemSpec problem_from(const CLI::App& command, ProblemFlags& flags) {
   }
   for (const auto* field : given) {  // list errors first, naming the flag
     if (const auto* list = std::get_if<std::vector<double> ProblemSpec::*>(&field->member)) {
-      flags.spec.**list = parse_list(flags.lists.at(field->key), field->key);
+      flags.spec.**list = io::parse_list(flags.lists.at(field->key), field->key);
     }
   }
   ProblemSpec spec;
   if (!flags.problem_file.empty()) {
-    apply_json(spec, read_json_file(flags.problem_file, "cartan " + command.get_name() + ": --problem"));
+    apply_json(spec, io::read_json_file(flags.problem_file, "cartan " + command.get_name() + ": --problem"));
   }
   for (const auto* field : given) {  // flags override the file
     std::visit([&](auto member) { spec.*member = flags.spec.*member; }, field->member);

@@ -10,7 +10,7 @@
 #include "cartan/errors.hpp"
 #include "cartan/groups/so3.hpp"
 #include "cartan/transported/method.hpp"
-#include "json_io.hpp"
+#include "cartan/api/json_io.hpp"
 #include "cartan/models/catalogue.hpp"
 
 namespace cartan::cli {
@@ -67,20 +67,19 @@ std::vector<ProblemField> make_fields() {
     }
   }
   return {
-      {"group", &S::group, "the group: " + groups + " (default so3)", true, nullptr, ProblemField::Scope::Group},
-      {"model", &S::model, "the model (default the group's first; a manifold: particle): " + models, true, nullptr,
+      {"group", &S::group, "the group: " + groups + " (default so3)", nullptr, ProblemField::Scope::Group},
+      {"model", &S::model, "the model (default the group's first; a manifold: particle): " + models, nullptr,
        ProblemField::Scope::Any},
       {"inertia", &S::inertia,
        "n numbers (the diagonal) or n*n (a symmetric positive-definite matrix, row-major), n = the algebra's dimension "
-       "(default: " + inertias + ")",
-       true, nullptr, ProblemField::Scope::Group},
-      {"lambda", &S::lambda, "Cartan-Schouten parameter (any real; default 0.5)", true, finite_value, ProblemField::Scope::Group},
-      {"T", &S::T, "final time (default 1)", true, positive_finite, ProblemField::Scope::Any},
-      {"N", &S::N, "number of steps (default 100)", true, at_least_one, ProblemField::Scope::Any},
-      {"g0", &S::g0, "initial element (default the identity): " + elements, true, nullptr, ProblemField::Scope::Group},
-      {"gT", &S::gT, "final element, as --g0", false, nullptr, ProblemField::Scope::Group},  // echoed as final_element
-      {"a0", &S::a0, "so3: initial direction; gT = minimal rotation taking a0 to aT", false, nullptr, ProblemField::Scope::Group},
-      {"aT", &S::aT, "so3: final direction", false, nullptr, ProblemField::Scope::Group},
+       "(default: " + inertias + ")", nullptr, ProblemField::Scope::Group},
+      {"lambda", &S::lambda, "Cartan-Schouten parameter (any real; default 0.5)", finite_value, ProblemField::Scope::Group},
+      {"T", &S::T, "final time (default 1)", positive_finite, ProblemField::Scope::Any},
+      {"N", &S::N, "number of steps (default 100)", at_least_one, ProblemField::Scope::Any},
+      {"g0", &S::g0, "initial element (default the identity): " + elements, nullptr, ProblemField::Scope::Group},
+      {"gT", &S::gT, "final element, as --g0", nullptr, ProblemField::Scope::Group},  // echoed as final_element
+      {"a0", &S::a0, "so3: initial direction; gT = minimal rotation taking a0 to aT", nullptr, ProblemField::Scope::Group},
+      {"aT", &S::aT, "so3: final direction", nullptr, ProblemField::Scope::Group},
       {"method", &S::method,
        enum_choices<cartan::Method>() +
            " (default auto: a strategy that tries shooting, continuation in T and in lambda, "
@@ -88,51 +87,45 @@ std::vector<ProblemField> make_fields() {
            "augmented shooting with an analytic Jacobian; multiple-shooting: lifted LM over --segments "
            "segments; two-level: the paper's scheme; collocation: fourth-order adaptive collocation; "
            "variational: Newton on the discrete Euler-Lagrange equations of the discrete action S_h, "
-           "second order, dense, for N up to a few hundred)",
-       false, nullptr, ProblemField::Scope::Any},
+           "second order, dense, for N up to a few hundred)", nullptr, ProblemField::Scope::Any},
       {"continuation", &S::continuation,
        enum_choices<cartan::Continuation>() +
            " (default none). shooting: how to reach a problem that fails from the guess (T: from a "
            "shorter horizon; lambda: from the lambda = 0 solution); collocation: where to start again "
-           "when Newton fails on the start's mesh (from that order-2 shooting solution)",
-       false, nullptr, ProblemField::Scope::Any},
-      {"v0", &S::v0, "guess of v(0), n numbers (shooting methods; default the geodesic velocity)", false, nullptr, ProblemField::Scope::Any},
-      {"xi0", &S::xi0, "guess of xi(0), n numbers (shooting, multiple-shooting; default 0)", false, nullptr, ProblemField::Scope::Group},
-      {"segments", &S::segments, "multiple-shooting only: number of segments (default about 100 steps each, at most 16)",
-       false, non_negative, ProblemField::Scope::Group},
-      {"order", &S::order, "1 (the paper's scheme) | 2 (second order) (default 1)", false, one_or_two, ProblemField::Scope::Any},
-      {"tol", &S::tol, "tolerance (default " + format_value(cartan::kDefaultTol) + ")", true, positive_finite,
+           "when Newton fails on the start's mesh (from that order-2 shooting solution)", nullptr, ProblemField::Scope::Any},
+      {"v0", &S::v0, "guess of v(0), n numbers (shooting methods; default the geodesic velocity)", nullptr, ProblemField::Scope::Any},
+      {"xi0", &S::xi0, "guess of xi(0), n numbers (shooting, multiple-shooting; default 0)", nullptr, ProblemField::Scope::Group},
+      {"segments", &S::segments, "multiple-shooting only: number of segments (default about 100 steps each, at most 16)", non_negative, ProblemField::Scope::Group},
+      {"order", &S::order, "1 (the paper's scheme) | 2 (second order) (default 1)", one_or_two, ProblemField::Scope::Any},
+      {"tol", &S::tol, "tolerance (default " + format_value(cartan::kDefaultTol) + ")", positive_finite,
        ProblemField::Scope::Any},
-      {"samples", &S::samples, "collocation only: output at this many uniform times on [0, T] (0: the final mesh)",
-       false, non_negative, ProblemField::Scope::Any},
+      {"samples", &S::samples, "collocation only: output at this many uniform times on [0, T] (0: the final mesh)", non_negative, ProblemField::Scope::Any},
       {"max_iterations", &S::max_iterations,
-       "iteration limit of each loop (default " + std::to_string(cartan::kDefaultMaxIterations) + ")", false,
+       "iteration limit of each loop (default " + std::to_string(cartan::kDefaultMaxIterations) + ")",
        at_least_one, ProblemField::Scope::Any},
       {"time_limit", &S::time_limit,
        "seconds the whole solve may take, every method and attempt (default 0: no limit); past it the running method "
-       "stops at its next iteration with status time-limit",
-       false, non_negative_finite, ProblemField::Scope::Any},
-      {"output", &S::output, "output file (default stdout)", false, nullptr, ProblemField::Scope::Any},
+       "stops at its next iteration with status time-limit", non_negative_finite, ProblemField::Scope::Any},
+      {"output", &S::output, "output file (default stdout)", nullptr, ProblemField::Scope::Any},
       {"connection", &S::connection,
        "groups: " + enum_choices<connections::ConnectionKind>() +
            " (cartan-schouten, the default, with --lambda; levi-civita of the left-invariant metric --metric; "
            "coefficients, the bilinear map of --alpha); the last two are solved by the general solver (methods auto, "
-           "shooting, collocation)",
-       false, nullptr, ProblemField::Scope::Group},
-      {"metric", &S::metric, "levi-civita: the metric, n numbers (diagonal) or n*n (default: the inertia)", false, nullptr,
+           "shooting, collocation)", nullptr, ProblemField::Scope::Group},
+      {"metric", &S::metric, "levi-civita: the metric, n numbers (diagonal) or n*n (default: the inertia)", nullptr,
        ProblemField::Scope::Group},
       {"alpha", &S::alpha,
-       "coefficients: a JSON file, an n x n x n array alpha with alpha(e_i, e_j) = sum_k alpha[i][j][k] e_k", false,
+       "coefficients: a JSON file, an n x n x n array alpha with alpha(e_i, e_j) = sum_k alpha[i][j][k] e_k",
        nullptr, ProblemField::Scope::Group},
       {"manifold", &S::manifold,
-       "a manifold instead of a group: sphere or hyperbolic-plane (S^2 or H^2 with its Levi-Civita connection; model particle)", true, nullptr,
+       "a manifold instead of a group: sphere or hyperbolic-plane (S^2 or H^2 with its Levi-Civita connection; model particle)", nullptr,
        ProblemField::Scope::Manifold},
-      {"mass", &S::mass, "manifold: a1,a2 in l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1,1)", true, nullptr,
+      {"mass", &S::mass, "manifold: a1,a2 in l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1,1)", nullptr,
        ProblemField::Scope::Manifold},
-      {"gravity", &S::gravity, "manifold: G in l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 0)", true, finite_value,
+      {"gravity", &S::gravity, "manifold: G in l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 0)", finite_value,
        ProblemField::Scope::Manifold},
-      {"q0", &S::q0, "manifold: initial point x,y,z (moved onto the manifold: normalised on the sphere, onto z^2 - x^2 - y^2 = 1 on the hyperbolic plane)", true, nullptr, ProblemField::Scope::Manifold},
-      {"qT", &S::qT, "manifold: final point x,y,z (as q0; not equal to q0, nor antipodal on the sphere)", true, nullptr,
+      {"q0", &S::q0, "manifold: initial point x,y,z (moved onto the manifold: normalised on the sphere, onto z^2 - x^2 - y^2 = 1 on the hyperbolic plane)", nullptr, ProblemField::Scope::Manifold},
+      {"qT", &S::qT, "manifold: final point x,y,z (as q0; not equal to q0, nor antipodal on the sphere)", nullptr,
        ProblemField::Scope::Manifold},
   };
 }
@@ -176,10 +169,10 @@ void read_field(ProblemSpec& spec, const ProblemField& field, const nlohmann::js
       [&](auto member) {
         auto& target = spec.*member;
         using T = std::decay_t<decltype(target)>;
-        if constexpr (std::is_same_v<T, std::string>) target = json_text(value, where, field.key);
-        else if constexpr (std::is_same_v<T, std::vector<double>>) target = json_numbers(value, where, field.key);
-        else if constexpr (std::is_same_v<T, int>) target = json_integer(value, where, field.key);
-        else target = json_number(value, where, field.key);
+        if constexpr (std::is_same_v<T, std::string>) target = io::json_text(value, where, field.key);
+        else if constexpr (std::is_same_v<T, std::vector<double>>) target = io::json_numbers(value, where, field.key);
+        else if constexpr (std::is_same_v<T, int>) target = io::json_integer(value, where, field.key);
+        else target = io::json_number(value, where, field.key);
       },
       field.member);
 }
@@ -201,33 +194,11 @@ std::vector<double> final_element(const ProblemSpec& spec) {
   return models::element_numbers(groups::SO3::minimal_rotation(Eigen::Vector3d(spec.a0.data()), Eigen::Vector3d(spec.aT.data())));
 }
 
-nlohmann::json result_header(const ProblemSpec& spec, const std::string& status, const std::string& message,
-                             const std::string& method, int order, const std::string& branch) {
-  nlohmann::json out = {{"status", status}, {"message", message}, {"method", method},
-                        {"order", order},   {"branch", branch}};
-  const auto scope = is_manifold_problem(spec) ? ProblemField::Scope::Manifold : ProblemField::Scope::Group;
-  if (!is_manifold_problem(spec)) out["gT"] = final_element(spec);
-  for (const auto& field : problem_fields()) {
-    if (!field.echoed || (field.scope != ProblemField::Scope::Any && field.scope != scope)) continue;
-    std::visit([&](auto member) { out[field.key] = spec.*member; }, field.member);
-  }
-  const auto n = static_cast<std::size_t>(std::lround(std::sqrt(static_cast<double>(spec.inertia.size()))));
-  if (!is_manifold_problem(spec) && n > 1 && n * n == spec.inertia.size()) {  // n x n: as rows (n numbers, the diagonal, stay a list)
-    nlohmann::json rows = nlohmann::json::array();
-    for (std::size_t i = 0; i < n; ++i) {
-      rows.push_back(std::vector<double>(spec.inertia.begin() + static_cast<std::ptrdiff_t>(i * n),
-                                         spec.inertia.begin() + static_cast<std::ptrdiff_t>((i + 1) * n)));
-    }
-    out["inertia"] = rows;
-  }
-  return out;
-}
-
 void apply_json(ProblemSpec& spec, const nlohmann::json& file) {
-  if (!file.is_object()) bad("problem file", describe(file), "must be a JSON object");
+  if (!file.is_object()) bad("problem file", io::describe(file), "must be a JSON object");
   for (const auto& [key, value] : file.items()) {
     const ProblemField* field = find_field(key);
-    if (field == nullptr) bad("key " + quote_input(key), describe(value), "is not a problem-file key");
+    if (field == nullptr) bad("key " + quote_input(key), io::describe(value), "is not a problem-file key");
     read_field(spec, *field, value, kWhere);
     spec.given.push_back(field->key);
   }
@@ -250,7 +221,7 @@ bool given(const ProblemSpec& spec, std::string_view key) {
 
 /// The alpha file's n x n x n finite numbers, in (i, j, k) order.
 std::vector<double> read_alpha(const std::string& path, std::size_t n) {
-  const nlohmann::json file = read_json_file(path, "cartan solve: --alpha");
+  const nlohmann::json file = io::read_json_file(path, "cartan solve: --alpha");
   const std::string shape = std::to_string(n) + " x " + std::to_string(n) + " x " + std::to_string(n);
   std::vector<double> out;
   const auto wrong = [&] { bad("alpha", quote_input(path), "must hold a " + shape + " array of numbers"); };
@@ -258,7 +229,7 @@ std::vector<double> read_alpha(const std::string& path, std::size_t n) {
   for (const auto& plane : file) {
     if (!plane.is_array() || plane.size() != n) wrong();
     for (const auto& row : plane) {
-      const std::vector<double> numbers = json_numbers(row, kWhere, "alpha");
+      const std::vector<double> numbers = io::json_numbers(row, kWhere, "alpha");
       if (numbers.size() != n) wrong();
       for (double x : numbers) {
         if (!std::isfinite(x)) bad("alpha", quote_input(path), "contains a non-finite number");

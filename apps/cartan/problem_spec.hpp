@@ -52,9 +52,9 @@ struct ProblemSpec {
 
 /// One field of a problem: its JSON key (the flag is --key with '_' written '-'), the ProblemSpec
 /// member it fills (its type is the field's kind: text, number, integer or a list of numbers),
-/// its help, whether results echo it (so that `cartan verify` rebuilds the problem), and for
-/// numbers the check of its value. The one list of the problem's fields: parsed from problem
-/// files and flags, checked by validate, echoed by result_header, read back by read_result.
+/// its help, and for numbers the check of its value. The one list of the problem's fields:
+/// parsed from problem files and flags, checked by validate. (What a result file echoes of the
+/// problem is the library's: cartan/api/result_file.hpp.)
 struct ProblemField {
   /// Which problems the field belongs to: every problem, those on a group, or those on a --manifold.
   enum class Scope { Any, Group, Manifold };
@@ -63,7 +63,6 @@ struct ProblemField {
   std::string key;
   Member member;
   std::string help;
-  bool echoed = false;
   /// A number's problem ("must be positive and finite"), or nullptr when the value is fine.
   const char* (*check)(double) = nullptr;
   Scope scope = Scope::Any;
@@ -128,13 +127,6 @@ api::ManifoldProblem manifold_problem(const ProblemSpec& spec);
 /// The final element of a validated spec as its numbers (so3: row-major): gT, or for so3 with
 /// a0/aT the minimal rotation taking a0 to aT.
 std::vector<double> final_element(const ProblemSpec& spec);
-
-/// The part of a `cartan solve` result every method shares: status, message, method, order,
-/// branch, the echoed fields (group, model, inertia, lambda, T, N, g0, tol: what rebuilds the
-/// problem for `cartan verify`) and gT (final_element). An n x n inertia is echoed as rows.
-/// Each method adds its trajectory and diagnostics.
-nlohmann::json result_header(const ProblemSpec& spec, const std::string& status, const std::string& message,
-                             const std::string& method, int order, const std::string& branch);
 
 
 }  // namespace cartan::cli

@@ -32,9 +32,9 @@ cartan::SolveOptions solve_options(const ProblemSpec& spec);
 /// (e.g. a gT that is not a rotation).
 nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor = {});
 
-/// A Result as the JSON of the CLI contract (above): the one writer of result files in C++
-/// (python/cartan/_results.py writes and reads the same keys). An interrupted result has the
-/// header alone (it is never written: exit 130).
+/// A Result as the result file's JSON (the library's writer, cartan/api/result_file.hpp, which
+/// Python's to_json calls too). An interrupted result is its status alone: it is never written
+/// (exit 130), so its trajectory is not formatted.
 nlohmann::json result_json(const ProblemSpec& spec, const api::Result& result);
 
 }  // namespace cartan::cli

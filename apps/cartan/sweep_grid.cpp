@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "cartan/errors.hpp"
-#include "json_io.hpp"
+#include "cartan/api/json_io.hpp"
 
 namespace cartan::cli {
 
@@ -30,7 +30,7 @@ std::vector<double> lambda_range(const std::string& text) {
   const auto number = [&](const std::string& part) {
     std::vector<double> x;
     try {
-      x = parse_list(part, "lambda-range");
+      x = io::parse_list(part, "lambda-range");
     } catch (const std::invalid_argument&) {
       bad("must be START:STOP:COUNT (three numbers)");
     }
@@ -53,13 +53,13 @@ std::vector<double> lambda_range(const std::string& text) {
 /// "x,y,z;x,y,z" -> one list of numbers per ';'-separated item.
 std::vector<std::vector<double>> endpoint_list(const std::string& text, const std::string& name) {
   std::vector<std::vector<double>> out;
-  for (const auto& item : split(text, ';')) out.push_back(parse_list(item, name));
+  for (const auto& item : split(text, ';')) out.push_back(io::parse_list(item, name));
   return out;
 }
 
 /// Applies a --grid file's entries to the base problem.
 std::vector<GridPoint> file_points(const ProblemSpec& base, const std::string& path) {
-  const nlohmann::json file = read_json_file(path, "cartan sweep: --grid");
+  const nlohmann::json file = io::read_json_file(path, "cartan sweep: --grid");
   if (!file.is_array() || file.empty()) {
     throw_invalid(kGridWhere, "--grid", path, "must hold a non-empty JSON array of objects of problem keys");
   }
@@ -89,7 +89,7 @@ std::vector<GridPoint> flag_points(const ProblemSpec& base, const GridFlags& fla
     throw_invalid(kGridWhere, "--aT-list/--gT-list", flags.aT_list + " / " + flags.gT_list, "conflict: give one");
   }
   std::vector<double> lambdas;
-  if (!flags.lambdas.empty()) lambdas = parse_list(flags.lambdas, "lambdas");
+  if (!flags.lambdas.empty()) lambdas = io::parse_list(flags.lambdas, "lambdas");
   if (!flags.lambda_range.empty()) {
     const auto range = lambda_range(flags.lambda_range);
     lambdas.insert(lambdas.end(), range.begin(), range.end());

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "cartan/errors.hpp"
-#include "json_io.hpp"
+#include "cartan/api/json_io.hpp"
 #include "sweep_table.hpp"
 
 namespace cartan::cli {
@@ -111,7 +111,7 @@ std::string merge_json(const std::vector<std::string>& paths, const std::vector<
   std::vector<Located> rows;
   double wall_time_s = 0;
   for (std::size_t f = 0; f < paths.size(); ++f) {
-    nlohmann::json table = parse_json(texts[f], std::string(kMergeWhere) + ": table = " + paths[f]);
+    nlohmann::json table = io::parse_json(texts[f], std::string(kMergeWhere) + ": table = " + paths[f]);
     if (!table.is_object() || !table.contains("rows") || !table.at("rows").is_array() ||
         !table.contains("wall_time_s") || !table.at("wall_time_s").is_number()) {
       throw_invalid(kMergeWhere, "table", paths[f], "is not a JSON table of cartan sweep (an object with rows, wall_time_s)");

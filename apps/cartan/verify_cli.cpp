@@ -8,13 +8,15 @@
 
 #include "cartan/errors.hpp"
 #include "command.hpp"
-#include "json_io.hpp"
-#include "result_reader.hpp"
+#include "cartan/api/json_io.hpp"
+#include "cartan/api/result_file.hpp"
 #include "verify_command.hpp"
 
 namespace cartan::cli {
 
 namespace {
+
+constexpr std::string_view kVerifyWhere = "cartan verify";
 
 struct VerifyFlags {
   std::string file;
@@ -26,7 +28,7 @@ struct VerifyFlags {
 /// `converged` check and a note are the whole report.
 verify::Report verify_failed(const nlohmann::json& j, Status status) {
   try {
-    return verify(read_result(j));
+    return verify(api::read_solution(j, kVerifyWhere));
   } catch (const std::invalid_argument& e) {
     verify::Report report;
     report.checks.push_back(verify::convergence_check(status));
@@ -35,33 +37,37 @@ verify::Report verify_failed(const nlohmann::json& j, Status status) {
   }
 }
 
+/// "so3 free-rigid-body, lambda = 0.5, method shooting (order 1), 101 samples, status converged".
+std::string describe_result(const api::ResultRecord& record) {
+  std::ostringstream out;
+  if (const auto* m = std::get_if<api::ManifoldProblem>(&record.problem)) {
+    out << m->manifold << " particle";
+  } else {
+    const auto& p = std::get<api::GroupProblem>(record.problem);
+    out << p.group << " " << p.model;
+    if (api::lie_kernel(p)) out << ", lambda = " << p.lambda;
+    else out << ", connection " << to_string(p.connection);
+  }
+  const api::Result& r = record.result;
+  out << ", method " << r.method << " (order " << r.order << "), " << r.samples.t.size() << " samples, status " << r.status;
+  return out.str();
+}
+
 int run_verify(const VerifyFlags& flags) {
-  const nlohmann::json j = read_json_file(flags.file, "cartan verify: FILE");
+  const nlohmann::json j = io::read_json_file(flags.file, "cartan verify: FILE");
   const std::string status =
       j.is_object() && j.contains("status") && j["status"].is_string() ? j["status"].get<std::string>() : "";
-  const bool failed = !status.empty() && status != "converged";
-  // An unknown status word is bad input (exit 2).
-  const verify::Report report =
-      failed ? verify_failed(j, parse_enum<Status>(status, "cartan verify")) : verify(read_result(j));
-  if (flags.json) {
-    std::cout << report_json(report).dump() << '\n';
-  } else if (failed) {
-    std::cout << flags.file << ": status " << quote_input(status) << " (not converged)\n" << report.text();
-  } else {
-    const ResultFile result = read_result(j);
-    const ProblemSpec& p = result.problem;
-    std::ostringstream what;
-    if (is_manifold_problem(p)) {
-      what << p.manifold << " " << p.model;
-    } else {
-      what << p.group << " " << p.model;
-      if (is_general_connection(p)) what << ", connection " << p.connection;
-      else what << ", lambda = " << p.lambda;
-    }
-    std::cout << flags.file << ": " << what.str() << ", method " << result.method << " (order " << result.order << "), " << result.t.size()
-              << " samples, status " << result.status << "\n"
-              << report.text();
+  if (!status.empty() && status != "converged") {
+    // An unknown status word is bad input (exit 2).
+    const verify::Report report = verify_failed(j, parse_enum<Status>(status, kVerifyWhere));
+    if (flags.json) std::cout << report_json(report).dump() << '\n';
+    else std::cout << flags.file << ": status " << quote_input(status) << " (not converged)\n" << report.text();
+    return kExitFailed;
   }
+  const api::ResultRecord result = api::read_solution(j, kVerifyWhere);
+  const verify::Report report = verify(result);
+  if (flags.json) std::cout << report_json(report).dump() << '\n';
+  else std::cout << flags.file << ": " << describe_result(result) << "\n" << report.text();
   return report.passed() ? kExitConverged : kExitFailed;
 }
 

@@ -15,13 +15,13 @@ nlohmann::json report_json(const verify::Report& report) {
           {"amplification", report.amplification}, {"checks", list}};
 }
 
-verify::Report verify(const ResultFile& r) {
+verify::Report verify(const api::ResultRecord& r) {
   constexpr std::string_view kVerifyCommandWhere = "cartan verify";
-  const ProblemSpec& p = r.problem;
-  const Status status = parse_enum<Status>(r.status);
-  const api::Samples samples{r.t, r.g, r.v, r.mu, r.general() ? r.Xi : r.xi};
-  if (is_manifold_problem(p)) return api::verify(manifold_problem(p), samples, r.order, p.tol, status, kVerifyCommandWhere);
-  return api::verify(group_problem(p), samples, r.order, p.tol, status, kVerifyCommandWhere);
+  return std::visit(
+      [&](const auto& problem) {
+        return api::verify(problem, r.result.samples, r.result.order, r.tol, r.result.status, kVerifyCommandWhere);
+      },
+      r.problem);
 }
 
 }  // namespace cartan::cli

@@ -957,3 +957,9 @@ class _GeneralRequest(metaclass=type):
 def _solve_general(manifold: Any, request: _GeneralRequest) -> dict: ...
 
 def _verify_general(manifold: Any, request: _GeneralRequest, result: Any) -> dict: ...
+
+def _result_text(fields: dict) -> str:
+    """The result file's text (one line of JSON) of a SolveResult's fields: the library's writer, the CLI's."""
+
+def _read_result(text: str, where: str) -> dict:
+    """The fields of a result file's text: the library's reader, the CLI's (every key checked; ValueError naming it)."""

@@ -1,14 +1,14 @@
-"""Results that travel: what a :class:`cartan.SolveResult` says about itself, the CLI's JSON
+"""Results that travel: what a :class:`cartan.SolveResult` says about itself, the result file
 (``to_json`` and :func:`cartan.load`), the rebuilt model (:func:`cartan.model_of`), dense output
 (``sol``) and a plot (``plot``).
 
-The JSON is exactly what ``cartan solve --output`` writes for a problem on a group
-(apps/cartan/solve_command.cpp, result_json): the keys, the element rows (a matrix row-major, a Heisenberg
-element as (a, b, c)), NaN and infinities as null. What the file lacks (v0, xi0: the first rows;
-residual_history: empty) and what is derived from it (u, P, energy, cumulative_action) is
-rebuilt on loading, by the same library code as after a solve.
+The file is written and read by the library's one writer and reader of result files
+(include/cartan/api/result_file.hpp), the ones ``cartan solve --output`` and ``cartan verify``
+use: the same keys, element rows (a matrix row-major, a Heisenberg element as (a, b, c)), NaN and
+infinities as null. What the file lacks (v0, xi0: the first rows; residual_history: empty) and
+what is derived from it (u, P, energy, cumulative_action) is rebuilt on loading, by the same
+library code as after a solve.
 """
-import json
 import math
 from typing import NamedTuple
 
@@ -55,166 +55,69 @@ def _group_class(group, where):
     raise ValueError(f"{where}: group = {group!r} is not one of: {', '.join(_GROUPS)}")
 
 
-# ---- The CLI's JSON ------------------------------------------------------------------------------
+# ---- The result file ----------------------------------------------------------------------------
 
-def _plain(x):
-    """Lists of Python floats with NaN and infinities as None (JSON lacks them; the CLI writes null)."""
-    if isinstance(x, (list, tuple, np.ndarray)):
-        return [_plain(y) for y in x]
-    if isinstance(x, (float, np.floating)):
-        return float(x) if math.isfinite(x) else None
-    if isinstance(x, np.integer):
-        return int(x)
-    return x
-
-
-def _inertia_json(inertia):
-    """The diagonal when the matrix is diagonal (as the CLI echoes a diagonal), else its rows."""
+def _inertia_numbers(inertia):
+    """The numbers a file records of an (n, n) inertia: its diagonal when the matrix is diagonal
+    (as the CLI echoes a diagonal), else its n^2 entries row-major; none for None."""
     if inertia is None:
-        return []
+        return np.zeros(0)
     inertia = np.asarray(inertia, dtype=float)
-    return np.diag(inertia) if np.array_equal(inertia, np.diag(np.diag(inertia))) else inertia
-
-
-def to_json_dict(r):
-    """The keys `cartan solve --output` writes, from a SolveResult."""
-    rows = len(r.t)
-    out = {
-        "status": r.status, "message": r.message, "method": r.method, "order": r.order, "branch": r.branch,
-        "group": _group_class(r.group, "SolveResult.to_json").name, "model": r.model,
-        "inertia": _inertia_json(r.inertia), "lambda": r.lam, "T": r.T, "N": r.N, "tol": r.tol,
-        "g0": np.ravel(r.g0), "gT": np.ravel(r.gT), "connection": r.connection, "side": r.side,
-        "t": r.t, "g": np.reshape(r.g, (rows, int(np.prod(np.shape(r.g)[1:])))), "v": r.v, "mu": r.mu, "xi": r.xi,
-        "terminal_error": r.terminal_error, "xi_terminal": r.xi_terminal,
-        "iterations": {"outer": r.outer_iterations, "inner": r.inner_iterations, "sweeps": r.sweeps},
-        "action": r.action, "solve_time_s": r.solve_time,
-    }
-    if r.mesh_size is not None:
-        out["mesh_size"], out["max_residual"] = r.mesh_size, r.max_residual
-        if r.group_defect is not None and math.isfinite(r.group_defect):
-            out["group_defect"] = r.group_defect
-    return {key: _plain(value) for key, value in out.items()}
+    return np.diag(inertia) if np.array_equal(inertia, np.diag(np.diag(inertia))) else inertia.ravel()
 
 
 def to_json(r, path):
-    """Writes `r` to `path` as the CLI's JSON (one line, as `cartan solve --output`)."""
-    with open(path, "w", encoding="utf-8") as f:
-        json.dump(to_json_dict(r), f, allow_nan=False)
-        f.write("\n")
-
-
-_MISSING = object()
-
-
-class _Reader:
-    """Typed values of a result file; every error is a ValueError naming the key."""
-
-    def __init__(self, data, path):
-        if not isinstance(data, dict):
-            raise ValueError(f"cartan.load: {path}: result file must be a JSON object, not {type(data).__name__}")
-        self.data, self.path = data, path
-
-    def bad(self, key, value, problem):
-        text = repr(value) if not isinstance(value, (list, dict)) else f"({type(value).__name__} of {len(value)})"
-        raise ValueError(f"cartan.load: {key} = {text} {problem} (in {self.path})")
-
-    def get(self, key):
-        if key not in self.data:
-            raise ValueError(f"cartan.load: {key} = (missing) is required in a result file (in {self.path})")
-        return self.data[key]
-
-    def text(self, key, choices=None):
-        value = self.get(key)
-        if not isinstance(value, str):
-            self.bad(key, value, "must be a string")
-        if choices is not None and value not in choices:
-            self.bad(key, value, "is not one of: " + ", ".join(choices))
-        return value
-
-    def number(self, key, value=_MISSING, integer=False):
-        value = self.get(key) if value is _MISSING else value
-        if value is None and not integer:
-            return math.nan  # the CLI's null: NaN or an infinity
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or (integer and value != int(value)):
-            self.bad(key, value, "must be an integer" if integer else "must be a number")
-        return int(value) if integer else float(value)
-
-    def array(self, key, shape):
-        """An array of `shape` (None: any length) from nested lists of numbers or null (NaN)."""
-        value = self.get(key)
-        if value == [] and shape[0] == 0:  # a failed solve without an iterate: no rows
-            return np.zeros((0, *shape[1:]))
-        try:
-            a = np.array(value, dtype=float)  # None becomes NaN
-        except (TypeError, ValueError):
-            self.bad(key, value, "must be a list of numbers")
-        want = tuple(a.shape[i] if n is None else n for i, n in enumerate(shape)) if a.ndim == len(shape) else shape
-        if a.shape != want:
-            self.bad(key, value, f"must have shape {tuple('M' if n is None else n for n in shape)}, not {a.shape}")
-        return a
-
-
-def _read(data, path):
-    r = _Reader(data, path)
-    if "manifold" in data:
-        r.bad("manifold", data["manifold"], "is a solve_general problem; cartan.load reads cartan.solve's results")
-    connection = r.text("connection", ("cartan-schouten",)) if "connection" in data else "cartan-schouten"
-    if "side" in data:
-        r.text("side", ("left",))
-    group = _GROUPS[r.text("group", tuple(_GROUPS))]
-    models = [m for g, m in BUILTIN_MODELS.values() if g == group.name]
-    model = r.text("model")
-    if model not in models and not model.startswith(PYTHON_MODEL):
-        r.bad("model", model, f"is not one of: {', '.join(models)} (the models of group {group.name}), "
-              f"nor {PYTHON_MODEL}<name> (a Lagrangian defined in Python)")
-    n, shape = group.dim, tuple(group.element_shape)
-    raw = r.get("inertia")
-    inertia = None
-    if raw != []:
-        rows_given = isinstance(raw, list) and any(isinstance(x, list) for x in raw)
-        inertia = r.array("inertia", (n, n)) if rows_given else np.diag(r.array("inertia", (n,)))
-    elif not model.startswith(PYTHON_MODEL):
-        r.bad("inertia", [], f"must have {n} or {n * n} numbers for model {model}")
-    t = r.array("t", (None,))
-    rows = len(t)
-    out = {
-        "status": r.text("status", tuple(_cartan.statuses)), "message": r.text("message"),
-        "method": r.text("method", tuple(group.methods)), "order": r.number("order", integer=True),
-        "branch": r.text("branch"), "group": group.__name__, "model": model, "inertia": inertia,
-        "connection": connection, "side": "left", "lam": r.number("lambda"), "T": r.number("T"),
-        "N": r.number("N", integer=True), "tol": r.number("tol"),
-        "g0": r.array("g0", (int(np.prod(shape)),)).reshape(shape), "gT": r.array("gT", (int(np.prod(shape)),)).reshape(shape),
-        "t": t, "g": r.array("g", (rows, int(np.prod(shape)))).reshape((rows, *shape)),
-        "v": r.array("v", (rows, n)), "mu": r.array("mu", (rows, n)), "xi": r.array("xi", (rows, n)),
-        "terminal_error": r.number("terminal_error"), "xi_terminal": r.number("xi_terminal"),
-        "action": r.number("action"), "solve_time": r.number("solve_time_s"),
-        "residual_history": np.zeros(0),
+    """Writes `r` to `path` with the library's writer of result files (the CLI's: one line)."""
+    rows = len(r.t)
+    fields = {
+        "status": r.status, "message": r.message, "method": r.method, "order": r.order, "branch": r.branch,
+        "group": _group_class(r.group, "SolveResult.to_json").name, "model": r.model,
+        "inertia": _inertia_numbers(r.inertia), "connection": r.connection, "lambda": r.lam, "T": r.T, "N": r.N,
+        "tol": r.tol, "g0": np.ravel(r.g0), "gT": np.ravel(r.gT), "t": r.t,
+        "g": np.reshape(r.g, (rows, int(np.prod(np.shape(r.g)[1:])))), "v": r.v, "mu": r.mu, "xi": r.xi,
+        "terminal_error": r.terminal_error, "xi_terminal": r.xi_terminal, "outer_iterations": r.outer_iterations,
+        "inner_iterations": r.inner_iterations, "sweeps": r.sweeps, "action": r.action, "solve_time": r.solve_time,
+        "mesh_size": r.mesh_size, "max_residual": r.max_residual,
+        "group_defect": math.nan if r.group_defect is None else r.group_defect,
     }
-    out["success"] = out["status"] == "converged"
-    out["v0"] = out["v"][0] if rows else np.zeros(n)
-    out["xi0"] = out["xi"][0] if rows else np.zeros(n)
-    iterations = r.get("iterations")
-    if not isinstance(iterations, dict):
-        r.bad("iterations", iterations, "must be an object with outer, inner and sweeps")
-    for key in ("outer", "inner", "sweeps"):
-        if key not in iterations:
-            r.bad("iterations." + key, "(missing)", "is required in a result file")
-        value = r.number("iterations." + key, iterations[key], integer=True)
-        out[key + "_iterations" if key != "sweeps" else "sweeps"] = value
-    if "mesh_size" in data:
-        out["mesh_size"], out["max_residual"] = r.number("mesh_size", integer=True), r.number("max_residual")
-        out["group_defect"] = r.number("group_defect") if "group_defect" in data else math.nan
-    return out
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(_cartan._result_text(fields))
 
 
 def load_dict(path):
-    """The fields of a SolveResult read from the CLI's JSON at `path` (see :func:`cartan.load`)."""
+    """The fields of a SolveResult read from the result file at `path` (see :func:`cartan.load`)
+    by the library's reader, the one `cartan verify` uses; every error is a ValueError naming the
+    key and the file."""
+    where = "cartan.load"
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
     try:
-        with open(path, encoding="utf-8") as f:
-            data = json.load(f)
-    except json.JSONDecodeError as e:
-        raise ValueError(f"cartan.load: {path} is not valid JSON ({e})") from None
-    return _read(data, path)
+        d = _cartan._read_result(text, where)
+    except ValueError as e:
+        raise ValueError(f"{e} (in {path})") from None
+    if d["kind"] == "manifold":
+        raise ValueError(f"{where}: manifold = {d['manifold']!r} is a solve_general problem; cartan.load reads "
+                         f"cartan.solve's results (in {path})")
+    if not d["lie_kernel"]:
+        raise ValueError(f"{where}: connection = {d['connection']!r} is solved by the general solver; cartan.load "
+                         f"reads cartan.solve's results (a Cartan-Schouten connection) (in {path})")
+    group = _GROUPS[d["group"]]
+    n, shape = group.dim, tuple(group.element_shape)
+    inertia = np.asarray(d["inertia"], dtype=float)
+    rows = len(d["t"])
+    out = {key: d[key] for key in ("status", "success", "message", "method", "order", "branch", "model", "connection",
+                                   "T", "N", "tol", "t", "v", "mu", "terminal_error", "xi_terminal", "outer_iterations",
+                                   "inner_iterations", "sweeps", "action", "solve_time", "residual_history")}
+    out.update({
+        "group": group.__name__, "side": "left", "lam": d["lambda"],
+        "inertia": None if inertia.size == 0 else np.diag(inertia) if inertia.size == n else inertia.reshape(n, n),
+        "g0": np.reshape(d["g0"], shape), "gT": np.reshape(d["gT"], shape),
+        "g": d["points"].reshape((rows, *shape)), "xi": d["aux"],
+        "v0": d["v"][0] if rows else np.zeros(n), "xi0": d["aux"][0] if rows else np.zeros(n),
+    })
+    if d["mesh_size"] is not None:
+        out["mesh_size"], out["max_residual"], out["group_defect"] = d["mesh_size"], d["max_residual"], d["group_defect"]
+    return out
 
 
 # ---- Dense output --------------------------------------------------------------------------------

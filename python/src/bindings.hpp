@@ -12,4 +12,5 @@ void bind_bvp(pybind11::module_& m);  ///< solve_bvp and its dense output
 void bind_manifolds(pybind11::module_& m);  ///< manifolds with a connection (Sphere, ..., Chart)
 void bind_group_manifold(pybind11::module_& m);  ///< GroupManifold (any left-invariant connection)
 void bind_general(pybind11::module_& m);  ///< solve_general and verify_general on those manifolds
+void bind_results(pybind11::module_& m);  ///< the result file's writer and reader (the library's)
 }  // namespace cartan::python

@@ -176,4 +176,5 @@ PYBIND11_MODULE(_cartan, m) {
   cartan::python::bind_manifolds(m);
   cartan::python::bind_group_manifold(m);
   cartan::python::bind_general(m);
+  cartan::python::bind_results(m);
 }

@@ -9,6 +9,7 @@ import dataclasses
 import json
 import math
 import os
+import re
 import subprocess
 from pathlib import Path
 
@@ -222,17 +223,32 @@ def _bad(key, change):
     _bad("inertia", lambda d: d.update(inertia=[1, 2])),
     _bad("lambda", lambda d: d.update({"lambda": "half"})),
     _bad("N", lambda d: d.update(N=1.5)),
-    _bad("connection", lambda d: d.update(connection="levi-civita")),
+    _bad("connection", lambda d: d.update(connection="flat")),
     _bad("side", lambda d: d.update(side="right")),
     _bad("iterations.sweeps", lambda d: d["iterations"].pop("sweeps")),
-    _bad("manifold", lambda d: d.update(manifold="sphere")),
 ])
 def test_bad_files_raise_value_error_naming_the_key(tmp_path, change, key):
     path = cli_solve(tmp_path, "so3/free-rigid-body", N=10)
     data = json.loads(path.read_text())
     change(data)
     path.write_text(json.dumps(data))
-    with pytest.raises(ValueError, match=f"cartan.load: {key} = "):
+    # The key, or its first bad row and entry (v[0]: the reader names the row).
+    with pytest.raises(ValueError, match=rf"cartan.load: {re.escape(key)}(\[\d+\])* = .*\(in {re.escape(str(path))}\)"):
+        cartan.load(path)
+
+
+@pytest.mark.parametrize("extra,key", [
+    (["--manifold", "sphere", "--q0", "1,0,0", "--qT", "0,1,0"], "manifold"),
+    (["--connection", "levi-civita", "--a0", "1,0,0", "--aT", "0,1,0"], "connection"),
+])
+def test_results_of_the_general_solver_are_refused_naming_why(tmp_path, extra, key):
+    """The library reads them (the same reader as `cartan verify`); a SolveResult holds the
+    Lie-group kernel's fields (xi, P, the action), so cartan.load names what it cannot hold."""
+    path = tmp_path / "general.json"
+    out = run_cli("solve", *extra, "--T", "1", "--N", "20", "--output", str(path))
+    assert out.returncode == 0, out.stderr
+    assert run_cli("verify", str(path)).returncode == 0
+    with pytest.raises(ValueError, match=f"cartan.load: {key} = .*solve_general|cartan.load: {key} = .*general solver"):
         cartan.load(path)
 
 

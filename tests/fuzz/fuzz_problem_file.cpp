@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "json_io.hpp"
+#include "cartan/api/json_io.hpp"
 #include "cartan/models/catalogue.hpp"
 #include "problem_spec.hpp"
 #include "solve_command.hpp"
@@ -65,7 +65,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
     cartan::cli::ProblemSpec spec;
-    cartan::cli::apply_json(spec, cartan::cli::parse_json(text, "cartan solve: --problem"));
+    cartan::cli::apply_json(spec, cartan::io::parse_json(text, "cartan solve: --problem"));
     cartan::cli::validate(spec);
     check_accepted(spec);
   } catch (const std::invalid_argument&) {

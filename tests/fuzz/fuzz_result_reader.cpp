@@ -1,5 +1,5 @@
 // libFuzzer target: the bytes of a `cartan verify FILE` result file through the command's own
-// path, parse_json -> read_result -> verify (the checks) -> the report's text and JSON. Expected
+// path, parse_json -> api::read_solution -> verify (the checks) -> the report's text and JSON. Expected
 // rejections are std::invalid_argument; any other exception escapes and is reported by libFuzzer
 // as a crash, as are sanitizer findings, leaks, timeouts and huge allocations. A report must hold
 // one entry per check with finite, non-negative thresholds (oracle for silent nonsense).
@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "json_io.hpp"
-#include "result_reader.hpp"
+#include "cartan/api/json_io.hpp"
+#include "cartan/api/result_file.hpp"
 #include "verify_command.hpp"
 
 namespace {
@@ -28,8 +28,13 @@ void require(bool condition, const char* what) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    const cartan::cli::ResultFile result = cartan::cli::read_result(cartan::cli::parse_json(text, "cartan verify: FILE"));
-    require(result.t.size() >= 2 && result.g.rows() == result.t.size(), "validated sizes");
+    const cartan::api::ResultRecord result = cartan::api::read_solution(cartan::io::parse_json(text, "cartan verify: FILE"), "cartan verify");
+    const cartan::api::Samples& x = result.result.samples;
+    require(x.t.size() >= 2 && x.points.rows() == x.t.size() && x.aux.rows() == x.t.size(), "validated sizes");
+    // What the library writes of it, it reads back as the same record.
+    const std::string written = cartan::api::result_text(result);
+    require(cartan::api::result_text(cartan::api::read_result_text(written, "fuzz")) == written,
+            "the writer and the reader agree");
     const cartan::verify::Report report = cartan::cli::verify(result);
     require(!report.checks.empty(), "a report has checks");
     for (const auto& check : report.checks) {

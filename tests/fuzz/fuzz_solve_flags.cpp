@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "command.hpp"
-#include "json_io.hpp"
+#include "cartan/api/json_io.hpp"
 #include "problem_spec.hpp"
 
 namespace {
@@ -52,7 +52,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   parse_command_line(args);
   for (const auto& word : args) {
     try {
-      (void)cartan::cli::parse_list(word, "inertia");
+      (void)cartan::io::parse_list(word, "inertia");
     } catch (const std::invalid_argument&) {
       // expected rejection
     }

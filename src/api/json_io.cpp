@@ -1,4 +1,4 @@
-#include "json_io.hpp"
+#include "cartan/api/json_io.hpp"
 
 #include <cmath>
 
@@ -11,7 +11,7 @@
 
 #include "cartan/errors.hpp"
 
-namespace cartan::cli {
+namespace cartan::io {
 
 namespace {
 
@@ -54,9 +54,6 @@ nlohmann::json read_json_file(const std::string& path, const std::string& what) 
   return parse_json(text.str(), what + " = " + path);
 }
 
-}  // namespace cartan::cli
-
-namespace cartan::cli {
 
 std::string describe(const nlohmann::json& value) {
   if (value.is_number()) return format_value(value.get<double>());
@@ -141,4 +138,4 @@ const nlohmann::json& require_key(const nlohmann::json& j, const std::string& ke
   return *it;
 }
 
-}  // namespace cartan::cli
+}  // namespace cartan::io

@@ -1,6 +1,7 @@
 #pragma once
-// The CLI's one JSON helper kit: reading and writing its JSON files with errors that name the
-// file and the flag, reading typed values out of a document, and describing values in messages.
+// The library's one JSON helper kit (layer "api"), used by the result files (result_file.hpp) and
+// the CLI's problem files: reading JSON text and files with errors that name the file and the
+// flag, reading typed values out of a document, and describing values in messages.
 // Messages never dump input: a string is quoted, escaped and cut (quote_input, at most 60
 // characters), a container is described by its kind and size, a list of numbers is cut to about
 // 60 characters (excerpt).
@@ -10,11 +11,11 @@
 #include <string_view>
 #include <vector>
 
-namespace cartan::cli {
+namespace cartan::io {
 
 /// Parses `text` as JSON. Throws std::invalid_argument starting with `what` when it is not valid
 /// JSON, holds a number beyond the range of double (e.g. 1e400), or repeats a key in an object
-/// (which of two values was meant is ambiguous). The only parser of the CLI's input files.
+/// (which of two values was meant is ambiguous). The only parser of the CLI's input files and of result files.
 nlohmann::json parse_json(const std::string& text, const std::string& what);
 
 /// Parses the JSON file at `path` (parse_json). Throws std::invalid_argument starting with `what` (e.g.
@@ -46,4 +47,4 @@ std::vector<double> json_numbers(const nlohmann::json& value, std::string_view w
 const nlohmann::json& require_key(const nlohmann::json& j, const std::string& key, std::string_view where,
                                   std::string_view what);
 
-}  // namespace cartan::cli
+}  // namespace cartan::io
