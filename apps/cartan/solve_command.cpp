@@ -12,16 +12,16 @@ constexpr std::string_view kSolveCommandWhere = "cartan solve";
 }  // namespace
 
 cartan::SolveOptions solve_options(const ProblemSpec& spec) {
-  cartan::SolveOptions options;
-  options.method = parse_enum<cartan::Method>(spec.method, "cartan solve");
-  options.continuation = parse_enum<cartan::Continuation>(spec.continuation, "cartan solve");
-  options.order = spec.order == 2 ? cartan::SchemeOrder::Second : cartan::SchemeOrder::First;
-  options.tol = spec.tol;
-  options.max_iterations = spec.max_iterations;
-  if (spec.time_limit > 0) options.time_limit = spec.time_limit;
-  if (spec.segments > 0) options.segments = spec.segments;
-  options.samples = spec.samples;
-  return options;
+  cartan::OptionWords words;
+  words.method = spec.method;
+  words.continuation = spec.continuation;
+  words.order = spec.order;
+  words.tol = spec.tol;
+  words.max_iterations = spec.max_iterations;
+  if (spec.segments > 0) words.segments = spec.segments;  // 0: the default
+  words.samples = spec.samples;
+  if (spec.time_limit > 0) words.time_limit = spec.time_limit;  // 0: no limit
+  return cartan::solve_options(words, kSolveCommandWhere);
 }
 
 SO3Endpoints so3_endpoints(const ProblemSpec& spec) {

@@ -67,18 +67,9 @@ struct SolveRequest {
   std::optional<double> time_limit;
 
   cartan::SolveOptions options() const {
-    cartan::SolveOptions o;
-    o.method = parse_enum<cartan::Method>(method, "cartan.solve");
-    o.continuation = parse_enum<cartan::Continuation>(continuation, "cartan.solve");
-    o.order = scheme_order(order, "cartan.solve");
-    o.tol = tol;
-    o.max_iterations = max_iterations;
-    o.segments = segments;
-    o.lambda_start = lambda_start;
-    o.samples = samples.value_or(0);
-    o.max_nodes = max_nodes;
-    o.time_limit = time_limit;
-    return o;
+    return solve_options(OptionWords{method, continuation, order, tol, max_iterations, segments, lambda_start,
+                                     samples.value_or(0), max_nodes, time_limit},
+                         "cartan.solve");
   }
 };
 

@@ -461,17 +461,18 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
                   point_arg(manifold, r.q0, where, "q0"), point_arg(manifold, r.qT, where, "qT"), std::nullopt};
   if (!r.frame0.is_none()) problem.frame0 = to_eigen<FrameOf<M>>(r.frame0, where, "frame0");
 
-  cartan::SolveOptions options;
-  options.method = parse_enum<cartan::Method>(r.method, where);
-  options.continuation = parse_enum<cartan::Continuation>(r.continuation, where);
-  options.order = scheme_order(r.order, where);
-  options.tol = r.tol;
-  options.max_iterations = r.max_iterations;
-  options.samples = r.samples;
-  if (!r.max_nodes.is_none()) options.max_nodes = number_arg<int>(r.max_nodes, where, "max_nodes");
-  if (!r.time_limit.is_none()) options.time_limit = number_arg<double>(r.time_limit, where, "time_limit");
-  if (!r.segments.is_none()) options.segments = number_arg<int>(r.segments, where, "segments");
-  if (!r.lambda_start.is_none()) options.lambda_start = number_arg<double>(r.lambda_start, where, "lambda_start");
+  OptionWords words;
+  words.method = r.method;
+  words.continuation = r.continuation;
+  words.order = r.order;
+  words.tol = r.tol;
+  words.max_iterations = r.max_iterations;
+  words.samples = r.samples;
+  if (!r.max_nodes.is_none()) words.max_nodes = number_arg<int>(r.max_nodes, where, "max_nodes");
+  if (!r.time_limit.is_none()) words.time_limit = number_arg<double>(r.time_limit, where, "time_limit");
+  if (!r.segments.is_none()) words.segments = number_arg<int>(r.segments, where, "segments");
+  if (!r.lambda_start.is_none()) words.lambda_start = number_arg<double>(r.lambda_start, where, "lambda_start");
+  cartan::SolveOptions options = solve_options(words, where);
   options.monitor = python_monitor(r.progress).stage("general shooting");  // copied here, with the GIL
   general::GeneralGuess<M> guess;
   if (!r.v0.is_none()) guess.v0 = finite_arg<ComponentsOf<M>>(r.v0, where, "v0");

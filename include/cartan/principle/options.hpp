@@ -163,6 +163,28 @@ struct SolveOptions {
   }
 };
 
+/// The options as the CLI's flags and Python's keywords give them: the method and the
+/// continuation by their words, the order as a number, the defaults the library's. solve_options
+/// translates them, once for every caller (`cartan solve`, cartan.solve, cartan.solve_general).
+struct OptionWords {
+  std::string method = "auto";        ///< a Method word
+  std::string continuation = "none";  ///< a Continuation word
+  int order = 1;
+  double tol = kDefaultTol;
+  int max_iterations = kDefaultMaxIterations;
+  std::optional<int> segments;
+  std::optional<double> lambda_start;
+  int samples = 0;
+  std::optional<int> max_nodes;
+  std::optional<double> time_limit;
+};
+
+/// The SolveOptions of `words` (without a monitor). Throws std::invalid_argument "<where>:
+/// <name> = <value> is not one of: ..." for an unknown word and "<where>: order = <k> must be 1
+/// or 2" for another order; the options' other checks are SolveOptions::validate's, which every
+/// solve runs.
+SolveOptions solve_options(const OptionWords& words, std::string_view where);
+
 /// The options of one call from `start`: time_limit becomes the monitor's deadline.
 inline SolveOptions with_deadline(const SolveOptions& options, std::chrono::steady_clock::time_point start) {
   SolveOptions timed = options;
