@@ -423,6 +423,18 @@ def _solve_on_manifold(manifold, arguments):
 
 
 
+#: The solve's options (the library's OptionWords, principle/options.hpp).
+_OPTIONS = ("method", "continuation", "order", "tol", "max_iterations", "segments", "lambda_start", "samples",
+            "max_nodes", "time_limit")
+
+
+def _set_options(request, arguments):
+    """The options given (not None) on a request; the library's defaults stand for the others."""
+    for name in _OPTIONS:
+        if arguments[name] is not None:
+            setattr(request, name, arguments[name])
+
+
 def _transported(entry, arguments):
     """`<Group>.<entry>` ("_solve", or "_validate": every input error of _solve, no solve) on the
     keyword arguments of :func:`solve` given as a dict."""
@@ -439,9 +451,7 @@ def _transported(entry, arguments):
                          "the transported-velocity problem needs a left-reduced Lagrangian")
     grp = _group_of(lagrangian, arguments["group"], "solve")
     request = _cartan._SolveRequest()
-    for name in ("method", "continuation", "order", "tol", "max_iterations", "segments", "lambda_start", "samples",
-                 "max_nodes", "time_limit"):
-        setattr(request, name, arguments[name])
+    _set_options(request, arguments)
     a = arguments
     return getattr(grp, entry)(lagrangian, a["lam"], a["T"], a["N"], a["g0"], a["gT"], request, a["v0"], a["xi0"],
                                a["guess"], a["progress"])
@@ -568,10 +578,10 @@ def solve_general(manifold, *, T, N, q0, qT, inertia=None, potential=None, poten
     request.T, request.N, request.q0, request.qT = T, N, q0, qT
     request.inertia, request.potential, request.potential_gradient = inertia, potential, potential_gradient
     request.gravity, request.lagrangian, request.frame0 = gravity, lagrangian, frame0
-    request.method, request.continuation, request.order, request.tol = method, continuation, order, tol
-    request.max_iterations, request.v0, request.Xi0, request.progress = max_iterations, v0, Xi0, progress
-    request.guess, request.samples, request.max_nodes, request.time_limit = guess, samples, max_nodes, time_limit
-    request.segments, request.lambda_start = segments, lambda_start
+    request.v0, request.Xi0, request.progress, request.guess = v0, Xi0, progress, guess
+    _set_options(request, dict(method=method, continuation=continuation, order=order, tol=tol,
+                               max_iterations=max_iterations, samples=samples, max_nodes=max_nodes,
+                               time_limit=time_limit, segments=segments, lambda_start=lambda_start))
     return GeneralSolveResult(**_cartan._solve_general(manifold, request), space=manifold)
 
 

@@ -15,7 +15,7 @@ class _SolveRequest(metaclass=type):
     max_iterations: int
     segments: Optional[int]
     lambda_start: Optional[float]
-    samples: Optional[int]
+    samples: int
     max_nodes: Optional[int]
     time_limit: Optional[float]
 
@@ -929,6 +929,16 @@ class GroupManifold(metaclass=type):
 
 class _GeneralRequest(metaclass=type):
     def __init__(self) -> None: ...
+    method: str
+    continuation: str
+    order: int
+    tol: float
+    max_iterations: int
+    segments: Optional[int]
+    lambda_start: Optional[float]
+    samples: int
+    max_nodes: Optional[int]
+    time_limit: Optional[float]
     T: float
     N: int
     q0: Any
@@ -939,20 +949,10 @@ class _GeneralRequest(metaclass=type):
     gravity: Any
     lagrangian: Any
     frame0: Any
-    method: str
-    continuation: str
-    order: int
-    tol: float
-    max_iterations: int
     v0: Any
     Xi0: Any
     progress: Any
-    samples: int
-    max_nodes: Any
-    time_limit: Any
     guess: Any
-    segments: Any
-    lambda_start: Any
 
 def _solve_general(manifold: Any, request: _GeneralRequest) -> dict: ...
 

@@ -10,6 +10,7 @@
 // solver returns (python_models.hpp).
 
 #include "general_binding.hpp"
+#include "option_words.hpp"
 
 namespace cartan::python {
 
@@ -39,7 +40,8 @@ py::dict visit_manifold(const py::handle& object, F&& f) {
 }  // namespace
 
 void bind_general(py::module_& m) {
-  py::class_<GeneralRequest>(m, "_GeneralRequest")
+  py::class_<GeneralRequest> request_class(m, "_GeneralRequest");
+  def_option_words(request_class)
       .def(py::init<>())
       .def_readwrite("T", &GeneralRequest::T)
       .def_readwrite("N", &GeneralRequest::N)
@@ -51,20 +53,10 @@ void bind_general(py::module_& m) {
       .def_readwrite("gravity", &GeneralRequest::gravity)
       .def_readwrite("lagrangian", &GeneralRequest::lagrangian)
       .def_readwrite("frame0", &GeneralRequest::frame0)
-      .def_readwrite("method", &GeneralRequest::method)
-      .def_readwrite("continuation", &GeneralRequest::continuation)
-      .def_readwrite("order", &GeneralRequest::order)
-      .def_readwrite("tol", &GeneralRequest::tol)
-      .def_readwrite("max_iterations", &GeneralRequest::max_iterations)
       .def_readwrite("v0", &GeneralRequest::v0)
       .def_readwrite("Xi0", &GeneralRequest::Xi0)
       .def_readwrite("progress", &GeneralRequest::progress)
-      .def_readwrite("samples", &GeneralRequest::samples)
-      .def_readwrite("max_nodes", &GeneralRequest::max_nodes)
-      .def_readwrite("time_limit", &GeneralRequest::time_limit)
-      .def_readwrite("guess", &GeneralRequest::guess)
-      .def_readwrite("segments", &GeneralRequest::segments)
-      .def_readwrite("lambda_start", &GeneralRequest::lambda_start);
+      .def_readwrite("guess", &GeneralRequest::guess);
   m.def("_solve_general", [](const py::object& manifold, const GeneralRequest& request) {
     return visit_manifold(manifold, [&](const auto& mf, ChartCallbacks* chart) { return solve_on(mf, request, chart); });
   }, py::arg("manifold"), py::arg("request"));

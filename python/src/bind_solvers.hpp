@@ -53,25 +53,9 @@ struct SolvedAs<L> {
 template <class L>
 using SolvedAsT = typename SolvedAs<std::decay_t<L>>::type;
 
-/// The options as Python gives them; `options()` translates them for the library.
-struct SolveRequest {
-  std::string method = "auto";
-  std::string continuation = "none";
-  int order = 1;
-  double tol = cartan::kDefaultTol;
-  int max_iterations = cartan::kDefaultMaxIterations;
-  std::optional<int> segments;
-  std::optional<double> lambda_start;
-  std::optional<int> samples;
-  std::optional<int> max_nodes;
-  std::optional<double> time_limit;
-
-  cartan::SolveOptions options() const {
-    return solve_options(OptionWords{method, continuation, order, tol, max_iterations, segments, lambda_start,
-                                     samples.value_or(0), max_nodes, time_limit},
-                         "cartan.solve");
-  }
-};
+/// cartan.solve's options: the library's words (principle/options.hpp), whose defaults stand
+/// for every keyword Python leaves at None.
+using SolveRequest = OptionWords;
 
 /// A trajectory from any object with t, g, v, xi (and mu when `with_mu`) as attributes or keys,
 /// e.g. a SolveResult: a guess for `solve` (mu is then not needed) or the data of `verify`.
@@ -164,7 +148,7 @@ struct SolveCall {
 
   SolveCall(const Args<G>& a, const py::object& g0_, const py::object& gT_, const SolveRequest& request,
             const py::object& v0, const py::object& xi0, const py::object& start, const py::object& progress)
-      : options(request.options()),
+      : options(solve_options(request, "cartan.solve")),
         g0(g0_.is_none() ? G::identity() : a.element(g0_, "solve", "g0")),
         gT(a.element(gT_, "solve", "gT")) {
     options.monitor = python_monitor(progress);

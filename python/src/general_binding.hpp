@@ -314,19 +314,15 @@ class PythonManifoldLagrangian : public PythonModel {
 // ---- solve_general ----------------------------------------------------------------------------
 
 /// The arguments of cartan.solve_general as Python gives them.
-struct GeneralRequest {
+/// cartan.solve_general's problem and guesses; its options are the library's words
+/// (principle/options.hpp), whose defaults stand for every keyword Python leaves at None.
+struct GeneralRequest : OptionWords {
   double T = 1;
   int N = 100;
   py::object q0 = py::none(), qT = py::none(), inertia = py::none(), potential = py::none(),
              potential_gradient = py::none(), gravity = py::none(), lagrangian = py::none(), frame0 = py::none();
-  std::string method = "auto", continuation = "none";
-  int order = 1;
-  double tol = cartan::kDefaultTol;
-  int max_iterations = cartan::kDefaultMaxIterations;
   py::object v0 = py::none(), Xi0 = py::none(), progress = py::none();
-  int samples = 0;
-  py::object max_nodes = py::none(), guess = py::none(), time_limit = py::none();
-  py::object segments = py::none(), lambda_start = py::none();  ///< the Lie-group kernel's methods
+  py::object guess = py::none();
 };
 
 inline constexpr const char* kWhere = "cartan.solve_general";
@@ -461,18 +457,7 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
                   point_arg(manifold, r.q0, where, "q0"), point_arg(manifold, r.qT, where, "qT"), std::nullopt};
   if (!r.frame0.is_none()) problem.frame0 = to_eigen<FrameOf<M>>(r.frame0, where, "frame0");
 
-  OptionWords words;
-  words.method = r.method;
-  words.continuation = r.continuation;
-  words.order = r.order;
-  words.tol = r.tol;
-  words.max_iterations = r.max_iterations;
-  words.samples = r.samples;
-  if (!r.max_nodes.is_none()) words.max_nodes = number_arg<int>(r.max_nodes, where, "max_nodes");
-  if (!r.time_limit.is_none()) words.time_limit = number_arg<double>(r.time_limit, where, "time_limit");
-  if (!r.segments.is_none()) words.segments = number_arg<int>(r.segments, where, "segments");
-  if (!r.lambda_start.is_none()) words.lambda_start = number_arg<double>(r.lambda_start, where, "lambda_start");
-  cartan::SolveOptions options = solve_options(words, where);
+  cartan::SolveOptions options = solve_options(r, where);
   options.monitor = python_monitor(r.progress).stage("general shooting");  // copied here, with the GIL
   general::GeneralGuess<M> guess;
   if (!r.v0.is_none()) guess.v0 = finite_arg<ComponentsOf<M>>(r.v0, where, "v0");

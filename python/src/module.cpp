@@ -10,6 +10,7 @@
 #include "bind_all.hpp"
 #include "cartan/models/catalogue.hpp"
 #include "bindings.hpp"
+#include "option_words.hpp"
 
 namespace cartan::python {
 
@@ -129,18 +130,8 @@ SolveMonitor python_monitor(const py::object& progress) {
 PYBIND11_MODULE(_cartan, m) {
   m.doc() = "cartan: geometric mechanics on Lie groups with invariant connections (compiled core).";
   m.attr("__version__") = CARTAN_VERSION;
-  pybind11::class_<cartan::python::SolveRequest>(m, "_SolveRequest")
-      .def(pybind11::init<>())
-      .def_readwrite("method", &cartan::python::SolveRequest::method)
-      .def_readwrite("continuation", &cartan::python::SolveRequest::continuation)
-      .def_readwrite("order", &cartan::python::SolveRequest::order)
-      .def_readwrite("tol", &cartan::python::SolveRequest::tol)
-      .def_readwrite("max_iterations", &cartan::python::SolveRequest::max_iterations)
-      .def_readwrite("segments", &cartan::python::SolveRequest::segments)
-      .def_readwrite("lambda_start", &cartan::python::SolveRequest::lambda_start)
-      .def_readwrite("samples", &cartan::python::SolveRequest::samples)
-      .def_readwrite("max_nodes", &cartan::python::SolveRequest::max_nodes)
-      .def_readwrite("time_limit", &cartan::python::SolveRequest::time_limit);
+  pybind11::class_<cartan::OptionWords> request_class(m, "_SolveRequest");
+  cartan::python::def_option_words(request_class).def(pybind11::init<>());
   m.attr("statuses") = cartan::enum_words<cartan::Status>();
   // The library's defaults (transported/method.hpp), which cartan.solve and solve_general take.
   m.attr("defaults") = pybind11::dict(pybind11::arg("tol") = cartan::kDefaultTol,
