@@ -13,25 +13,26 @@
 #include <vector>
 
 #include "cartan/general/problem.hpp"
+#include "cartan/principle/action.hpp"
 
 namespace cartan::general {
 
+/// S_h of the path through q_0..q_N at the uniform times k T / N (the manifold's piece of
+/// principle/action.hpp's rule).
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 double discrete_action(const GeneralProblem<M, L>& problem, const std::vector<manifolds::PointOf<M>>& q) {
-  const double h = problem.T / static_cast<double>(q.size() - 1);
   const M& m = problem.manifold;
   manifolds::FrameOf<M> frame = problem.initial_frame();
   double action = 0;
-  for (std::size_t k = 0; k + 1 < q.size(); ++k) {
+  for_each_action_term(uniform_times("discrete_action", problem.T, q.size() - 1), [&](std::size_t k, double t_mid, double h) {
     const manifolds::VectorOf<M> d = m.difference(q[k], q[k + 1]);
     const manifolds::VectorOf<M> half = d / 2;
     const manifolds::PointOf<M> mid = m.step(q[k], half);
     const manifolds::FrameOf<M> frame_mid = m.transport_along_step(q[k], half) * frame;
     const manifolds::VectorOf<M> velocity = -m.difference(mid, q[k]) / (h / 2);
-    const manifolds::ComponentsOf<M> v = manifolds::dual_frame<M>(frame_mid) * velocity;
-    action += h * problem.lagrangian.value((static_cast<double>(k) + 0.5) * h, mid, v);
     frame = m.transport_along_step(q[k], d) * frame;
-  }
+    return problem.lagrangian.value(t_mid, mid, manifolds::ComponentsOf<M>(manifolds::dual_frame<M>(frame_mid) * velocity));
+  }, [&](double term) { action += term; });
   return action;
 }
 
@@ -40,13 +41,11 @@ double discrete_action(const GeneralProblem<M, L>& problem, const std::vector<ma
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 double discrete_action_derivative(const GeneralProblem<M, L>& problem, const std::vector<manifolds::PointOf<M>>& q,
                                   const std::vector<manifolds::VectorOf<M>>& w) {
-  const double e = 1e-6;
-  auto varied = [&](double eps) {
+  return action_derivative([&](double eps) {
     std::vector<manifolds::PointOf<M>> p = q;
     for (std::size_t k = 1; k + 1 < p.size(); ++k) p[k] = problem.manifold.step(q[k], manifolds::VectorOf<M>(eps * w[k]));
     return discrete_action(problem, p);
-  };
-  return (varied(e) - varied(-e)) / (2 * e);
+  }, 1e-6);
 }
 
 }  // namespace cartan::general

@@ -15,6 +15,7 @@
 
 #include "cartan/errors.hpp"
 #include "cartan/mechanics/lagrangian.hpp"
+#include "cartan/principle/action.hpp"
 #include "cartan/transport/disc_exp.hpp"
 
 namespace cartan::transported {
@@ -36,23 +37,13 @@ void check_action_path(std::string_view where, double lambda, const std::vector<
   }
 }
 
-/// The uniform times k T / steps, k = 0..steps; throws std::invalid_argument (naming `where`)
-/// unless T is positive and finite.
-inline std::vector<double> uniform_times(std::string_view where, double T, std::size_t steps) {
-  require_finite(T, where, "T");
-  if (!(T > 0)) throw_invalid(where, "T", format_value(T), "must be positive");
-  std::vector<double> t(steps + 1);
-  for (std::size_t k = 0; k <= steps; ++k) t[k] = T * static_cast<double>(k) / static_cast<double>(steps);
-  return t;
-}
-
-/// Calls add(h l_k) for each step k of S_h in turn (the midpoint terms above).
+/// Calls add(h l_k) for each step k of S_h in turn (the midpoint terms above: the Lie group's piece
+/// of principle/action.hpp's rule).
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L, class Add>
 void for_each_action_term(const L& lagrangian, double lambda, const std::vector<double>& t,
                           const std::vector<groups::ElementOf<G>>& g, Add add) {
   groups::ElementOf<G> transport = G::identity();  // h_k with P_k = Ad(h_k)
-  for (std::size_t k = 0; k + 1 < g.size(); ++k) {
-    const double h = t[k + 1] - t[k];
+  cartan::for_each_action_term(t, [&](std::size_t k, double t_mid, double h) {
     const groups::TangentOf<G> u = groups::log_between<G>(g[k], g[k + 1]) / h;
     const groups::ElementOf<G> g_mid = G::compose(g[k], G::exp(groups::TangentOf<G>(h / 2 * u)));
     // (disc-exp) over each half step: exp(-lambda h u) = exp(-lambda (h/2) u)^2 (a one-parameter
@@ -60,9 +51,9 @@ void for_each_action_term(const L& lagrangian, double lambda, const std::vector<
     const groups::ElementOf<G> half_step = transport::disc_exp_update<G>(lambda, h / 2, u, G::identity());
     const groups::ElementOf<G> transport_mid = G::compose(half_step, transport);
     const groups::TangentOf<G> v_mid = G::Ad(G::inverse(transport_mid)) * u;
-    add(h * lagrangian.value(t[k] + h / 2, g_mid, v_mid));
     transport = G::compose(half_step, transport_mid);
-  }
+    return lagrangian.value(t_mid, g_mid, v_mid);
+  }, add);
 }
 
 }  // namespace detail
@@ -98,7 +89,7 @@ double transported_action(const L& lagrangian, double lambda, double T, const st
   if (g.size() < 2) {
     throw_invalid("transported_action", "g.size()", std::to_string(g.size()), "must be at least 2 (one step)");
   }
-  return transported_action<G>(lagrangian, lambda, detail::uniform_times("transported_action", T, g.size() - 1), g);
+  return transported_action<G>(lagrangian, lambda, uniform_times("transported_action", T, g.size() - 1), g);
 }
 
 /// d/de S_h(g_k exp(e w_k)) by central differences with step `epsilon` (w_0 = w_N = 0 expected).
@@ -112,12 +103,11 @@ double transported_action_derivative(const L& lagrangian, double lambda, double 
   }
   require_finite(epsilon, "transported_action_derivative", "epsilon");
   if (!(epsilon > 0)) throw_invalid("transported_action_derivative", "epsilon", format_value(epsilon), "must be positive");
-  auto varied = [&](double e) {
+  return action_derivative([&](double e) {
     std::vector<groups::ElementOf<G>> out(g.size());
     for (std::size_t k = 0; k < g.size(); ++k) out[k] = G::compose(g[k], G::exp(groups::TangentOf<G>(e * w[k])));
     return transported_action<G>(lagrangian, lambda, T, out);
-  };
-  return (varied(epsilon) - varied(-epsilon)) / (2 * epsilon);
+  }, epsilon);
 }
 
 }  // namespace cartan::transported

@@ -181,7 +181,7 @@ ActionGradient<G> transported_action_gradient(const L& lagrangian, double lambda
     throw_invalid("transported_action_gradient", "g.size()", std::to_string(g.size()), "must be at least 2 (one step)");
   }
   return transported_action_gradient<G>(lagrangian, lambda,
-                                        detail::uniform_times("transported_action_gradient", T, g.size() - 1), g);
+                                        uniform_times("transported_action_gradient", T, g.size() - 1), g);
 }
 
 struct VariationalOptions {
@@ -218,7 +218,7 @@ std::vector<groups::ElementOf<G>> geodesic_path(const TransportedProblem<G, L>& 
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 std::vector<groups::ElementOf<G>> path_at_nodes(const TransportedProblem<G, L>& problem,
                                                 const TransportedTrajectory<G>& trajectory) {
-  const std::vector<double> times = detail::uniform_times("path_at_nodes", problem.T, static_cast<std::size_t>(problem.N));
+  const std::vector<double> times = uniform_times("path_at_nodes", problem.T, static_cast<std::size_t>(problem.N));
   std::vector<groups::ElementOf<G>> g(times.size());
   std::size_t i = 0;  // trajectory interval [t_i, t_{i+1}] of the node
   for (std::size_t k = 0; k < times.size(); ++k) {
@@ -387,7 +387,7 @@ TransportedSolution<G> solve_variational(const TransportedProblem<G, L>& problem
   Eigen::VectorXd gradient;
   newton.evaluate(g, steps, gradient);
   TransportedTrajectory<G>& tr = solution.trajectory;
-  tr.t = detail::uniform_times("solve_variational", problem.T, static_cast<std::size_t>(problem.N));
+  tr.t = uniform_times("solve_variational", problem.T, static_cast<std::size_t>(problem.N));
   tr.g = g;
   VariationalReport<G> report;
   solution.action = 0;

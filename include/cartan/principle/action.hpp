@@ -1,0 +1,48 @@
+#pragma once
+// The discrete transported action's midpoint rule, written once for every kernel
+// (docs/paper-notes.md#independent-checks, docs/general-connections.md#verification): on the path
+// made of the kernel's pieces through the nodes x_0..x_N at the times t_k,
+//   S_h = sum_k h_k l(t_k + h_k/2, x_k+1/2, v_k+1/2),   h_k = t_k+1 - t_k,
+// where the kernel's piece of step k gives its midpoint x_k+1/2, the transported velocity there
+// and the transport carried over the step (transported/action.hpp: the half-step exponential on a
+// Lie group; general/action.hpp: the manifold's step and transport_along_step). Its derivatives
+// along endpoint-fixed variations vanish as h -> 0 at solutions, at the scheme's order.
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cartan/errors.hpp"
+
+namespace cartan {
+
+/// Calls add(h_k l_k) for each step k of the path through the times t, in order:
+/// `midpoint_value(k, t_k + h_k / 2, h_k)` is l at step k's midpoint (it advances the kernel's
+/// transport over the step).
+template <class MidpointValue, class Add>
+void for_each_action_term(const std::vector<double>& t, MidpointValue&& midpoint_value, Add&& add) {
+  for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+    const double h = t[k + 1] - t[k];
+    add(h * midpoint_value(k, t[k] + h / 2, h));
+  }
+}
+
+/// The uniform times k T / steps, k = 0..steps; throws std::invalid_argument (naming `where`)
+/// unless T is positive and finite.
+inline std::vector<double> uniform_times(std::string_view where, double T, std::size_t steps) {
+  require_finite(T, where, "T");
+  if (!(T > 0)) throw_invalid(where, "T", format_value(T), "must be positive");
+  std::vector<double> t(steps + 1);
+  for (std::size_t k = 0; k <= steps; ++k) t[k] = T * static_cast<double>(k) / static_cast<double>(steps);
+  return t;
+}
+
+/// The derivative of an action along a variation, d/de S(e) at e = 0, by the central difference
+/// (S(e) - S(-e)) / (2 e): truncation ~ e^2 |S'''|, rounding ~ 1e-16 |S| / e.
+template <class ActionAlong>
+double action_derivative(ActionAlong&& action_along, double e) {
+  return (action_along(e) - action_along(-e)) / (2 * e);
+}
+
+}  // namespace cartan
