@@ -12,6 +12,7 @@
 #include "cartan/enum_names.hpp"
 #include "cartan/errors.hpp"
 #include "cartan/models/catalogue.hpp"
+#include "cartan/principle/horizon.hpp"
 #include "cartan/scheme_order.hpp"
 
 namespace cartan::api {
@@ -133,13 +134,10 @@ class Reader {
   int integer(const json& value, const std::string& name) const { return io::json_integer(value, where_, name); }
   int integer(const std::string& name) const { return integer(key(name), name); }
 
-  /// A finite number, which `check` (when given) accepts.
-  double number(const std::string& name, const char* (*check)(double) = nullptr) const {
+  /// A finite number.
+  double number(const std::string& name) const {
     const double x = io::json_number(key(name), where_, name);
     if (!std::isfinite(x)) bad(name, format_value(x), "is not finite");
-    if (check != nullptr) {
-      if (const char* problem = check(x)) bad(name, format_value(x), problem);
-    }
     return x;
   }
 
@@ -192,8 +190,6 @@ class Reader {
   const json& j_;
   std::string_view where_;
 };
-
-const char* positive(double x) { return x > 0 ? nullptr : "must be positive"; }
 
 GroupProblem read_group_problem(const Reader& in) {
   GroupProblem p;
@@ -278,12 +274,13 @@ ResultRecord read(const json& j, std::string_view where) {
   }
   std::visit(
       [&](auto& p) {
-        p.T = in.number("T", positive);
+        p.T = in.number("T");
         p.N = in.integer("N");
-        if (p.N < 1) in.bad("N", std::to_string(p.N), "must be at least 1");
+        require_horizon(p.T, p.N, where);
       },
       r.problem);
-  r.tol = in.number("tol", positive);
+  r.tol = in.number("tol");
+  require_tolerance(r.tol, where);
   const auto* group = std::get_if<GroupProblem>(&r.problem);
   x.lie_kernel = group != nullptr && lie_kernel(*group);
   const Widths w = widths(r, where);

@@ -207,7 +207,10 @@ TEST(VerifyReport, InvalidTrajectoriesAreRejected) {
   longer.T = 3.0;
   testing::expect_invalid([&] { (void)verify::verify_trajectory(longer, x, 1, 1e-10); }, "must run from 0 to T");
   testing::expect_invalid([&] { (void)verify::verify_trajectory(problem, x, 0, 1e-10); }, "order");
-  testing::expect_invalid([&] { (void)verify::verify_trajectory(problem, x, 1, -1.0); }, "tol");
+  // The orders and tolerances both kernels' verifications accept (scheme_order.hpp, principle/horizon.hpp).
+  testing::expect_invalid([&] { (void)verify::verify_trajectory(problem, x, 3, 1e-10); },
+                          "verify: order = 3 must be 1 or 2 (the schemes) or 4 (collocation)");
+  testing::expect_invalid([&] { (void)verify::verify_trajectory(problem, x, 1, -1.0); }, "verify: tol = -1 must be positive and finite");
 }
 
 // The report assembled from a kernel's figures (verify/assemble.hpp): thresholds C a^q rho^p +

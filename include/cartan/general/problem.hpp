@@ -16,6 +16,7 @@
 #include "cartan/general/lagrangian.hpp"
 #include "cartan/manifolds/geometry.hpp"
 #include "cartan/numerics/spectrum.hpp"
+#include "cartan/principle/horizon.hpp"
 #include "cartan/principle/scales.hpp"
 
 namespace cartan::general {
@@ -37,9 +38,7 @@ struct GeneralProblem {
   /// Throws std::invalid_argument naming the first bad value: T, N, q0, qT, or a frame0 that is
   /// not finite, not tangent at q0 or not a basis.
   void validate() const {
-    require_finite(T, "GeneralProblem", "T");
-    if (!(T > 0)) throw_invalid("GeneralProblem", "T", format_value(T), "must be positive");
-    if (N < 1) throw_invalid("GeneralProblem", "N", std::to_string(N), "must be at least 1");
+    require_horizon(T, N, "GeneralProblem");
     manifold.validate(q0, "q0");
     manifold.validate(qT, "qT");
     if (!frame0) return;

@@ -182,7 +182,7 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
   problem.validate();
   constexpr std::string_view where = "verify_general";
   require_result_order(order, where);
-  if (!(tol > 0) || !std::isfinite(tol)) throw_invalid(where, "tol", format_value(tol), "must be positive and finite");
+  require_tolerance(tol, where);
   const std::size_t n = x.t.size();
   if (n < 3 || x.q.size() != n || x.v.size() != n || x.mu.size() != n || x.Xi.size() != n) {
     std::string times = "(";  // appended, not "(" + ...: GCC 12 warns falsely on inserting a prefix (-Wrestrict)

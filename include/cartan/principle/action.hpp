@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-#include "cartan/errors.hpp"
+#include "cartan/principle/horizon.hpp"
 
 namespace cartan {
 
@@ -31,8 +31,7 @@ void for_each_action_term(const std::vector<double>& t, MidpointValue&& midpoint
 /// The uniform times k T / steps, k = 0..steps; throws std::invalid_argument (naming `where`)
 /// unless T is positive and finite.
 inline std::vector<double> uniform_times(std::string_view where, double T, std::size_t steps) {
-  require_finite(T, where, "T");
-  if (!(T > 0)) throw_invalid(where, "T", format_value(T), "must be positive");
+  require_horizon(T, 1, where);  // T alone: the steps are the caller's
   std::vector<double> t(steps + 1);
   for (std::size_t k = 0; k <= steps; ++k) t[k] = T * static_cast<double>(k) / static_cast<double>(steps);
   return t;

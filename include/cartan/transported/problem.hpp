@@ -11,6 +11,7 @@
 #include "cartan/errors.hpp"
 #include "cartan/groups/group.hpp"
 #include "cartan/mechanics/lagrangian.hpp"
+#include "cartan/principle/horizon.hpp"
 #include "cartan/principle/scales.hpp"
 
 namespace cartan::transported {
@@ -29,9 +30,7 @@ struct TransportedProblem {
   /// Throws std::invalid_argument naming the first bad value.
   void validate() const {
     require_finite(lambda, "TransportedProblem", "lambda");
-    require_finite(T, "TransportedProblem", "T");
-    if (!(T > 0)) throw_invalid("TransportedProblem", "T", format_value(T), "must be positive");
-    if (N < 1) throw_invalid("TransportedProblem", "N", std::to_string(N), "must be at least 1");
+    require_horizon(T, N, "TransportedProblem");
     G::validate(g0, "g0");
     G::validate(gT, "gT");
   }

@@ -12,6 +12,8 @@
 #include <utility>
 
 #include "cartan/errors.hpp"
+#include "cartan/principle/horizon.hpp"
+#include "cartan/scheme_order.hpp"
 #include "cartan/transported/compiled.hpp"
 #include "cartan/transported/solution.hpp"
 #include "cartan/verify/assemble.hpp"
@@ -28,8 +30,8 @@ namespace cartan::verify {
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 Report verify_trajectory(const transported::TransportedProblem<G, L>& problem, transported::TransportedTrajectory<G> x, int order, double tol,
                          Status status) {
-  if (order < 1) throw_invalid("verify", "order", std::to_string(order), "must be at least 1");
-  if (!(tol > 0) || !std::isfinite(tol)) throw_invalid("verify", "tol", format_value(tol), "must be positive and finite");
+  require_result_order(order, "verify");
+  require_tolerance(tol, "verify");
   x.validate(problem.T, "verify", true, 1e-9);
   const TrajectoryChecks<G, L> checks(problem.lagrangian, problem.lambda, problem.T, std::move(x));
   Figures f;
