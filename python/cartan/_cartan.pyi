@@ -961,5 +961,5 @@ def _verify_general(manifold: Any, request: _GeneralRequest, result: Any) -> dic
 def _result_text(fields: dict) -> str:
     """The result file's text (one line of JSON) of a SolveResult's fields: the library's writer, the CLI's."""
 
-def _read_result(text: str, where: str) -> dict:
-    """The fields of a result file's text: the library's reader, the CLI's (every key checked; ValueError naming it)."""
+def _read_result(text: str, where: str, lie_kernel_only: bool) -> dict:
+    """The fields of a result file's text: the library's reader, the CLI's (every key checked; ValueError naming it). lie_kernel_only: refuse a manifold's or another connection's result first, naming that key."""

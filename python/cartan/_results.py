@@ -92,15 +92,9 @@ def load_dict(path):
     with open(path, encoding="utf-8") as f:
         text = f.read()
     try:
-        d = _cartan._read_result(text, where)
+        d = _cartan._read_result(text, where, lie_kernel_only=True)
     except ValueError as e:
         raise ValueError(f"{e} (in {path})") from None
-    if d["kind"] == "manifold":
-        raise ValueError(f"{where}: manifold = {d['manifold']!r} is a solve_general problem; cartan.load reads "
-                         f"cartan.solve's results (in {path})")
-    if not d["lie_kernel"]:
-        raise ValueError(f"{where}: connection = {d['connection']!r} is solved by the general solver; cartan.load "
-                         f"reads cartan.solve's results (a Cartan-Schouten connection) (in {path})")
     group = _GROUPS[d["group"]]
     n, shape = group.dim, tuple(group.element_shape)
     inertia = np.asarray(d["inertia"], dtype=float)

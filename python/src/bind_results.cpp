@@ -6,6 +6,9 @@
 #include <string>
 
 #include "bindings.hpp"
+#include <nlohmann/json.hpp>
+
+#include "cartan/api/json_io.hpp"
 #include "cartan/api/result_file.hpp"
 #include "cartan/enum_names.hpp"
 #include "convert.hpp"
@@ -121,10 +124,23 @@ py::dict fields_of(const api::ResultRecord& record) {
 void bind_results(py::module_& m) {
   m.def("_result_text", [](const py::dict& fields) { return api::result_text(record_of(fields)); }, py::arg("fields"),
         "The result file's text (one line of JSON) of a SolveResult's fields: the library's writer, the CLI's.");
-  m.def("_read_result", [](const std::string& text, const std::string& where) {
-    return fields_of(api::read_result_text(text, where));
-  }, py::arg("text"), py::arg("where"),
-        "The fields of a result file's text: the library's reader, the CLI's (every key checked; ValueError naming it).");
+  m.def("_read_result", [](const std::string& text, const std::string& where, bool lie_kernel_only) {
+    const nlohmann::json j = io::parse_json(text, where);
+    if (lie_kernel_only && j.is_object()) {  // a SolveResult holds the Lie-group kernel's fields (xi, P, the action)
+      if (j.contains("manifold")) {
+        throw_invalid(where, "manifold", io::describe(j["manifold"]),
+                      "is a solve_general problem; cartan.load reads cartan.solve's results on a group");
+      }
+      const std::string cartan_schouten(to_string(connections::ConnectionKind::CartanSchouten));
+      if (j.contains("connection") && j["connection"] != cartan_schouten) {
+        throw_invalid(where, "connection", io::describe(j["connection"]),
+                      "is not one of: " + cartan_schouten + " (the general solver's results are not SolveResults)");
+      }
+    }
+    return fields_of(api::read_result(j, where));
+  }, py::arg("text"), py::arg("where"), py::arg("lie_kernel_only"),
+        "The fields of a result file's text: the library's reader, the CLI's (every key checked; ValueError naming "
+        "it). lie_kernel_only: refuse a manifold's or another connection's result first, naming that key.");
 }
 
 }  // namespace cartan::python

@@ -157,8 +157,13 @@ class Reader {
     }
     return x;
   }
+  /// A flat list of exactly `size` finite numbers.
   std::vector<double> numbers(const std::string& name, std::size_t size) const {
-    return numbers(key(name), name, {size}, std::to_string(size) + " numbers");
+    const json& value = key(name);
+    if (!value.is_array() || value.size() != size) {
+      bad(name, io::describe(value), "must be a list of " + std::to_string(size) + " numbers");
+    }
+    return numbers(value, name);
   }
 
   /// `rows` rows of `width` numbers (null: NaN) as a rows x width matrix.
@@ -191,7 +196,19 @@ class Reader {
   std::string_view where_;
 };
 
-GroupProblem read_group_problem(const Reader& in) {
+/// T, N and tol: the horizon and the tolerance of every problem (principle/horizon.hpp).
+template <class Problem>
+void read_horizon(const Reader& in, Problem& p, double& tol) {
+  p.T = in.number("T");
+  p.N = in.integer("N");
+  require_horizon(p.T, p.N, in.where());
+  tol = in.number("tol");
+  require_tolerance(tol, in.where());
+}
+
+/// A group problem's fields, in the order `cartan verify` has always named them: the names, the
+/// numbers, the connection, the boundary elements, then the inertia's size.
+GroupProblem read_group_problem(const Reader& in, double& tol) {
   GroupProblem p;
   p.group = in.text("group");
   p.model = in.text("model");
@@ -199,13 +216,8 @@ GroupProblem read_group_problem(const Reader& in) {
   const models::ModelInfo& info = group_info(p, in.where());
   const auto n = static_cast<std::size_t>(info.dim);
   const json& inertia = in.key("inertia");
-  if (!(python_model && inertia.is_array() && inertia.empty())) {  // a Python model may have none
-    p.inertia = in.numbers(inertia, "inertia", {n, n * n},
-                           std::to_string(n) + " numbers (the diagonal) or " + std::to_string(n * n) + " (the matrix)");
-  }
   p.lambda = in.number("lambda");
-  p.g0 = in.numbers("g0", info.element_size);
-  p.gT = in.numbers("gT", info.element_size);
+  read_horizon(in, p, tol);
   const json& j = in.document();
   if (j.contains("connection")) p.connection = in.word<connections::ConnectionKind>("connection");
   if (j.contains("side") && in.text("side") != "left") {
@@ -226,10 +238,16 @@ GroupProblem read_group_problem(const Reader& in) {
       }
     }
   }
+  p.g0 = in.numbers("g0", info.element_size);
+  p.gT = in.numbers("gT", info.element_size);
+  if (!(python_model && inertia.is_array() && inertia.empty())) {  // a Python model may have none
+    p.inertia = in.numbers(inertia, "inertia", {n, n * n},
+                           std::to_string(n) + " numbers (the diagonal) or " + std::to_string(n * n) + " (the matrix)");
+  }
   return p;
 }
 
-ManifoldProblem read_manifold_problem(const Reader& in) {
+ManifoldProblem read_manifold_problem(const Reader& in, double& tol) {
   ManifoldProblem p;
   p.manifold = in.text("manifold");
   if (const std::string model = in.text("model"); model != kManifoldModel) {
@@ -239,6 +257,7 @@ ManifoldProblem read_manifold_problem(const Reader& in) {
   p.gravity = in.number("gravity");
   p.q0 = in.numbers(in.key("q0"), "q0");
   p.qT = in.numbers(in.key("qT"), "qT");
+  read_horizon(in, p, tol);
   return p;
 }
 
@@ -262,25 +281,22 @@ ResultRecord read(const json& j, std::string_view where) {
   ResultRecord r;
   Result& x = r.result;
   x.status = in.word<Status>("status");
-  if (j.contains("message")) x.message = in.text("message");
-  x.method = in.word<cartan::Method>("method");
-  x.order = in.integer("order");
-  if (!is_result_order(x.order)) in.bad("order", std::to_string(x.order), kResultOrderRule);
-  if (j.contains("branch")) x.branch = in.text("branch");
+  const auto read_words = [&] {
+    if (j.contains("message")) x.message = in.text("message");
+    x.method = in.word<cartan::Method>("method");
+    x.order = in.integer("order");
+    if (!is_result_order(x.order)) in.bad("order", std::to_string(x.order), kResultOrderRule);
+    if (j.contains("branch")) x.branch = in.text("branch");
+  };
+  // The order in which the keys are checked, so that the first bad one is named: a manifold's
+  // words first, a group's problem first (as `cartan verify` always did).
   if (j.contains("manifold")) {
-    r.problem = read_manifold_problem(in);
+    read_words();
+    r.problem = read_manifold_problem(in, r.tol);
   } else {
-    r.problem = read_group_problem(in);
+    r.problem = read_group_problem(in, r.tol);
+    read_words();
   }
-  std::visit(
-      [&](auto& p) {
-        p.T = in.number("T");
-        p.N = in.integer("N");
-        require_horizon(p.T, p.N, where);
-      },
-      r.problem);
-  r.tol = in.number("tol");
-  require_tolerance(r.tol, where);
   const auto* group = std::get_if<GroupProblem>(&r.problem);
   x.lie_kernel = group != nullptr && lie_kernel(*group);
   const Widths w = widths(r, where);

@@ -221,7 +221,7 @@ def test_hostile_result_files(tmp_path):
         (lambda d: d.__setitem__("inertia", [1, 1, -0.5]), "inertia = 1,1,-0.5 is not positive definite"),
         (lambda d: d["g"].__setitem__(3, [1, 0, 0, 0, 1, 0, 0, 0, 2]), "g[3] = "),
         (lambda d: d.__setitem__("model", HUGE), 'model = "xxxx'),
-        (lambda d: d.__setitem__("group", "se3"), "inertia = 1,1,0.5 must have 6 numbers"),  # se2's read as se3's
+        (lambda d: d.__setitem__("group", "se3"), "must be a list of 16 numbers"),  # se2's g0 read as se3's
     ]:
         data = json.loads(path.read_text())
         change(data)

@@ -201,7 +201,7 @@ def test_a_failed_default_solve_is_not_converged_not_bad_input(tmp_path):
 @pytest.mark.parametrize("content,needle", [
     ("{", "not valid JSON"),
     ("[1, 2]", "result file"),
-    ('{"status": "converged"}', "method = (missing)"),
+    ('{"status": "converged"}', "group = (missing)"),
 ])
 def test_bad_files_exit_2(tmp_path, content, needle):
     path = tmp_path / "bad.json"
