@@ -76,6 +76,9 @@ void write_problem(json& out, const GroupProblem& p) {
       out["metric"] = json_list(p.metric);
       break;
     case connections::ConnectionKind::Coefficients: {
+      if (p.alpha.size() != n * n * n) {
+        throw_invalid("cartan::api::result_json", "alpha", excerpt(p.alpha), "must have n^3 = " + std::to_string(n * n * n) + " numbers");
+      }
       json alpha = json::array();  // alpha[i][j][k]
       for (std::size_t i = 0; i < n; ++i) {
         alpha.push_back(json_rows(std::vector<double>(p.alpha.begin() + static_cast<std::ptrdiff_t>(i * n * n),
@@ -302,7 +305,7 @@ ResultRecord read(const json& j, std::string_view where) {
   const Widths w = widths(r, where);
 
   const json& t = in.key("t");
-  if (!t.is_array()) in.bad("t", io::describe(t), "must be a list of times");
+  if (!t.is_array() || (!t.empty() && t[0].is_array())) in.bad("t", io::describe(t), "must be a list of times");
   const std::vector<double> times = t.empty() ? std::vector<double>{} : io::json_numbers(t, where, "t");
   x.samples.t = Eigen::Map<const Eigen::VectorXd>(times.data(), static_cast<Eigen::Index>(times.size()));
   const std::size_t rows = times.size();

@@ -107,6 +107,7 @@ const BadCase kBadCases[] = {
     {"t not from 0", [] { return with("t", {0.5, 1.0, 2.0}); }, "t[0] = 0.5 must be 0"},
     {"t not to T", [] { return with("t", {0.0, 1.0, 1.5}); }, "t[2] = 1.5 must equal T = 2"},
     {"t with a string", [] { return with("t", {0.0, "1", 2.0}); }, "t[1] = \"1\" must be a number"},
+    {"t as rows", [] { return with("t", {{0.0, 1.0}, {2.0, 3.0}}); }, "t = (an array of 2 entries) must be a list of times"},
     {"g too few rows", [] { json j = valid_result(); j["g"].erase(0); return j; }, "g = (an array of 2 entries) must have 3 rows"},
     {"g row not a rotation", [] { json j = valid_result(); j["g"][1][8] = 2; return j; }, "g[1] ="},
     {"g row short", [] { json j = valid_result(); j["g"][2] = {1, 0, 0}; return j; }, "g[2] = (an array of 3 entries)"},
@@ -228,6 +229,12 @@ TEST(ResultFile, GeneralRecordsTravel) {
   EXPECT_EQ(written["inertia"].size(), 3u);  // n x n: as rows
   const ResultRecord back = read_result(written);
   EXPECT_FALSE(back.result.lie_kernel);
+  ResultRecord coefficients = r;  // a record built by hand: its alpha is checked, not read out of bounds
+  std::get<GroupProblem>(coefficients.problem).connection = connections::ConnectionKind::Coefficients;
+  std::get<GroupProblem>(coefficients.problem).alpha = {1, 2};
+  expect_invalid([&] { (void)result_json(coefficients); }, "alpha = 1,2 must have n^3 = 27 numbers");
+  std::get<GroupProblem>(coefficients.problem).alpha.assign(27, 0.5);
+  EXPECT_EQ(read_result(result_json(coefficients)).result.samples.aux, r.result.samples.aux);
   EXPECT_EQ(std::get<GroupProblem>(back.problem).metric, p.metric);
   EXPECT_EQ(back.result.samples.aux, r.result.samples.aux);
 
