@@ -9,7 +9,7 @@
 #include "cartan/enum_names.hpp"
 #include "cartan/errors.hpp"
 #include "cartan/groups/so3.hpp"
-#include "cartan/transported/method.hpp"
+#include "cartan/principle/vocabulary.hpp"
 #include "cartan/api/json_io.hpp"
 #include "cartan/models/catalogue.hpp"
 

@@ -12,7 +12,7 @@
 
 #include "cartan/api/solve.hpp"
 #include "cartan/connections/connection_kind.hpp"
-#include "cartan/transported/method.hpp"
+#include "cartan/principle/vocabulary.hpp"
 
 namespace cartan::cli {
 
@@ -30,7 +30,7 @@ struct ProblemSpec {
   std::vector<double> g0;               ///< the element's numbers (models/catalogue.hpp); default the identity
   std::vector<double> gT;
   std::vector<double> a0, aT;           ///< so3 only: gT = minimal rotation taking a0 to aT
-  std::string method = "auto";          ///< a Method word (transported/method.hpp): auto | shooting | multiple-shooting | two-level | collocation | variational
+  std::string method = "auto";          ///< a Method word (principle/vocabulary.hpp): auto | shooting | multiple-shooting | two-level | collocation | variational
   int order = 1;
   double tol = cartan::kDefaultTol;
   int samples = 0;                      ///< collocation: output at this many uniform times (0: the final mesh)

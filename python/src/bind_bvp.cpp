@@ -16,7 +16,7 @@
 #include "bindings.hpp"
 #include "cartan/numerics/collocation.hpp"
 #include "cartan/numerics/scipy_refinement.hpp"
-#include "cartan/transported/solve_options.hpp"  // timed
+#include "cartan/principle/options.hpp"  // timed
 #include "python_models.hpp"
 
 namespace cartan::python {

@@ -133,7 +133,7 @@ PYBIND11_MODULE(_cartan, m) {
   pybind11::class_<cartan::OptionWords> request_class(m, "_SolveRequest");
   cartan::python::def_option_words(request_class).def(pybind11::init<>());
   m.attr("statuses") = cartan::enum_words<cartan::Status>();
-  // The library's defaults (transported/method.hpp), which cartan.solve and solve_general take.
+  // The library's defaults (principle/vocabulary.hpp), which cartan.solve and solve_general take.
   m.attr("defaults") = pybind11::dict(pybind11::arg("tol") = cartan::kDefaultTol,
                                       pybind11::arg("max_iterations") = cartan::kDefaultMaxIterations);
   // The library's catalogue of built-in models (models/catalogue.hpp): what result files and the
