@@ -7,7 +7,10 @@ layers above it, never a sibling's solver.
 * general/ (the general kernel) includes the Lie-group kernel (transported/) only where it hands
   a problem to it: lie_kernel.hpp (the kernel's adapter) and solve.hpp (its compiled solve);
 * verify/ runs a kernel's arithmetic on given samples and includes no driver;
-* api/ declares in the vocabulary's words, with no solver of either kernel.
+* api/ declares in the vocabulary's words, with no solver of either kernel;
+* the edges (apps/, python/src/) include of a kernel only what the library compiles for them: its
+  compiled solves' declarations (compiled.hpp) and its dense output (dense.hpp), and never a
+  driver (solvers/).
 """
 import re
 from pathlib import Path
@@ -64,6 +67,23 @@ def test_verify_checks_results_without_a_solver():
 
 def test_the_api_declares_without_a_solver():
     assert crossings("api", {"transported", "general", "solvers"}) == []
+
+
+def edge_includes():
+    """Each `file -> include` of the CLI and of the Python module's sources."""
+    for folder in ("apps", "python/src"):
+        for source in sorted((ROOT / folder).rglob("*.[ch]pp")):
+            for target in includes(source):
+                yield f"{source.relative_to(ROOT)} -> {target}", target
+
+
+def test_the_edges_include_no_solver():
+    kernels_compiled = {f"{kernel}/{name}" for kernel in ("transported", "general") for name in ("compiled.hpp", "dense.hpp")}
+    found = [line for line, target in edge_includes()
+             if target.startswith("solvers/")
+             or (target.split("/")[0] in ("transported", "general") and target not in kernels_compiled)]
+    assert found == []
+    assert any(target == "api/solve.hpp" for _, target in edge_includes())  # the check sees the edges' includes
 
 
 def test_the_check_sees_a_crossing(tmp_path, monkeypatch):
