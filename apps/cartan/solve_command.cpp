@@ -1,6 +1,7 @@
 #include "solve_command.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "cartan/api/result_file.hpp"
 #include "cartan/models/catalogue.hpp"
@@ -39,13 +40,13 @@ nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor) {
                                                      : api::solve(group_problem(spec), options, guess, kSolveCommandWhere));
 }
 
-nlohmann::json result_json(const ProblemSpec& spec, const api::Result& r) {
+nlohmann::json result_json(const ProblemSpec& spec, api::Result r) {
   if (r.status == Status::Interrupted) return {{"status", to_string(r.status)}};  // never written (exit 130)
   api::ResultRecord record;
   if (is_manifold_problem(spec)) record.problem = manifold_problem(spec);
   else record.problem = group_problem(spec);
   record.tol = spec.tol;
-  record.result = r;
+  record.result = std::move(r);  // the solve's own samples, not a copy
   return api::result_json(record);
 }
 

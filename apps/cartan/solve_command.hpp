@@ -35,6 +35,6 @@ nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor = {});
 /// A Result as the result file's JSON (the library's writer, cartan/api/result_file.hpp, which
 /// Python's to_json calls too). An interrupted result is its status alone: it is never written
 /// (exit 130), so its trajectory is not formatted.
-nlohmann::json result_json(const ProblemSpec& spec, const api::Result& result);
+nlohmann::json result_json(const ProblemSpec& spec, api::Result result);
 
 }  // namespace cartan::cli

@@ -29,21 +29,6 @@ using numerics::VectorRef;
 
 constexpr std::string_view kWhere = "cartan.solve_bvp";
 
-/// A dynamic matrix from a 1-D (as one column) or 2-D array, or throws naming `name`.
-Eigen::MatrixXd dynamic_matrix(const py::handle& obj, std::string_view name, py::ssize_t ndim) {
-  const Array a = as_array(obj, kWhere, name);
-  if (a.ndim() != ndim) {
-    throw_invalid(kWhere, name, "array of shape " + shape_text(a), "must be " + std::to_string(ndim) + "-D");
-  }
-  const Eigen::Index rows = a.shape(0), cols = ndim == 2 ? a.shape(1) : 1;
-  Eigen::MatrixXd out(rows, cols);
-  const double* data = a.data();
-  for (Eigen::Index i = 0; i < rows; ++i) {
-    for (Eigen::Index j = 0; j < cols; ++j) out(i, j) = data[i * cols + j];
-  }
-  return out;
-}
-
 /// Copies a callback's returned array into out ((rows,) for a vector, (rows, cols) for a matrix),
 /// also accepting SciPy's trailing axis of length 1 ((rows, 1), (rows, cols, 1)).
 template <class Out>
@@ -252,9 +237,9 @@ void bind_bvp(py::module_& m) {
                          const py::object& p, const py::object& fun_jac, const py::object& bc_jac, double tol,
                          int max_nodes, std::optional<double> bc_tol, int max_newton_iterations, int max_refinements,
                          double fd_step, const std::string& linear_solver) {
-    const Eigen::VectorXd mesh = dynamic_matrix(x, "x", 1);
-    const Eigen::MatrixXd guess = dynamic_matrix(y, "y", 2);
-    const Eigen::VectorXd parameters = p.is_none() ? Eigen::VectorXd(0) : Eigen::VectorXd(dynamic_matrix(p, "p", 1));
+    const Eigen::VectorXd mesh = dynamic_matrix(x, kWhere, "x", 1);
+    const Eigen::MatrixXd guess = dynamic_matrix(y, kWhere, "y", 2);
+    const Eigen::VectorXd parameters = p.is_none() ? Eigen::VectorXd(0) : Eigen::VectorXd(dynamic_matrix(p, kWhere, "p", 1));
     if (bc_tol && !(*bc_tol > 0)) throw_invalid(kWhere, "bc_tol", format_value(*bc_tol), "must be positive");
     const numerics::CollocationOptions options{.tol = tol, .bc_tol = bc_tol.value_or(0), .max_nodes = max_nodes,
                                           .max_newton_iterations = max_newton_iterations,
@@ -281,8 +266,8 @@ void bind_bvp(py::module_& m) {
   m.def("_scipy_refinement", [](const py::object& x, const py::object& y, const py::object& yp, const py::object& rms,
                                 double tol) {
     const numerics::RefinedMesh r = numerics::scipy_refinement(
-        numerics::CubicHermite(dynamic_matrix(x, "x", 1), dynamic_matrix(y, "y", 2), dynamic_matrix(yp, "yp", 2)),
-        dynamic_matrix(rms, "rms", 1), tol);
+        numerics::CubicHermite(dynamic_matrix(x, kWhere, "x", 1), dynamic_matrix(y, kWhere, "y", 2), dynamic_matrix(yp, kWhere, "yp", 2)),
+        dynamic_matrix(rms, kWhere, "rms", 1), tol);
     return py::make_tuple(to_numpy(r.t), to_numpy(r.y), r.added);
   }, py::arg("x"), py::arg("y"), py::arg("yp"), py::arg("rms"), py::arg("tol"));
 }

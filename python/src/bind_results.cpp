@@ -20,16 +20,8 @@ namespace {
 
 constexpr std::string_view kWriteWhere = "SolveResult.to_json";
 
-/// A 2-D array (rows, width), or (0, width) for no rows, as a matrix.
-Eigen::MatrixXd to_matrix(const py::handle& obj, std::string_view name) {
-  const Array a = as_array(obj, kWriteWhere, name);
-  if (a.ndim() != 2) throw_invalid(kWriteWhere, name, "array of shape " + shape_text(a), "must be 2-dimensional (one row per time)");
-  Eigen::MatrixXd out(a.shape(0), a.shape(1));
-  for (Eigen::Index i = 0; i < out.rows(); ++i) {
-    for (Eigen::Index j = 0; j < out.cols(); ++j) out(i, j) = a.data()[i * out.cols() + j];
-  }
-  return out;
-}
+/// Rows (one per time) as a matrix.
+Eigen::MatrixXd to_matrix(const py::handle& obj, std::string_view name) { return dynamic_matrix(obj, kWriteWhere, name, 2); }
 
 std::vector<double> to_numbers(const py::handle& obj, std::string_view name) {
   const Array a = as_array(obj, kWriteWhere, name);

@@ -33,6 +33,10 @@ std::string shape_text(Eigen::Index rows, Eigen::Index cols, bool vector);
 /// Any array-like as a C-contiguous double array; throws std::invalid_argument if it is not one.
 Array as_array(const py::handle& obj, std::string_view where, std::string_view name);
 
+/// A dynamic matrix from a 1-D (as one column) or 2-D array, as `ndim` says; throws
+/// std::invalid_argument naming `where` and `name` for another number of dimensions.
+Eigen::MatrixXd dynamic_matrix(const py::handle& obj, std::string_view where, std::string_view name, py::ssize_t ndim);
+
 /// The result of a vectorised callback (`who`) as an array of `count` rows, each of shape
 /// `row_shape` (() for numbers, (n,) for vectors); throws std::invalid_argument naming `who` for
 /// any other shape.

@@ -35,6 +35,20 @@ Array as_array(const py::handle& obj, std::string_view where, std::string_view n
   return a;
 }
 
+Eigen::MatrixXd dynamic_matrix(const py::handle& obj, std::string_view where, std::string_view name, py::ssize_t ndim) {
+  const Array a = as_array(obj, where, name);
+  if (a.ndim() != ndim) {
+    throw_invalid(where, name, "array of shape " + shape_text(a), "must be " + std::to_string(ndim) + "-D");
+  }
+  const Eigen::Index rows = a.shape(0), cols = ndim == 2 ? a.shape(1) : 1;
+  Eigen::MatrixXd out(rows, cols);
+  const double* data = a.data();
+  for (Eigen::Index i = 0; i < rows; ++i) {
+    for (Eigen::Index j = 0; j < cols; ++j) out(i, j) = data[i * cols + j];
+  }
+  return out;
+}
+
 Array batch_rows(const py::handle& result, std::size_t count, const std::vector<py::ssize_t>& row_shape,
                  std::string_view who) {
   const Array a = as_array(result, who, "return value");

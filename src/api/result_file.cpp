@@ -47,10 +47,10 @@ json json_rows(const Eigen::MatrixXd& x) {
   return out;
 }
 
-/// `values` (n * width numbers, row-major) as n rows.
-json json_rows(const std::vector<double>& values, std::size_t width) {
+/// `rows` x `width` numbers stored row-major from `values` as rows.
+json json_rows(const double* values, std::size_t rows, std::size_t width) {
   return json_rows(Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-      values.data(), static_cast<Eigen::Index>(values.size() / width), static_cast<Eigen::Index>(width)));
+      values, static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(width)));
 }
 
 /// The dimension n of a group problem's algebra (a Python model: its group's first model's).
@@ -63,7 +63,7 @@ void write_problem(json& out, const GroupProblem& p) {
   const auto n = static_cast<std::size_t>(group_info(p, "cartan::api::result_json").dim);
   out["group"] = p.group;
   out["model"] = p.model;
-  out["inertia"] = p.inertia.size() == n * n && n > 1 ? json_rows(p.inertia, n) : json_list(p.inertia);
+  out["inertia"] = p.inertia.size() == n * n && n > 1 ? json_rows(p.inertia.data(), n, n) : json_list(p.inertia);
   out["lambda"] = number_or_null(p.lambda);
   out["g0"] = json_list(p.g0);
   out["gT"] = json_list(p.gT);
@@ -81,9 +81,7 @@ void write_problem(json& out, const GroupProblem& p) {
       }
       json alpha = json::array();  // alpha[i][j][k]
       for (std::size_t i = 0; i < n; ++i) {
-        alpha.push_back(json_rows(std::vector<double>(p.alpha.begin() + static_cast<std::ptrdiff_t>(i * n * n),
-                                                      p.alpha.begin() + static_cast<std::ptrdiff_t>((i + 1) * n * n)),
-                                  n));
+        alpha.push_back(json_rows(p.alpha.data() + i * n * n, n, n));
       }
       out["alpha"] = alpha;
       break;
@@ -119,19 +117,10 @@ class Reader {
 
   std::string text(const std::string& name) const { return io::json_text(key(name), where_, name); }
 
-  std::string one_of(const std::string& name, const std::vector<std::string>& choices) const {
-    const std::string s = text(name);
-    if (std::find(choices.begin(), choices.end(), s) == choices.end()) {
-      std::string list;
-      for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
-      bad(name, io::describe(key(name)), "is not one of: " + list);
-    }
-    return s;
-  }
-
+  /// A word of E; the key is E's name (status, method, connection), which parse_enum's message uses.
   template <NamedEnum E>
   E word(const std::string& name) const {
-    return parse_enum<E>(one_of(name, enum_words<E>()), where_);
+    return parse_enum<E>(text(name), where_);
   }
 
   int integer(const json& value, const std::string& name) const { return io::json_integer(value, where_, name); }
