@@ -11,26 +11,44 @@ Report assemble(const Figures& f, int order, double tol, Status status) {
   report.order = std::min(order, 2);
   report.resolution = f.resolution;
   report.amplification = f.amplification;
-  // At most 1: every figure is relative, and a threshold above 100 % says nothing. It also keeps
-  // thresholds finite when absurd data (found by fuzzing: an xi of 1e215) make a overflow.
+  // C a^q rho^p + floor; above kCoarsestThreshold (or not finite: absurd data, found by fuzzing,
+  // make a overflow) the check is unresolved: not applicable, naming the threshold it would need.
   const auto threshold = [&](double constant, int extra_power) {
     const double lambda_factor = std::pow(report.amplification, report.order + extra_power);
-    const double value =
-        discretisation_threshold(constant * lambda_factor, report.resolution, report.order) + threshold_floor(tol);
-    return std::isfinite(value) ? std::min(value, 1.0) : 1.0;
+    return discretisation_threshold(constant * lambda_factor, report.resolution, report.order) + threshold_floor(tol);
+  };
+  const auto discretisation_check = [&](std::string name, double figure, double limit, bool applicable, std::string note) {
+    Check check{std::move(name), figure, limit, applicable, std::move(note)};
+    if (applicable && !(limit <= kCoarsestThreshold)) {
+      check.applicable = false;
+      check.threshold = kCoarsestThreshold;
+      check.note = "unresolved: figure " + Report::format(figure) + ", but at h*omega = " +
+                   Report::format(report.resolution) + " its threshold would be " + Report::format(limit) + " > " +
+                   Report::format(kCoarsestThreshold) +
+                   ", too coarse to tell a solution from another curve (refine N or use order 2); " + check.note;
+    }
+    return check;
   };
   if (status != Status::Converged) report.checks.push_back(convergence_check(status));
   report.checks.push_back({"boundary", f.boundary, tol, true, f.boundary_note});
   report.checks.push_back({"legendre", f.legendre, kLegendreThreshold, true, f.legendre_note});
-  report.checks.push_back({"energy", f.energy, threshold(f.energy_constant, 1), true, f.energy_note});
-  report.checks.push_back({"residual", f.residual.relative, threshold(kResidualConstant, 0), true,
-                           f.residual_equations + " by finite differences, worst: " + f.residual.equation +
-                               " at t = " + Report::format(f.residual.t)});
-  report.checks.push_back({"stationarity", f.stationarity.value_or(0), threshold(kActionConstant, 0),
-                           f.stationarity.has_value(),
-                           f.stationarity ? "max |dS| / (size of its terms) over " + std::to_string(kVariations) +
-                                                " random endpoint-fixed variations"
-                                          : f.stationarity_note});
+  report.checks.push_back(discretisation_check("energy", f.energy, threshold(f.energy_constant, 1), true, f.energy_note));
+  report.checks.push_back(discretisation_check("residual", f.residual.relative, threshold(kResidualConstant, 0), true,
+                                               f.residual_equations + " by finite differences, worst: " + f.residual.equation +
+                                                   " at t = " + Report::format(f.residual.t)));
+  report.checks.push_back(discretisation_check("stationarity", f.stationarity.value_or(0), threshold(kActionConstant, 0),
+                                               f.stationarity.has_value(),
+                                               f.stationarity ? "max |dS| / (size of its terms) over " +
+                                                                    std::to_string(kVariations) +
+                                                                    " random endpoint-fixed variations"
+                                                              : f.stationarity_note));
+  const bool decided = std::any_of(report.checks.end() - 3, report.checks.end(), [](const Check& c) { return c.applicable; });
+  if (!decided) {
+    report.checks.push_back({"resolution", report.resolution, 0, true,
+                             "no discretisation check decides at h*omega = " + Report::format(report.resolution) +
+                                 " (each is unresolved or not applicable): nothing here tells a solution from another "
+                                 "curve; refine N or use order 2"});
+  }
   return report;
 }
 

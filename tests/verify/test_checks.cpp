@@ -214,7 +214,8 @@ TEST(VerifyReport, InvalidTrajectoriesAreRejected) {
 }
 
 // The report assembled from a kernel's figures (verify/assemble.hpp): thresholds C a^q rho^p +
-// 10 tol + 1e-10 (verify/verdict.hpp) with q = p + 1 for the energy and q = p otherwise, capped at 1;
+// 10 tol + 1e-10 (verify/verdict.hpp) with q = p + 1 for the energy and q = p otherwise, unresolved
+// (a failure) above kCoarsestThreshold;
 // the order at most 2; the failing `converged` check first for a failed status; stationarity N/A
 // with the kernel's reason.
 TEST(VerifyAssemble, ThresholdsFollowTheFiguresOrderAndLambdaFactor) {
@@ -244,13 +245,36 @@ TEST(VerifyAssemble, ThresholdsFollowTheFiguresOrderAndLambdaFactor) {
   EXPECT_EQ(r.checks[4].note, "the local form by finite differences, worst: mu at t = 1.5");
   EXPECT_FALSE(r.checks[5].applicable);
   EXPECT_EQ(r.checks[5].note, "not uniform");
-  f.resolution = 10;  // C a^q rho^p far above 1: capped
+  // Too coarse to decide: C a^q rho^p above kCoarsestThreshold. Each discretisation check is
+  // unresolved (not applicable, naming the threshold it would need) whatever its figure, a tiny one
+  // included: it used to be capped at 1 and passed a drift of 0.649 (issue 44). With none of them
+  // deciding, the report fails on a `resolution` check.
+  f.resolution = 10;
   f.stationarity = 0.5;
+  f.energy = 1e-12;
   const Report coarse = assemble(f, 1, tol, Status::Converged);
-  ASSERT_EQ(coarse.checks.size(), 5u);
-  EXPECT_EQ(coarse.checks[2].threshold, 1.0);
-  EXPECT_TRUE(coarse.checks[4].applicable);
-  EXPECT_EQ(coarse.checks[4].threshold, 1.0);
+  ASSERT_EQ(coarse.checks.size(), 6u);
+  for (std::size_t k : {2u, 3u, 4u}) {
+    EXPECT_FALSE(coarse.checks[k].applicable) << coarse.checks[k].name;
+    EXPECT_EQ(coarse.checks[k].verdict(), "N/A");
+    EXPECT_EQ(coarse.checks[k].note.rfind("unresolved: figure ", 0), 0u) << coarse.checks[k].note;
+    EXPECT_NE(coarse.checks[k].note.find("at h*omega = 10"), std::string::npos) << coarse.checks[k].note;
+  }
+  EXPECT_EQ(coarse.checks[5].name, "resolution");
+  EXPECT_FALSE(coarse.checks[5].passed());
+  EXPECT_FALSE(coarse.passed());
+  EXPECT_TRUE(coarse.checks[0].passed() && coarse.checks[1].passed());  // boundary and Legendre do not depend on rho
+  // One unresolved check among deciding ones: N/A, and the others decide.
+  f.resolution = 0.5;  // at order 1 with a = 1: energy 3 rho = 1.5 > 1, residual 1.5 rho = 0.75 <= 1
+  f.amplification = 1;
+  f.residual = {0.1, "mu", 1.5};
+  f.stationarity = 0.01;
+  const Report edge = assemble(f, 1, tol, Status::Converged);
+  ASSERT_EQ(edge.checks.size(), 5u);
+  EXPECT_FALSE(edge.checks[2].applicable);
+  EXPECT_TRUE(edge.checks[3].applicable);
+  EXPECT_DOUBLE_EQ(edge.checks[3].threshold, kResidualConstant * 0.5 + floor);
+  EXPECT_TRUE(edge.passed());
 }
 
 }  // namespace

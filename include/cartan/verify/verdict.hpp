@@ -78,6 +78,14 @@ struct Report {
 inline constexpr double kResidualConstant = 1.5;
 inline constexpr double kActionConstant = 1.0;
 inline constexpr double kEnergyConstant = 3.0;
+/// The largest threshold a discretisation check may have and still decide: every figure is
+/// relative, and above 1 the solution's own discretisation error may be as large as the figure of a
+/// curve that solves another problem (O(1): a wrong sign, factor or term, tests/cli/test_verify.py).
+/// Such a check is unresolved: not applicable at this resolution, saying so and naming the threshold
+/// it would need (it was capped at 1 and passed an energy drift of 0.649 of a wrong Lagrangian); a
+/// report whose discretisation checks are all unresolved or not applicable fails (check
+/// "resolution"): nothing in it tells a solution from another curve.
+inline constexpr double kCoarsestThreshold = 1.0;
 /// mu = dl/dv is imposed exactly by every method (natural Lagrangians: mu = I v).
 inline constexpr double kLegendreThreshold = 1e-9;
 /// Variations of the action check, and their seed (deterministic).
