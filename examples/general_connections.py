@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The transported-velocity problem on manifolds with a connection from Python (cartan.solve_general;
+"""The transported-velocity problem on manifolds with a connection from Python (cartan.solve on a manifold;
 docs/general-connections.md): the spherical pendulum checked against the classical equation, a rigid
 body under a Cartan-Schouten connection against the Lie-group solver, a potential written in
 Python on R^2 with torsion, and a manifold of your own (the Poincare half-plane as a cartan.Chart). docs/user-guide.md "General manifolds and connections" quotes this file.
@@ -42,19 +42,19 @@ def main():
     # The spherical pendulum: S^2 with its Levi-Civita connection, l = 1/2 |v|^2 - G z.
     sphere = Sphere()
     q0, qT = Sphere.point([1, 0, -0.3]), Sphere.point([0, 1, -0.5])
-    r = cartan.solve_general(sphere, T=1.0, N=400, q0=q0, qT=qT, gravity=9.81, order=2, tol=1e-12)
-    print(r)
+    r = cartan.solve(sphere, T=1.0, N=400, q0=q0, qT=qT, gravity=9.81, order=2, tol=1e-12)
+    print(r, cartan.verify(r).verdict)  # the result carries its problem: verify needs nothing else
     velocity = r.frame[0] @ r.v0  # q'(0): the components v0 in frame0 = sphere.tangent_basis(q0)
     miss = np.linalg.norm(classical_pendulum(q0, velocity, 9.81, 1.0) - qT)
     print(f"classical pendulum from q0 with q'(0) = frame0 @ v0 misses qT by {miss:.1e}")
-    check("pendulum converged", r.converged)
+    check("pendulum converged and verified", r.converged and cartan.verify(r).passed)
     check("pendulum is the classical one (to the scheme's O(h^2))", miss < 2e-4)
 
     # SO(3) with the Cartan-Schouten connection lambda = 0.3 (alpha = lambda ad): the Lie-group solver's problem.
     gT = cartan.SO3.minimal_rotation([-1, -1, -1], [0.9, 1, 1])
     so3 = GroupManifold("so3", "cartan-schouten", lam=0.3)
-    general = cartan.solve_general(so3, T=5.0, N=200, q0=np.eye(3), qT=gT, inertia=[2.0, 3.0, 4.0],
-                                   method="shooting", tol=1e-12)
+    general = cartan.solve(so3, T=5.0, N=200, q0=np.eye(3), qT=gT, inertia=[2.0, 3.0, 4.0], method="shooting",
+                           tol=1e-12)
     lie = cartan.solve(cartan.RigidBody([2.0, 3.0, 4.0]), lam=0.3, T=5.0, N=200, gT=gT, method="shooting",
                        tol=1e-12)
     gap = np.abs(general.q - lie.g).max()
@@ -68,15 +68,16 @@ def main():
     gamma[0, 1, 0] = -0.3
     plane = Euclidean(gamma)
     A = np.diag([1.0, 2.0])
-    r = cartan.solve_general(plane, T=2.0, N=400, q0=[0.5, 0.0], qT=[-0.3, 0.4], inertia=A,
-                             potential=lambda q: 0.5 * q @ q, potential_gradient=lambda q: q, order=2)
+    r = cartan.solve(plane, T=2.0, N=400, q0=[0.5, 0.0], qT=[-0.3, 0.4], inertia=A,
+                     potential=lambda q: 0.5 * q @ q, potential_gradient=lambda q: q, order=2)
     energy = 0.5 * np.einsum("ki,ij,kj->k", r.v, A, r.v) + 0.5 * np.einsum("ki,ki->k", r.q, r.q)
     print(f"R^2 with torsion: {r.status}, energy drift {np.abs(energy - energy[0]).max():.1e}")
     check("energy conserved (to the scheme's order)", r.converged and np.abs(energy - energy[0]).max() < 1e-4)
 
     # A manifold of your own: the Poincare half-plane y > 0 from its Christoffel symbols alone
     # (christoffel[k, i, j] = Gamma^k_ij of g = (dx^2 + dy^2) / y^2). With l = 1/2 |v|^2 in a
-    # g-orthonormal frame the solution is the hyperbolic geodesic, at speed d(q0, qT) / T.
+    # g-orthonormal frame (a chart's default frame when it has a metric) the solution is the hyperbolic
+    # geodesic, at speed d(q0, qT) / T.
     def half_plane(q):
         g = np.zeros((2, 2, 2))
         g[0, 0, 1] = g[0, 1, 0] = g[1, 1, 1] = -1 / q[1]
@@ -85,7 +86,7 @@ def main():
 
     chart = cartan.Chart(half_plane, dim=2, metric=lambda q: np.eye(2) / q[1] ** 2, parallel=True)  # K = -1
     q0, qT, T = np.array([-0.5, 0.8]), np.array([1.2, 1.6]), 2.0
-    r = cartan.solve_general(chart, T=T, N=20, q0=q0, qT=qT, frame0=q0[1] * np.eye(2), method="collocation")
+    r = cartan.solve(chart, T=T, N=20, q0=q0, qT=qT, method="collocation")
     distance = np.arccosh(1 + np.sum((qT - q0) ** 2) / (2 * q0[1] * qT[1]))
     print(f"half-plane geodesic: speed {np.linalg.norm(r.v0):.12f}, d / T = {distance / T:.12f}")
     check("half-plane geodesic at the hyperbolic speed", r.converged and abs(np.linalg.norm(r.v0) - distance / T) < 1e-8)

@@ -726,6 +726,8 @@ class Sphere(metaclass=type):
     def validate(self, q: Any) -> None:
         """Raises ValueError unless q is a valid point of the manifold."""
     def __repr__(self) -> str: ...
+    def __getstate__(self) -> tuple: ...
+    def __setstate__(self, arg0: tuple) -> None: ...
     @staticmethod
     def point(x: Any) -> NDArray[numpy.float64]:
         """The point of S^2 in the direction of x (x / |x|)."""
@@ -773,6 +775,8 @@ class HyperbolicPlane(metaclass=type):
     def validate(self, q: Any) -> None:
         """Raises ValueError unless q is a valid point of the manifold."""
     def __repr__(self) -> str: ...
+    def __getstate__(self) -> tuple: ...
+    def __setstate__(self, arg0: tuple) -> None: ...
     @staticmethod
     def point(x1: float, x2: float) -> NDArray[numpy.float64]:
         """The point (x1, x2, sqrt(1 + x1^2 + x2^2)) of H^2."""
@@ -824,11 +828,13 @@ class Euclidean(metaclass=type):
     def christoffel_symbols(self) -> NDArray[numpy.float64]:
         """The (m, m, m) array christoffel[k, i, j] = Gamma^k_ij."""
     def __repr__(self) -> str: ...
+    def __getstate__(self) -> tuple: ...
+    def __setstate__(self, arg0: tuple) -> None: ...
 
 class Chart(metaclass=type):
     """A manifold of your own in one chart: points are coordinates q in an open set of R^m (m = 2 or 3) and the connection any field of Christoffel symbols q -> Gamma^k_ij(q) (torsion allowed); pieces are coordinate lines, transport along them is integrated by RK4 (include/cartan/manifolds/chart.hpp)."""
     def __init__(self, christoffel: Any, *, dim: Any, metric: Any = ..., name: str = ..., parallel: bool = ...) -> None:
-        """christoffel(q) -> a (m, m, m) array with christoffel[k, i, j] = Gamma^k_ij at q (as Euclidean); non-finite values (or an exception) mark points outside the chart. metric(q) -> (m, m), optional (a metric the connection preserves). parallel: declare nabla T = nabla R = 0 (e.g. constant curvature), which lets the solver compute the frame components once; only when true."""
+        """christoffel(q) -> a (m, m, m) array with christoffel[k, i, j] = Gamma^k_ij at q (as Euclidean); non-finite values (or an exception) mark points outside the chart. metric(q) -> (m, m), optional (a metric the connection preserves; the default frame tangent_basis(q) is then the coordinate basis orthonormalised in it, so that l = 1/2 |v|^2 is 1/2 g(q', q')). parallel: declare nabla T = nabla R = 0 (e.g. constant curvature), which lets the solver compute the frame components once; only when true."""
     @property
     def name(self) -> str:
         """The manifold's name ("sphere", "hyperbolic-plane", "euclidean", or the group's)."""
@@ -957,6 +963,8 @@ class _GeneralRequest(metaclass=type):
 def _solve_general(manifold: Any, request: _GeneralRequest) -> dict: ...
 
 def _verify_general(manifold: Any, request: _GeneralRequest, result: Any) -> dict: ...
+
+def _check_general_lagrangian(manifold: Any, request: _GeneralRequest, samples: Any, seed: int, scale: float, q: Any) -> dict: ...
 
 def _result_text(fields: dict) -> str:
     """The result file's text (one line of JSON) of a SolveResult's fields: the library's writer, the CLI's."""

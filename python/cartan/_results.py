@@ -1,4 +1,4 @@
-"""Results that travel: what a :class:`cartan.SolveResult` says about itself, the result file
+"""Results that travel: what a :class:`cartan.Result` says about itself, the result file
 (``to_json`` and :func:`cartan.load`), the rebuilt model (:func:`cartan.model_of`), dense output
 (``sol``) and a plot (``plot``).
 
@@ -68,10 +68,14 @@ def _inertia_numbers(inertia):
 
 def to_json(r, path):
     """Writes `r` to `path` with the library's writer of result files (the CLI's: one line)."""
+    if r.problem.kind != "group":
+        raise ValueError(f"Result.to_json: manifold = {r.manifold!r}: the result file describes a group model's "
+                         "problem (cartan solve --manifold writes the sphere's and hyperbolic plane's particle in "
+                         "its own frame); a manifold's Result is not written yet (pickle it)")
     rows = len(r.t)
     fields = {
         "status": r.status, "message": r.message, "method": r.method, "order": r.order, "branch": r.branch,
-        "group": _group_class(r.group, "SolveResult.to_json").name, "model": r.model,
+        "group": _group_class(r.group, "Result.to_json").name, "model": r.model,
         "inertia": _inertia_numbers(r.inertia), "connection": r.connection, "lambda": r.lam, "T": r.T, "N": r.N,
         "tol": r.tol, "g0": np.ravel(r.g0), "gT": np.ravel(r.gT), "t": r.t,
         "g": np.reshape(r.g, (rows, int(np.prod(np.shape(r.g)[1:])))), "v": r.v, "mu": r.mu, "xi": r.xi,
@@ -85,7 +89,7 @@ def to_json(r, path):
 
 
 def load_dict(path):
-    """The fields of a SolveResult read from the result file at `path` (see :func:`cartan.load`)
+    """The fields of a group model's Result read from the result file at `path` (see :func:`cartan.load`)
     by the library's reader, the one `cartan verify` uses; every error is a ValueError naming the
     key and the file."""
     where = "cartan.load"
@@ -117,7 +121,7 @@ def load_dict(path):
 # ---- Dense output --------------------------------------------------------------------------------
 
 class State(NamedTuple):
-    """The solution at the times of :meth:`cartan.SolveResult.sol`: g (``*element_shape``), v, mu,
+    """The solution at the times of :meth:`cartan.Result.sol` of a group model's problem: g (``*element_shape``), v, mu,
     xi (dim,) at a scalar time, each with a leading axis of the times' length for an array."""
     g: np.ndarray
     v: np.ndarray
@@ -129,13 +133,13 @@ def dense(r, t):
     """`r.sol(t)`: the library's dense output (include/cartan/transported/dense.hpp) at the time or
     times `t` (a leading axis for an array)."""
     times = np.asarray(t, dtype=float)
-    group = _group_class(r.group, "SolveResult.sol")
+    group = _group_class(r.group, "Result.sol")
     out = group._dense(r, r.lam, r.method, np.atleast_1d(times).ravel())
     return State(*(out[key][0] if times.ndim == 0 else out[key] for key in ("g", "v", "mu", "xi")))
 
 
 class GeneralState(NamedTuple):
-    """The solution at the times of :meth:`cartan.GeneralSolveResult.sol`: q (``*point_shape``),
+    """The solution at the times of :meth:`cartan.Result.sol` on a manifold: q (``*point_shape``),
     frame (d, m), v, mu (m,), Xi (m, m), each with a leading axis of the times' length for an array."""
     q: np.ndarray
     frame: np.ndarray
@@ -145,11 +149,11 @@ class GeneralState(NamedTuple):
 
 
 def general_dense(r, t):
-    """`r.sol(t)` of a GeneralSolveResult: the library's dense output (include/cartan/general/dense.hpp)
+    """`r.sol(t)` of a manifold's Result: the library's dense output (include/cartan/general/dense.hpp)
     on the manifold `r.space`."""
     if r.space is None:
-        raise ValueError("GeneralSolveResult.sol: space = None: the result does not carry the manifold it was "
-                         "solved on (set `space` to it)")
+        raise ValueError("Result.sol: space = None: the manifold did not travel with the result (set "
+                         "`r.space` to it)")
     times = np.asarray(t, dtype=float)
     out = r.space._dense(r, r.method, np.atleast_1d(times).ravel())
     return GeneralState(*(out[key][0] if times.ndim == 0 else out[key] for key in ("q", "frame", "v", "mu", "Xi")))
@@ -158,12 +162,43 @@ def general_dense(r, t):
 # ---- Plotting ------------------------------------------------------------------------------------
 
 def plot(r, path=None):
-    """`r.plot(path)`: see :meth:`cartan.SolveResult.plot`."""
+    """`r.plot(path)`: see :meth:`cartan.Result.plot`."""
     from matplotlib.figure import Figure
-    group = _group_class(r.group, "SolveResult.plot")
     fig = Figure(figsize=(12, 4), layout="constrained")
-    three_d = group.name in ("so3", "se3")
+    group = None if r.group is None else _group_class(r.group, "Result.plot")
+    points = np.reshape(r.q, (len(r.t), -1))
+    three_d = (group.name in ("so3", "se3")) if group is not None else points.shape[1] == 3
     path_axes = fig.add_subplot(1, 3, 1, projection="3d" if three_d else None)
+    if group is not None:
+        _plot_group_path(path_axes, group, r)
+    elif points.shape[1] in (2, 3):
+        path_axes.plot(*points.T, label="q")
+        path_axes.plot(*points[0], "ko")
+        path_axes.plot(*points[-1], "ks")
+        path_axes.set_title(f"path on {r.manifold}")
+    else:
+        for i in range(points.shape[1]):
+            path_axes.plot(r.t, points[:, i], label=f"q[{i}]")
+        path_axes.set_xlabel("t")
+        path_axes.set_title(f"q(t) on {r.manifold}")
+    path_axes.legend()
+    for column, (name, values) in enumerate((("v", r.v), ("mu", r.mu)), start=2):
+        axes = fig.add_subplot(1, 3, column)
+        for i in range(values.shape[1]):
+            axes.plot(r.t, values[:, i], label=f"{name}[{i}]")
+        axes.set_xlabel("t")
+        axes.set_title(f"{name}(t)")
+        axes.legend(fontsize="small")
+    what = (f"{r.group} {r.model}, lambda = {r.lam:g}" if r.problem.kind == "group"
+            else f"{r.manifold}" + (f" (lambda = {r.lam:g})" if r.lam is not None else ""))
+    fig.suptitle(f"{what}, T = {r.T:g}, N = {r.N}, {r.method} (order {r.order}): {r.status}")
+    if path is not None:
+        fig.savefig(path)
+    return fig
+
+
+def _plot_group_path(path_axes, group, r):
+    """The path in a group: SO(3)'s body axes on the sphere, Heisenberg's (a, b, c), the translation."""
     if group.name == "so3":
         sphere = np.linspace(0, 2 * np.pi, 25), np.linspace(0, np.pi, 13)
         path_axes.plot_wireframe(np.outer(np.cos(sphere[0]), np.sin(sphere[1])),
@@ -182,15 +217,3 @@ def plot(r, path=None):
         d = 2 if group.name == "se2" else 3
         path_axes.plot(*r.g[:, :d, d].T, label="translation")
         path_axes.set_title("translation path")
-    path_axes.legend()
-    for column, (name, values) in enumerate((("v", r.v), ("mu", r.mu)), start=2):
-        axes = fig.add_subplot(1, 3, column)
-        for i in range(values.shape[1]):
-            axes.plot(r.t, values[:, i], label=f"{name}[{i}]")
-        axes.set_xlabel("t")
-        axes.set_title(f"{name}(t)")
-        axes.legend(fontsize="small")
-    fig.suptitle(f"{r.group} {r.model}, lambda = {r.lam:g}, T = {r.T:g}, N = {r.N}, {r.method} (order {r.order}): {r.status}")
-    if path is not None:
-        fig.savefig(path)
-    return fig

@@ -29,7 +29,7 @@ def _not_in_sweeps():
     """cartan.solve's arguments a sweep's problem does not take: progress, and a manifold's problem."""
     from . import _MANIFOLD_KEYWORDS
 
-    return _NOT_IN_SWEEPS + _MANIFOLD_KEYWORDS
+    return _NOT_IN_SWEEPS + _MANIFOLD_KEYWORDS + ("space",)
 
 
 #: The default number of tasks, at most (chunksize = ceil(len(problems) / _TASKS)).
@@ -38,7 +38,7 @@ _TASKS = 1000
 
 def sweep(problems, executor=None, *, chunksize=None):
     """Solves every problem of `problems` with :func:`cartan.solve` and returns the
-    :class:`cartan.SolveResult` s in the same order.
+    :class:`cartan.Result` s in the same order.
 
     problems: a sequence of dicts of cartan.solve's keyword arguments, ``lagrangian`` included, e.g.
     ``[dict(lagrangian=cartan.RigidBody([2, 3, 4]), lam=lam, T=50, N=1000, gT=gT) for lam in lams]``

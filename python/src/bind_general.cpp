@@ -9,8 +9,11 @@
 // release the GIL; with them, the GIL is held and the first callback error is re-raised after the
 // solver returns (python_models.hpp).
 
+#include <cstdint>
+
 #include "general_binding.hpp"
 #include "option_words.hpp"
+#include "report_dict.hpp"
 
 namespace cartan::python {
 
@@ -65,6 +68,15 @@ void bind_general(py::module_& m) {
       return verify_on(mf, request, result, chart);
     });
   }, py::arg("manifold"), py::arg("request"), py::arg("result"));
+  m.def("_check_general_lagrangian", [](const py::object& manifold, const GeneralRequest& request, const py::object& samples,
+                                        std::uint32_t seed, double scale, const py::object& q) {
+    mechanics::CheckLagrangianOptions options;
+    options.seed = seed;
+    options.scale = scale;
+    return visit_manifold(manifold, [&](const auto& mf, ChartCallbacks* chart) {
+      return check_report_dict(check_on(mf, request, samples, options, q, chart));
+    });
+  }, py::arg("manifold"), py::arg("request"), py::arg("samples"), py::arg("seed"), py::arg("scale"), py::arg("q"));
 }
 
 }  // namespace cartan::python

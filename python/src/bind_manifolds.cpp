@@ -7,6 +7,8 @@
 // torsion, curvature, step, difference, transport_along_step, tangent_basis, ...), bound once by
 // def_manifold_methods (general_binding.hpp).
 
+#include <limits>
+
 #include "general_binding.hpp"
 
 namespace cartan::python {
@@ -23,6 +25,8 @@ py::class_<Q> bind_quadric(py::module_& m, const char* name, const char* doc) {
   cls.def(py::init<>());
   def_manifold_methods(cls, name);
   cls.def("__repr__", [name](const Q&) { return std::string(name) + "()"; });
+  // No state: a result's problem travels with it (pickling, processes).
+  cls.def(py::pickle([](const Q&) { return py::tuple(); }, [](const py::tuple&) { return Q(); }));
   return cls;
 }
 
@@ -70,7 +74,7 @@ void bind_euclidean(py::module_& m) {
           "christoffel: a (m, m, m) array with christoffel[k, i, j] = Gamma^k_ij (m = 2 or 3), or None with "
           "dim = m for the flat, torsion-free connection.");
   def_manifold_methods(cls, "Euclidean");
-  cls.def_property_readonly("christoffel_symbols", [](const EuclideanManifold& h) {
+  const auto symbols = [](const EuclideanManifold& h) {
     return visit_holder(h, [](const auto& e) {
       constexpr int n = std::decay_t<decltype(e)>::kDim;
       std::array<Square<n>, n> out;  // out[k](i, j) = Gamma^k_ij
@@ -79,17 +83,38 @@ void bind_euclidean(py::module_& m) {
       }
       return tensor_numpy<n>(out);
     });
-  }, "The (m, m, m) array christoffel[k, i, j] = Gamma^k_ij.");
+  };
+  cls.def_property_readonly("christoffel_symbols", symbols, "The (m, m, m) array christoffel[k, i, j] = Gamma^k_ij.");
   cls.def("__repr__", [](const EuclideanManifold& h) {
     return visit_holder(h, [](const auto& e) { return "Euclidean(dim=" + std::to_string(e.kDim) + ")"; });
   });
+  // Its state is its Christoffel symbols: a result's problem travels with it (pickling, processes).
+  cls.def(py::pickle(
+      [symbols](const EuclideanManifold& h) { return py::make_tuple(symbols(h)); },
+      [](const py::tuple& state) {
+        const Array a = as_array(state[0], "Euclidean", "christoffel");
+        return a.shape(0) == 2 ? make_euclidean<2>(state[0]) : make_euclidean<3>(state[0]);
+      }));
 }
 
 // ---- Chart ------------------------------------------------------------------------------------
 
-/// A Python callable of the point as a field of the chart: the result converted by `convert`;
-/// a Python exception is recorded for the solve that runs (callbacks.state), and during a solve
-/// a later call fails at once.
+/// NaN in every entry: a field's value outside the chart.
+template <class R>
+R outside_the_chart() {
+  R value;
+  if constexpr (requires { value.setConstant(0.0); }) {
+    value.setConstant(std::numeric_limits<double>::quiet_NaN());
+  } else {
+    for (auto& entry : value) entry.setConstant(std::numeric_limits<double>::quiet_NaN());
+  }
+  return value;
+}
+
+/// A Python callable of the point as a field of the chart: the result converted by `convert`.
+/// During a solve an Exception the callable raises marks the point outside the chart, as NaN does
+/// (documented: ChartCallbacks), and any other error is recorded for the solve (callbacks.state),
+/// after which a later call fails at once; outside a solve every exception passes through.
 template <int N, class R, class Convert>
 auto chart_field(const std::shared_ptr<ChartCallbacks>& callbacks, py::object fn, const char* who, Convert convert) {
   return [callbacks, fn = std::move(fn), who, convert](const Eigen::Matrix<double, N, 1>& q) -> R {
@@ -97,8 +122,22 @@ auto chart_field(const std::shared_ptr<ChartCallbacks>& callbacks, py::object fn
     if (callbacks->solving && callbacks->state.first_error) {
       throw ModelError(std::string("Chart.") + who + ": an earlier callback failed");
     }
+    py::object value;
     try {
-      return convert(fn(to_numpy(q)));
+      value = fn(to_numpy(q));
+    } catch (py::error_already_set& e) {
+      if (!callbacks->solving || !e.matches(PyExc_Exception)) {
+        if (callbacks->solving && !callbacks->state.first_error) callbacks->state.first_error = std::current_exception();
+        throw;
+      }
+      if (callbacks->outside.empty()) {
+        callbacks->outside = std::string("Chart.") + who + " raised " + py::str(e.type().attr("__name__")).cast<std::string>() +
+                             " at q = " + format_value(q) + " (" + py::str(e.value()).cast<std::string>() + ")";
+      }
+      return outside_the_chart<R>();
+    }
+    try {
+      return convert(value);
     } catch (...) {
       if (callbacks->solving && !callbacks->state.first_error) callbacks->state.first_error = std::current_exception();
       throw;
@@ -156,7 +195,8 @@ void bind_chart(py::module_& m) {
           py::arg("name") = "chart", py::arg("parallel") = false,
           "christoffel(q) -> a (m, m, m) array with christoffel[k, i, j] = Gamma^k_ij at q (as Euclidean); "
           "non-finite values (or an exception) mark points outside the chart. metric(q) -> (m, m), optional (a "
-          "metric the connection preserves). parallel: declare nabla T = nabla R = 0 (e.g. constant curvature), "
+          "metric the connection preserves; the default frame tangent_basis(q) is then the coordinate basis "
+          "orthonormalised in it, so that l = 1/2 |v|^2 is 1/2 g(q', q')). parallel: declare nabla T = nabla R = 0 (e.g. constant curvature), "
           "which lets the solver compute the frame components once; only when true.");
   def_manifold_methods(cls, "Chart");
   cls.def("__repr__", [](const ChartManifold& h) {

@@ -6,6 +6,7 @@
 // (cartan/general/compiled.hpp): this unit only converts the arguments and the result.
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -40,12 +41,16 @@ struct EuclideanManifold {
   std::variant<manifolds::Euclidean<2>, manifolds::Euclidean<3>> m;
 };
 
-/// The state of a chart's Python callbacks: the first exception raised during a solve (re-raised
-/// after it, with its type and traceback), and whether a solve is running (then later callbacks
-/// fail at once, as ModelError, which the solvers pass through).
+/// The state of a chart's Python callbacks: whether a solve is running; during one, an Exception
+/// raised by a field marks its point outside the chart (as NaN does: the solvers step back), and
+/// the first is described in `outside` for the message of a solve that fails; any other error
+/// (KeyboardInterrupt, an error converting the result) is the first error, re-raised after the
+/// solve with its type and traceback (later callbacks then fail at once, as ModelError, which the
+/// solvers pass through).
 struct ChartCallbacks {
   CallbackState state;
   bool solving = false;
+  std::string outside;
 };
 
 /// A chart of R^2 or R^3 with Christoffel symbols (and optionally a metric) from Python callables:
@@ -402,6 +407,7 @@ template <class F>
 auto run_on_chart(ChartCallbacks* chart, F&& f) {
   if (chart == nullptr) return f();
   chart->state.first_error = nullptr;
+  chart->outside.clear();
   chart->solving = true;
   struct Done {
     ChartCallbacks* c;
@@ -446,6 +452,17 @@ general::GeneralTrajectory<M> trajectory_of(const M& manifold, const py::object&
   return x;
 }
 
+/// u, energy, cumulative_action and action of a manifold's result (None, and action NaN, without
+/// `along`: a result stopped on request, or one of fewer than two samples).
+template <class M>
+void add_general_along_fields(py::dict& d, std::optional<general::GeneralAlong<M>>&& along) {
+  const py::object none = py::none();
+  d["action"] = along ? along->action.back() : std::numeric_limits<double>::quiet_NaN();
+  d["u"] = along ? py::object(to_numpy(std::move(along->u))) : none;
+  d["energy"] = along ? py::object(to_numpy(std::move(along->energy))) : none;
+  d["cumulative_action"] = along ? py::object(to_numpy(std::move(along->action))) : none;
+}
+
 template <class M>
 py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* chart) {
   using Problem = general::ErasedProblem<M>;
@@ -464,16 +481,32 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   if (!r.Xi0.is_none()) guess.Xi0 = finite_arg<ComponentMatrixOf<M>>(r.Xi0, where, "Xi0");
   if (!r.guess.is_none()) guess.trajectory = trajectory_of(manifold, r.guess, kWhere, "guess");
 
-  const auto run = [&] { return general::solve(problem, options, guess); };
+  // The solve, then what the result carries along it (general/along.hpp) where the problem is at
+  // hand; a result stopped on request has its samples only (as a group model's SolveResult).
+  struct Solved {
+    general::GeneralSolution<M> solution;
+    std::optional<general::GeneralAlong<M>> along;
+  };
+  const auto run = [&] {
+    Solved out{general::solve(problem, options, guess), std::nullopt};
+    if (!stopped_on_request(out.solution.status) && out.solution.trajectory.t.size() >= 2) {
+      out.along = general::along_general(problem, out.solution.trajectory);
+    }
+    return out;
+  };
   const CallbackState& callbacks = python_object ? python_object->state() : *state;
-  std::optional<general::GeneralSolution<M>> solved;
+  std::optional<Solved> solved;
   if (python || chart != nullptr) {
     solved.emplace(run_on_chart(chart, [&] { return run_with_callbacks(callbacks, run); }));
   } else {
     py::gil_scoped_release release;
     solved.emplace(run());
   }
-  general::GeneralSolution<M>& s = *solved;  // its trajectory moves into the arrays
+  general::GeneralSolution<M>& s = solved->solution;  // its trajectory moves into the arrays
+  std::optional<general::GeneralAlong<M>>& along = solved->along;
+  if (chart != nullptr && !chart->outside.empty() && !s.converged()) {
+    s.message += " (" + chart->outside + ", treated as outside the chart)";
+  }
   py::dict d;
   add_core_fields(d, s);
   d["manifold"] = std::string(manifold.name());
@@ -492,6 +525,7 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   d["v0"] = to_numpy(s.v0);
   d["Xi0"] = to_numpy(s.Xi0);
   d["iterations"] = s.inner_iterations;
+  add_general_along_fields(d, std::move(along));
   return d;
 }
 
@@ -521,6 +555,65 @@ py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object&
         run_on_chart(chart, [&] { return run_with_callbacks(python_object ? python_object->state() : *state, run); }));
   }
   return report_dict(run());
+}
+
+/// The point the seeded samples of cartan.check_lagrangian are taken around when none is given: the
+/// quadrics' pole (0, 0, 1), the origin of R^m, the identity of a group; a chart has none (its
+/// domain is the user's), so `q` must be given.
+template <class M>
+PointOf<M> default_sample_point(const M& manifold, const py::object& q, const std::string& where) {
+  if (!q.is_none()) return point_arg(manifold, q, where, "q");
+  if constexpr (std::is_same_v<M, Sphere> || std::is_same_v<M, manifolds::HyperbolicPlane>) {
+    return PointOf<M>(0, 0, 1);
+  } else if constexpr (requires { typename M::Group; }) {
+    return M::Group::identity();
+  } else if constexpr (requires(const M& x) { x.coefficients(); }) {
+    return PointOf<M>::Zero();  // Euclidean
+  } else {
+    throw_invalid(where, "q", "None", "must be given on a Chart (a point of its domain the samples are taken around)");
+  }
+}
+
+/// The samples of cartan.check_lagrangian on a manifold: a count (seeded samples around `q`) or a
+/// sequence of (t, q, v) triples.
+template <class M>
+std::vector<general::ManifoldLagrangianSample<M>> manifold_check_samples(const M& manifold, const py::object& samples,
+                                                                         mechanics::CheckLagrangianOptions options,
+                                                                         const py::object& q) {
+  const std::string where = "cartan.check_lagrangian";
+  if (py::isinstance<py::int_>(samples) && !py::isinstance<py::bool_>(samples)) {
+    options.samples = samples.cast<int>();
+    return general::lagrangian_samples(manifold, default_sample_point(manifold, q, where), options);
+  }
+  if (!py::isinstance<py::sequence>(samples) || py::isinstance<py::str>(samples)) {
+    throw_invalid(where, "samples", repr_of(samples), "is neither a count nor a sequence of (t, q, v)");
+  }
+  std::vector<general::ManifoldLagrangianSample<M>> out;
+  for (const auto& item : py::reinterpret_borrow<py::sequence>(samples)) {
+    const std::string name = "samples[" + std::to_string(out.size()) + "]";
+    if (!py::isinstance<py::sequence>(item) || py::len(item) != 3) {
+      throw_invalid(where, name, repr_of(item), "is not a triple (t, q, v)");
+    }
+    const py::sequence triple = py::reinterpret_borrow<py::sequence>(item);
+    out.push_back({number_arg<double>(triple[0], where, (name + "[0]").c_str()),
+                   point_arg(manifold, triple[1], where, (name + "[1]").c_str()),
+                   finite_arg<ComponentsOf<M>>(triple[2], where, (name + "[2]").c_str())});
+  }
+  return out;
+}
+
+/// general::check_lagrangian of the request's Lagrangian (a Lagrangian object, or inertia and
+/// potential as solve_general takes them) on `manifold`.
+template <class M>
+mechanics::CheckReport check_on(const M& manifold, const GeneralRequest& r, const py::object& samples,
+                                const mechanics::CheckLagrangianOptions& options, const py::object& q, ChartCallbacks* chart) {
+  const auto points = manifold_check_samples(manifold, samples, options, q);
+  auto state = std::make_shared<CallbackState>();
+  std::optional<PythonManifoldLagrangian<M>> python_object;
+  bool python = false;
+  const general::ErasedLagrangian<M> lagrangian = request_lagrangian(manifold, r, state, python_object, python);
+  const auto run = [&] { return general::check_lagrangian(manifold, lagrangian, points); };
+  return run_on_chart(chart, [&] { return run_with_callbacks(python_object ? python_object->state() : *state, run); });
 }
 
 }  // namespace cartan::python::general_binding

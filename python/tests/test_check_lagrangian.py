@@ -154,3 +154,92 @@ def test_python_exception_is_re_raised():
 
     with pytest.raises(ZeroDivisionError, match="user bug"):
         cartan.check_lagrangian(Raises(INERTIA))
+
+
+# ---- a manifold's Lagrangian (general::check_lagrangian) ---------------------------------------
+
+G_ACCEL = 9.81
+
+
+class DoublePendulum:
+    """A planar double pendulum (unit masses and lengths) on the flat plane of its two angles:
+    l = 1/2 v.M(q) v - V(q), M = [[2, c], [c, 1]], c = cos(q1 - q2), V = -g (2 cos q1 + cos q2);
+    on Euclidean(dim=2) the transported velocity is q' itself. point_gradient is dl/dq:
+    (-s v1 v2 - 2 g sin q1, s v1 v2 - g sin q2), s = sin(q1 - q2)."""
+
+    @staticmethod
+    def mass(q):
+        c = np.cos(q[0] - q[1])
+        return np.array([[2.0, c], [c, 1.0]])
+
+    def value(self, t, q, v):
+        return 0.5 * v @ self.mass(q) @ v + G_ACCEL * (2 * np.cos(q[0]) + np.cos(q[1]))
+
+    def momentum(self, t, q, v):
+        return self.mass(q) @ v
+
+    def velocity(self, t, q, mu):
+        return np.linalg.solve(self.mass(q), mu)
+
+    def point_gradient(self, t, q, v):
+        s = np.sin(q[0] - q[1])
+        return np.array([-s * v[0] * v[1] - 2 * G_ACCEL * np.sin(q[0]), s * v[0] * v[1] - G_ACCEL * np.sin(q[1])])
+
+
+class ForgotTheVelocityTerm(DoublePendulum):
+    """The issue's mistake: dl/dq without d/dq (1/2 v.M(q) v), which cartan.solve still "converges" on."""
+
+    def point_gradient(self, t, q, v):
+        return np.array([-2 * G_ACCEL * np.sin(q[0]), -G_ACCEL * np.sin(q[1])])
+
+
+def test_a_manifold_lagrangian_is_checked_as_a_groups():
+    """check_lagrangian(l, manifold) checks momentum, point_gradient and velocity as the group version
+    checks momentum, group_gradient and velocity (it refused a manifold's Lagrangian: issue 44): the
+    double pendulum passes, the one without the velocity term of dl/dq fails point_gradient only, by
+    O(1) (the missing term is of the size of the rest at unit scale)."""
+    plane = cartan.Euclidean(dim=2)
+    assert_passes(cartan.check_lagrangian(DoublePendulum(), plane), 0)
+    report = cartan.check_lagrangian(ForgotTheVelocityTerm(), plane)
+    assert report.failing == ["point_gradient"], str(report)
+    assert [c["discrepancy"] for c in report.checks if c["callback"] == "point_gradient"][0] > 1e-2
+    assert "point_gradient" in str(report)
+
+
+class SphereGravity:
+    """l = 1/2 |v|^2 - G q3 on the sphere (v in the frame of tangent_basis(q0)). point_gradient may
+    have any normal part: only its tangent components are defined (here + 5 q, which the check must
+    not see); `wrong` flips the sign of the potential's."""
+
+    def __init__(self, wrong=False):
+        self.sign = -1.0 if wrong else 1.0
+
+    def value(self, t, q, v):
+        return 0.5 * v @ v - G_ACCEL * q[2]
+
+    def momentum(self, t, q, v):
+        return np.array(v, dtype=float)
+
+    def velocity(self, t, q, mu):
+        return np.array(mu, dtype=float)
+
+    def point_gradient(self, t, q, v):
+        return self.sign * np.array([0.0, 0.0, -G_ACCEL]) + 5.0 * np.asarray(q)
+
+
+def test_a_manifold_lagrangian_is_checked_on_the_tangent_space():
+    sphere = cartan.Sphere()
+    assert_passes(cartan.check_lagrangian(SphereGravity(), sphere), 0)
+    assert cartan.check_lagrangian(SphereGravity(wrong=True), sphere).failing == ["point_gradient"]
+    # The Lagrangian given by its terms (as cartan.solve takes it on a manifold) is checked the same way,
+    # its analytic second derivatives too.
+    assert_passes(cartan.check_lagrangian(None, sphere, inertia=[1.0, 2.0], gravity=G_ACCEL), 4)
+    with pytest.raises(ValueError, match="q = None must be given on a Chart"):
+        cartan.check_lagrangian(DoublePendulum(), cartan.Chart(lambda q: np.zeros((2, 2, 2)), dim=2))
+    chart_report = cartan.check_lagrangian(DoublePendulum(), cartan.Chart(lambda q: np.zeros((2, 2, 2)), dim=2),
+                                           q=[0.3, -0.2], samples=[(0.0, [0.3, -0.2], [1.0, -0.5])])
+    assert chart_report.ok and chart_report.samples == 1
+    with pytest.raises(ValueError, match="side"):
+        cartan.check_lagrangian(DoublePendulum(), cartan.Euclidean(dim=2), side="right")
+    with pytest.raises(ValueError, match="inertia"):
+        cartan.check_lagrangian(cartan.RigidBody(INERTIA), inertia=[1, 2, 3])

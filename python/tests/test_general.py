@@ -691,9 +691,14 @@ def test_chart_callback_errors_and_bad_input():
             raise ArithmeticError("boom")
         return half_plane_christoffel(q)
 
+    # An exception in a chart's field during a solve marks the point outside the chart, as NaN does
+    # (the documented rule): the solve fails with a status and names the first one; outside a solve
+    # every exception passes through.
     chart = cartan.Chart(broken, dim=2)
+    r = cartan.solve(chart, T=1.0, N=20, q0=[0, 1.0], qT=[1, 1.0], method="shooting")
+    assert not r.converged and "Chart.christoffel raised ArithmeticError" in r.message and "boom" in r.message
     with pytest.raises(ArithmeticError, match="boom"):
-        cartan.solve_general(chart, T=1.0, N=20, q0=[0, 1.0], qT=[1, 1.0])
+        chart.christoffel([0, 1.0], [1, 0], [0, 1])
     calls.clear()
     assert chart.christoffel([0, 1.0], [1, 0], [0, 1]).shape == (2,)  # usable again after the failed solve
     with pytest.raises(ValueError, match="outside the chart"):
@@ -746,15 +751,20 @@ def test_sol_of_a_general_collocation_result_has_scipys_splines():
     assert np.allclose(np.linalg.norm(s.q, axis=1), 1, atol=1e-14)  # on the sphere
 
 
-def test_a_general_result_pickles_without_its_manifold():
-    # A result travels (pickle, processes) with its arrays; its manifold, which may hold Python
-    # callbacks (a Chart), stays behind: sol then asks for it by name.
+def test_a_general_result_pickles_with_its_manifold_when_it_pickles():
+    # A result travels (pickle, processes) with its arrays and its problem; a manifold that pickles
+    # (the sphere) travels with it, one built from Python callbacks that do not (a Chart of a lambda)
+    # stays behind: sol then asks for it by name.
     import pickle
-    r = cartan.solve_general(Sphere(), gravity=1.0, **SPHERE_ARGS)
+    r = cartan.solve(Sphere(), gravity=1.0, **SPHERE_ARGS)
     back = pickle.loads(pickle.dumps(r))
-    assert back.space is None and r.space is not None
-    assert np.array_equal(back.q, r.q) and back.status == r.status
+    assert isinstance(back.space, Sphere) and np.array_equal(back.q, r.q) and back.status == r.status
+    assert np.array_equal(back.sol(0.5).q, r.sol(0.5).q) and cartan.verify(back).passed
+    chart = cartan.Chart(lambda q: np.zeros((2, 2, 2)), dim=2)
+    c = cartan.solve(chart, T=1.0, N=10, q0=[0.0, 0.0], qT=[1.0, 0.5])
+    back = pickle.loads(pickle.dumps(c))
+    assert back.space is None and c.space is not None and np.array_equal(back.q, c.q)
     with pytest.raises(ValueError, match="space = None"):
         back.sol(0.5)
-    back.space = Sphere()
-    assert np.array_equal(back.sol(0.5).q, r.sol(0.5).q)
+    back.space = chart
+    assert np.array_equal(back.sol(0.5).q, c.sol(0.5).q)

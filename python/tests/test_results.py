@@ -119,13 +119,18 @@ def test_the_models_are_the_library_catalogue():
 
 
 def test_a_python_lagrangian_is_named_but_not_reconstructible(tmp_path):
-    r = cartan.solve(PyRigidBody(INERTIA), lam=0.5, T=1, N=50, gT=GT_SO3)
+    model = PyRigidBody(INERTIA)
+    r = cartan.solve(model, lam=0.5, T=1, N=50, gT=GT_SO3)
     assert r.model == "python:PyRigidBody" and np.array_equal(r.inertia, np.diag(INERTIA))
-    with pytest.raises(ValueError, match="python:PyRigidBody.*not reconstructible"):
-        cartan.model_of(r)
-    # written and read back; `cartan verify` cannot rebuild the model and says which key.
+    assert cartan.model_of(r) is model and cartan.verify(r).passed  # the result carries it
+    # written and read back: the file names it and cannot rebuild it; `cartan verify` says which key.
     r.to_json(tmp_path / "py.json")
     back = cartan.load(tmp_path / "py.json")
+    with pytest.raises(ValueError, match="python:PyRigidBody.*not reconstructible"):
+        cartan.model_of(back)
+    with pytest.raises(ValueError, match="does not hold its Lagrangian"):
+        cartan.verify(back)
+    assert cartan.verify(back, model).passed
     assert back.model == r.model and back.energy is None and back.cumulative_action is None
     assert np.array_equal(back.P, r.P) and np.array_equal(back.u, r.u)  # no model needed
     out = run_cli("verify", str(tmp_path / "py.json"))
@@ -198,8 +203,8 @@ def test_non_finite_numbers_are_null_both_ways(tmp_path):
 
 def test_a_result_without_rows_travels_and_has_no_dense_output(tmp_path):
     r = solve("heisenberg/oscillator", N=10)
-    empty = dataclasses.replace(r, status="max-iterations", success=False, t=np.zeros(0), g=np.zeros((0, 3)),
-                                v=np.zeros((0, 3)), mu=np.zeros((0, 3)), xi=np.zeros((0, 3)))
+    empty = r.replace(status="max-iterations", success=False, t=np.zeros(0), g=np.zeros((0, 3)), v=np.zeros((0, 3)),
+                      mu=np.zeros((0, 3)), xi=np.zeros((0, 3)))
     empty.to_json(tmp_path / "empty.json")
     back = cartan.load(tmp_path / "empty.json")
     assert back.status == "max-iterations" and back.g.shape == (0, 3) and back.P.shape == (0, 3, 3)

@@ -382,10 +382,10 @@ def test_arguments_of_the_wrong_type_are_named_not_the_internal_signature():
     with pytest.raises(TypeError, match=r"^cartan\.solve: method = 3 \(int\) is not a string$"):
         cartan.solve(model, lam=0.5, T=1, N=10, gT=GT, method=3)
     sphere = dict(T=1, q0=cartan.Sphere.point([1, 0, 0]), qT=cartan.Sphere.point([0, 1, 0]))
-    with pytest.raises(TypeError, match=r"^cartan\.solve_general: N = 2\.5 \(float\) is not an integer$"):
-        cartan.solve_general(cartan.Sphere(), N=2.5, **sphere)
-    with pytest.raises(TypeError, match=r"^cartan\.solve_general: time_limit = 'soon' \(str\) is not a real number$"):
-        cartan.solve_general(cartan.Sphere(), N=10, time_limit="soon", **sphere)
+    with pytest.raises(TypeError, match=r"^cartan\.solve: N = 2\.5 \(float\) is not an integer$"):
+        cartan.solve(cartan.Sphere(), N=2.5, **sphere)
+    with pytest.raises(TypeError, match=r"^cartan\.solve: time_limit = 'soon' \(str\) is not a real number$"):
+        cartan.solve(cartan.Sphere(), N=10, time_limit="soon", **sphere)
 
 
 @pytest.mark.parametrize("method", ["auto", "shooting", "collocation", "two-level"])

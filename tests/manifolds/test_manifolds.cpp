@@ -282,6 +282,32 @@ TEST(Chart, HalfPlaneSectionalCurvatureIsMinusOne) {
   expect_invalid([] { manifolds::Chart<2>(manifolds::Chart<2>::ChristoffelField{}); }, "christoffel");
 }
 
+// A chart's default frame is orthonormal in its metric, E^T g E = I (so that l = 1/2 |v|^2 is
+// 1/2 g(q', q')), the coordinate directions orthonormalised in order (E upper triangular with a
+// positive diagonal): on the half-plane, y times the identity. Without a metric, the identity.
+// Rounding only: a Cholesky factor and a triangular solve of a 2 x 2 matrix (1e-15).
+TEST(Chart, DefaultFrameIsOrthonormalInTheMetric) {
+  const auto half = manifolds::poincare_half_plane();
+  EXPECT_NEAR_MATRIX(half.tangent_basis(Eigen::Vector2d(0.3, 0.5)), Eigen::Matrix2d(0.5 * Eigen::Matrix2d::Identity()), 1e-15);
+  const auto metric = [](const Eigen::Vector2d& q) {
+    Eigen::Matrix2d g;
+    g << 2 + q.x() * q.x(), 0.7, 0.7, 1 + q.y() * q.y();
+    return g;
+  };
+  const manifolds::Chart<2> chart([](const Eigen::Vector2d&) { return manifolds::Chart<2>::Coefficients{}; }, metric);
+  const Eigen::Vector2d q(0.4, -1.3);
+  const Eigen::Matrix2d e = chart.tangent_basis(q);
+  EXPECT_NEAR_MATRIX(Eigen::Matrix2d(e.transpose() * metric(q) * e), Eigen::Matrix2d::Identity(), 1e-14);
+  EXPECT_EQ(e(1, 0), 0.0);
+  EXPECT_GT(e(0, 0), 0.0);
+  EXPECT_GT(e(1, 1), 0.0);
+  const manifolds::Chart<2> flat([](const Eigen::Vector2d&) { return manifolds::Chart<2>::Coefficients{}; });
+  EXPECT_EQ(flat.tangent_basis(q), Eigen::Matrix2d::Identity());
+  const manifolds::Chart<2> indefinite([](const Eigen::Vector2d&) { return manifolds::Chart<2>::Coefficients{}; },
+                                       [](const Eigen::Vector2d&) { return Eigen::Matrix2d(Eigen::Vector2d(1, -1).asDiagonal()); });
+  expect_invalid([&] { indefinite.tangent_basis(q); }, {"metric", "symmetric positive definite"});
+}
+
 TEST(GroupManifold, LeviCivitaOfTheBiInvariantMetricIsCartanSchoutenOneHalf) {
   const auto lc = manifolds::GroupManifold<groups::SO3>::levi_civita(Eigen::Matrix3d::Identity());
   const auto cs = manifolds::GroupManifold<groups::SO3>::cartan_schouten(0.5);

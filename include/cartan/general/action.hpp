@@ -10,6 +10,7 @@
 // Its derivatives along endpoint-fixed variations vanish as h -> 0 at solutions of the problem, at
 // the scheme's order; nothing of the scheme is used.
 
+#include <utility>
 #include <vector>
 
 #include "cartan/general/problem.hpp"
@@ -17,14 +18,14 @@
 
 namespace cartan::general {
 
-/// S_h of the path through q_0..q_N at the uniform times k T / N (the manifold's piece of
-/// principle/action.hpp's rule).
-template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-double discrete_action(const GeneralProblem<M, L>& problem, const std::vector<manifolds::PointOf<M>>& q) {
+/// Calls add(h_k l_k) for each step of the path through q_0..q_N at the times t (the manifold's
+/// piece of principle/action.hpp's rule, the header's comment).
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L, class Add>
+void for_each_discrete_action_term(const GeneralProblem<M, L>& problem, const std::vector<manifolds::PointOf<M>>& q,
+                                   const std::vector<double>& t, Add&& add) {
   const M& m = problem.manifold;
   manifolds::FrameOf<M> frame = problem.initial_frame();
-  double action = 0;
-  for_each_action_term(uniform_times("discrete_action", problem.T, q.size() - 1), [&](std::size_t k, double t_mid, double h) {
+  for_each_action_term(t, [&](std::size_t k, double t_mid, double h) {
     const manifolds::VectorOf<M> d = m.difference(q[k], q[k + 1]);
     const manifolds::VectorOf<M> half = d / 2;
     const manifolds::PointOf<M> mid = m.step(q[k], half);
@@ -32,8 +33,27 @@ double discrete_action(const GeneralProblem<M, L>& problem, const std::vector<ma
     const manifolds::VectorOf<M> velocity = -m.difference(mid, q[k]) / (h / 2);
     frame = m.transport_along_step(q[k], d) * frame;
     return problem.lagrangian.value(t_mid, mid, manifolds::ComponentsOf<M>(manifolds::dual_frame<M>(frame_mid) * velocity));
-  }, [&](double term) { action += term; });
+  }, std::forward<Add>(add));
+}
+
+/// S_h of the path through q_0..q_N at the uniform times k T / N.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+double discrete_action(const GeneralProblem<M, L>& problem, const std::vector<manifolds::PointOf<M>>& q) {
+  double action = 0;
+  for_each_discrete_action_term(problem, q, uniform_times("discrete_action", problem.T, q.size() - 1),
+                                [&](double term) { action += term; });
   return action;
+}
+
+/// S_h over the first k steps of the path through q_0..q_N at the times t, k = 0..N (0 first; the
+/// last entry is the action).
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+std::vector<double> cumulative_discrete_action(const GeneralProblem<M, L>& problem, const std::vector<manifolds::PointOf<M>>& q,
+                                               const std::vector<double>& t) {
+  std::vector<double> out{0.0};
+  out.reserve(q.size());
+  for_each_discrete_action_term(problem, q, t, [&](double term) { out.push_back(out.back() + term); });
+  return out;
 }
 
 /// d/de S_h along q_k -> step(q_k, e w_k) (w_0 = w_N = 0), by a central difference with e = 1e-6

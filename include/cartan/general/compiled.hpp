@@ -22,6 +22,7 @@
 #include "cartan/manifolds/euclidean.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"
+#include "cartan/mechanics/check_report.hpp"
 #include "cartan/status.hpp"
 #include "cartan/principle/options.hpp"
 #include "cartan/verify/verdict.hpp"
@@ -50,6 +51,18 @@ template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 verify::Report verify_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x, int order, double tol,
                               Status status = Status::Converged);
 
+/// The frames, u = E v, energy and cumulative discrete action along `x` (along.hpp).
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralAlong<M> along_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x);
+
+/// A Lagrangian's callbacks against each other at the samples, and seeded samples around `base`
+/// (check_lagrangian.hpp).
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+mechanics::CheckReport check_lagrangian(const M& manifold, const L& l, const std::vector<ManifoldLagrangianSample<M>>& samples);
+template <manifolds::ManifoldWithConnection M>
+std::vector<ManifoldLagrangianSample<M>> lagrangian_samples(const M& manifold, const manifolds::PointOf<M>& base,
+                                                            const mechanics::CheckLagrangianOptions& options);
+
 }  // namespace cartan::general
 
 /// The shipped manifolds, one X(M) each (the list of the header comment).
@@ -66,7 +79,8 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
   X(::cartan::manifolds::GroupManifold<::cartan::groups::SE3>)
 
 /// `extern template` (declaration) or `template` (definition, in src/general/) of the solve, the
-/// shooting it runs (both entry points) and the verifier for the erased Lagrangian on M.
+/// shooting it runs (both entry points), the verifier, the quantities along a solution and the check
+/// of a Lagrangian for the erased Lagrangian on M (and the check's seeded samples on M).
 #define CARTAN_GENERAL_COMPILED(prefix, M)                                                                     \
   prefix ::cartan::general::GeneralSolution<M> cartan::general::solve(                                        \
       const ::cartan::general::GeneralProblem<M, ::cartan::general::ErasedLagrangian<M>>&,                     \
@@ -80,7 +94,15 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
       const ::cartan::general::GeneralShootingOptions&);                                                       \
   prefix ::cartan::verify::Report cartan::general::verify_general(                                              \
       const ::cartan::general::GeneralProblem<M, ::cartan::general::ErasedLagrangian<M>>&,                     \
-      const ::cartan::general::GeneralTrajectory<M>&, int, double, ::cartan::Status);
+      const ::cartan::general::GeneralTrajectory<M>&, int, double, ::cartan::Status);                    \
+  prefix ::cartan::general::GeneralAlong<M> cartan::general::along_general(                                   \
+      const ::cartan::general::GeneralProblem<M, ::cartan::general::ErasedLagrangian<M>>&,                     \
+      const ::cartan::general::GeneralTrajectory<M>&);                                                         \
+  prefix ::cartan::mechanics::CheckReport cartan::general::check_lagrangian(                                   \
+      const M&, const ::cartan::general::ErasedLagrangian<M>&,                                                 \
+      const std::vector<::cartan::general::ManifoldLagrangianSample<M>>&);                                      \
+  prefix std::vector<::cartan::general::ManifoldLagrangianSample<M>> cartan::general::lagrangian_samples(      \
+      const M&, const ::cartan::manifolds::PointOf<M>&, const ::cartan::mechanics::CheckLagrangianOptions&);
 
 #define CARTAN_GENERAL_EXTERN(M) CARTAN_GENERAL_COMPILED(extern template, M)
 CARTAN_GENERAL_SHIPPED_MANIFOLDS(CARTAN_GENERAL_EXTERN)

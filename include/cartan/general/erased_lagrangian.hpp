@@ -37,6 +37,9 @@ class ErasedLagrangian {
   LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q, const Components& v) const {
     return impl_->hessian(manifold, t, q, v);
   }
+  /// Whether the wrapped Lagrangian has its own `hessian` (else hessian() differences it): what
+  /// check_lagrangian checks.
+  bool has_hessian() const { return impl_->has_hessian(); }
 
  private:
   struct Interface {
@@ -46,6 +49,7 @@ class ErasedLagrangian {
     virtual Components velocity(double t, const Point& q, const Components& mu) const = 0;
     virtual Vector point_gradient(double t, const Point& q, const Components& v) const = 0;
     virtual LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q, const Components& v) const = 0;
+    virtual bool has_hessian() const = 0;
   };
   template <class L>
   struct Model final : Interface {
@@ -62,6 +66,9 @@ class ErasedLagrangian {
     }
     LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q, const Components& v) const override {
       return lagrangian_hessian(manifold, lagrangian, t, q, v);
+    }
+    bool has_hessian() const override {
+      return requires(const L& l, const M& m, double t, const Point& q, const Components& v) { l.hessian(m, t, q, v); };
     }
     L lagrangian;
   };

@@ -37,15 +37,8 @@ void validate_trajectory(const GeneralProblem<M, L>& problem, const GeneralTraje
     throw_invalid(where, what, std::to_string(n) + " times",
                   "needs at least 2 times and q, frame, v, mu, Xi at every time");
   }
-  const double slack = 1e-12 * problem.T;
-  if (!(std::abs(x.t.front()) <= slack) || !(std::abs(x.t.back() - problem.T) <= slack)) {
-    throw_invalid(where, what, "t from " + format_value(x.t.front()) + " to " + format_value(x.t.back()),
-                  "must run from 0 to T = " + format_value(problem.T));
-  }
+  require_sample_times(x.t, problem.T, 1e-12, where, what);
   for (std::size_t k = 0; k < n; ++k) {
-    if (k > 0 && !(x.t[k] > x.t[k - 1])) {
-      throw_invalid(where, what, "t[" + std::to_string(k) + "] = " + format_value(x.t[k]), "times must increase strictly");
-    }
     if (!x.q[k].allFinite() || !x.frame[k].allFinite() || !x.v[k].allFinite() || !x.mu[k].allFinite() ||
         !x.Xi[k].allFinite()) {
       throw_invalid(where, what, "entry " + std::to_string(k), "must be finite");
@@ -181,7 +174,7 @@ class GeneralScheme {
   /// The node reached from `node` with the rates r (order 1: r at the node; order 2: their mean).
   void advance(const Node& node, const Rates& r, Node& out) const {
     const Vector hu = dt_ * r.u;
-    out.t = node.t + dt_;
+    out.t = next_node_time(node.t, dt_, problem_.T);
     out.q = problem_.manifold.step(node.q, hu);
     out.frame = problem_.manifold.transport_along_step(node.q, hu) * node.frame;
     out.mu = node.mu + dt_ * r.dmu;

@@ -56,6 +56,24 @@ struct GeneralSolution : ResultCore {
   manifolds::ComponentMatrixOf<M> Xi0 = manifolds::ComponentMatrixOf<M>::Zero();
 };
 
+/// Quantities along a sampled solution (along.hpp), one entry per sample: the parallel frame E_k,
+/// u_k = E_k v_k, the energy E_k = mu.v - l and the cumulative discrete action (0 first, the action
+/// last).
+template <manifolds::ManifoldWithConnection M>
+struct GeneralAlong {
+  std::vector<manifolds::FrameOf<M>> frame;
+  std::vector<manifolds::VectorOf<M>> u;
+  std::vector<double> energy, action;
+};
+
+/// A point (t, q, v) where general::check_lagrangian compares a Lagrangian's callbacks.
+template <manifolds::ManifoldWithConnection M>
+struct ManifoldLagrangianSample {
+  double t = 0;
+  manifolds::PointOf<M> q;
+  manifolds::ComponentsOf<M> v;
+};
+
 /// The Lie-group shooting's options (order, tolerance, max_iterations, analytic_jacobian: the
 /// tangent-linear sweep of tangent.hpp, no_progress_window, monitor), so that the continuation
 /// path (transported/continuation.hpp) drives both problem families.

@@ -19,6 +19,7 @@
 #include <random>
 
 #include "cartan/general/action.hpp"
+#include "cartan/general/along.hpp"
 #include "cartan/general/compiled.hpp"
 #include "cartan/general/problem.hpp"
 #include "cartan/numerics/spectrum.hpp"
@@ -37,10 +38,7 @@ class GeneralChecks {
 
   /// `x` needs at least 2 samples at uniform times on [0, T] (validated by the caller).
   GeneralChecks(const GeneralProblem<M, L>& problem, GeneralTrajectory<M> x) : p_(problem), x_(std::move(x)) {
-    x_.frame.assign(1, p_.initial_frame());
-    for (std::size_t k = 0; k + 1 < size(); ++k) {
-      x_.frame.push_back(p_.manifold.transport_along_step(x_.q[k], difference(k, k + 1)) * x_.frame.back());
-    }
+    x_.frame = transported_frames(p_, x_.q);
   }
 
   std::size_t size() const { return x_.t.size(); }

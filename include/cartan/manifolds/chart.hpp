@@ -12,7 +12,8 @@
 // schemes' step sizes, where a is of order h omega (tests/manifolds checks it against a 200-step
 // integration).
 // D Gamma is a central difference (geometry.hpp). An optional metric field g(q) makes the chart a
-// MetricManifold (the tests then check that transport preserves it: a Levi-Civita Gamma).
+// MetricManifold (the tests then check that transport preserves it: a Levi-Civita Gamma), and
+// its default frame (tangent_basis) orthonormal in it.
 // The domain: `validate` rejects points where Gamma (or g) is not finite, with the callback's own
 // exception passing through, so a field may throw outside its domain (e.g. y <= 0 on the half-plane).
 
@@ -83,7 +84,23 @@ class Chart {
     }
     return y;
   }
-  Frame tangent_basis(const Point&) const { return Frame::Identity(); }
+  /// The coordinate directions, orthonormalised in the metric when the chart has one (Gram-Schmidt
+  /// in g, i.e. E = R^-1 with g = R^T R its Cholesky factor, so that E^T g E = I: the frame the
+  /// transported velocity's components are taken in, so l = 1/2 |v|^2 is 1/2 g(q', q')); without a
+  /// metric the coordinate basis. Throws std::invalid_argument where the metric is not symmetric
+  /// positive definite.
+  Frame tangent_basis(const Point& q) const {
+    if (!metric_) return Frame::Identity();
+    const Operator g = metric_(q);
+    const double size = g.cwiseAbs().maxCoeff();
+    const Eigen::LLT<Operator> cholesky(g);
+    if (!g.allFinite() || !((g - g.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * size) ||
+        cholesky.info() != Eigen::Success) {
+      throw_invalid("Chart.tangent_basis", "metric at " + format_value(q), format_value(g),
+                    "is not symmetric positive definite");
+    }
+    return cholesky.matrixU().solve(Frame::Identity());
+  }
   bool has_parallel_torsion_and_curvature() const { return parallel_; }
   std::optional<Operator> metric(const Point& q) const {
     return metric_ ? std::optional<Operator>(metric_(q)) : std::nullopt;

@@ -70,16 +70,6 @@ struct LagrangianSample {
   groups::TangentOf<G> v = groups::TangentOf<G>::Zero();
 };
 
-struct CheckLagrangianOptions {
-  int samples = 8;               ///< how many seeded samples
-  std::uint32_t seed = 20261122u;
-  /// t uniform in [0, scale]; g = exp(w) and v with every coordinate uniform in [-scale, scale].
-  double scale = 1.0;
-  /// How the model trivialises group_gradient (lagrangian.hpp): Left for left-reduced models,
-  /// Right for right-reduced ones (e.g. SpatialRigidBody).
-  groups::Side side = groups::Side::Left;
-};
-
 /// The seeded samples of `options` (std::mt19937 mapped to [-1, 1] by hand, so that the points are
 /// the same with every standard library). Throws std::invalid_argument for samples < 1 or a scale
 /// that is not finite and positive.
@@ -123,21 +113,28 @@ auto central_difference(const F& f, double h) {
   return Result{d1, (d1 - d2).cwiseAbs().maxCoeff() + kRoundingEps * size / h};
 }
 
-/// The Jacobian of f (a vector-valued function of a tangent step x) at 0 by central differences
+/// The Jacobian of f (a vector-valued function of a step x in R^Cols) at 0 by central differences
 /// along the unit vectors with step h, and the largest error estimate of its columns.
-template <groups::LieGroup G, int Rows, class F>
-auto difference_jacobian(const F& f, double h) {
+template <int Cols, int Rows, class F>
+auto difference_jacobian_in(const F& f, double h) {
   struct Result {
-    Eigen::Matrix<double, Rows, G::kDim> jacobian;
+    Eigen::Matrix<double, Rows, Cols> jacobian;
     double error = 0;
   };
   Result out;
-  for (int i = 0; i < G::kDim; ++i) {
-    const auto column = central_difference([&](double e) { return Eigen::Matrix<double, Rows, 1>(f(groups::TangentOf<G>::Unit(i) * e)); }, h);
+  for (int i = 0; i < Cols; ++i) {
+    const auto column = central_difference(
+        [&](double e) { return Eigen::Matrix<double, Rows, 1>(f(Eigen::Matrix<double, Cols, 1>::Unit(i) * e)); }, h);
     out.jacobian.col(i) = column.derivative;
     out.error = std::max(out.error, column.error);
   }
   return out;
+}
+
+/// The same along a group's tangent steps x (algebra coordinates).
+template <groups::LieGroup G, int Rows, class F>
+auto difference_jacobian(const F& f, double h) {
+  return difference_jacobian_in<G::kDim, Rows>(f, h);
 }
 
 /// The relative discrepancy of a callback's result `a` with the reference `d` whose absolute
@@ -225,21 +222,30 @@ void check_first_derivatives(const L& l, const LagrangianSample<G>& s, groups::S
   });
 }
 
-/// velocity(momentum(v)) = v and momentum(velocity(mu)) = mu at one sample (the larger discrepancy).
-template <groups::LieGroup G, class L>
-void check_velocity(const L& l, const LagrangianSample<G>& s, int k, const std::string& at, CheckAccumulator& velocity) {
-  run_sample(velocity, k, at, kInverseThreshold, [&] {
-    const groups::CovectorOf<G> mu = l.momentum(s.t, s.g, s.v);
-    const groups::TangentOf<G> back = l.velocity(s.t, s.g, mu);
-    const groups::CovectorOf<G> mu2 = mu.reverse();
-    const groups::TangentOf<G> w = l.velocity(s.t, s.g, mu2);
-    const groups::CovectorOf<G> forth = l.momentum(s.t, s.g, w);
-    const Discrepancy a = relative_discrepancy(back, s.v, 0), b = relative_discrepancy(forth, mu2, 0);
+/// velocity(momentum(v)) = v and momentum(velocity(mu)) = mu at one sample (the larger discrepancy),
+/// with `momentum` and `velocity` the callbacks at the sample's t and point (Vector: their type).
+template <class Vector, class Momentum, class Velocity>
+void check_inverse(const Momentum& momentum, const Velocity& velocity, const Vector& v, int k, const std::string& at,
+                   CheckAccumulator& acc) {
+  run_sample(acc, k, at, kInverseThreshold, [&] {
+    const Vector mu = momentum(v);
+    const Vector back = velocity(mu);
+    const Vector mu2 = mu.reverse();
+    const Vector w = velocity(mu2);
+    const Vector forth = momentum(w);
+    const Discrepancy a = relative_discrepancy(back, v, 0), b = relative_discrepancy(forth, mu2, 0);
     std::string note = !all_finite(mu) ? "momentum returned a non-finite value"
                        : !all_finite(back) || !all_finite(w) ? "velocity returned a non-finite value"
                        : !all_finite(forth) ? "momentum returned a non-finite value" : "";
     return std::pair{a.discrepancy >= b.discrepancy ? a : b, note};
   });
+}
+
+template <groups::LieGroup G, class L>
+void check_velocity(const L& l, const LagrangianSample<G>& s, int k, const std::string& at, CheckAccumulator& velocity) {
+  check_inverse([&](const groups::TangentOf<G>& v) { return groups::CovectorOf<G>(l.momentum(s.t, s.g, v)); },
+                [&](const groups::CovectorOf<G>& mu) { return groups::TangentOf<G>(l.velocity(s.t, s.g, mu)); }, s.v, k, at,
+                velocity);
 }
 
 /// The four blocks of the model's hessian against differences of momentum and group_gradient.

@@ -1,12 +1,29 @@
 #pragma once
 // The report of check_lagrangian (check_lagrangian.hpp): one entry per check of a model's
 // callbacks, a verdict, and a printable text that names each failing callback and the size of
-// its discrepancy. Not templated (compiled in src/mechanics/check_report.cpp).
+// its discrepancy, and the options of the seeded samples. Not templated (compiled in
+// src/mechanics/check_report.cpp).
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "cartan/groups/side.hpp"
+
 namespace cartan::mechanics {
+
+/// The seeded samples of a check (check_lagrangian.hpp on a group, general/check_lagrangian.hpp on
+/// a manifold).
+struct CheckLagrangianOptions {
+  int samples = 8;               ///< how many seeded samples
+  std::uint32_t seed = 20261122u;
+  /// t uniform in [0, scale]; g = exp(w) (on a manifold q = step(q, E w)) and v with every
+  /// coordinate uniform in [-scale, scale].
+  double scale = 1.0;
+  /// How the model trivialises group_gradient (lagrangian.hpp): Left for left-reduced models,
+  /// Right for right-reduced ones (e.g. SpatialRigidBody). Not used on a manifold.
+  groups::Side side = groups::Side::Left;
+};
 
 /// One check of one callback over all samples.
 struct CallbackCheck {

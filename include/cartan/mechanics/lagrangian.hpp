@@ -63,7 +63,9 @@ inline constexpr double kModerateArgument = 1e100;
 /// model callback's non-finite result is the model's fault, not a diverging iterate's.
 template <class E, class X>
 bool moderate_arguments(double t, const E& g, const X& x) {
-  const auto moderate = [](const auto& a) { return a.cwiseAbs().maxCoeff() <= kModerateArgument; };  // false for NaN
+  // allFinite first: Eigen's maxCoeff may skip a NaN entry ([1, nan] gave 1), and a NaN argument
+  // (a point outside a chart, a diverging iterate) is the solver's business, not the model's fault.
+  const auto moderate = [](const auto& a) { return a.allFinite() && a.cwiseAbs().maxCoeff() <= kModerateArgument; };
   return std::abs(t) <= kModerateArgument && moderate(g) && moderate(x);
 }
 

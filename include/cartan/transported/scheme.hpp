@@ -295,7 +295,7 @@ class TransportedScheme {
   }
 
   void advance(const Node& node, const Rates& r, const StepElements& step, Node& out, const Covector* xi_next) const {
-    out.t = node.t + dt_;
+    out.t = next_node_time(node.t, dt_, problem_.T);
     out.g = G::compose(node.g, step.exp_u);
     out.transport = G::compose(step.exp_a, node.transport);  // disc_exp_update (transport/disc_exp.hpp)
     out.mu = node.mu + dt_ * r.dmu;

@@ -10,6 +10,7 @@
 
 #include "cartan/errors.hpp"
 #include "cartan/groups/group.hpp"
+#include "cartan/principle/horizon.hpp"
 
 namespace cartan::transported {
 
@@ -57,14 +58,8 @@ struct TransportedTrajectory {
       require_finite(v[k], where, "trajectory.v" + row);
       require_finite(xi[k], where, "trajectory.xi" + row);
       if (with_mu) require_finite(mu[k], where, "trajectory.mu" + row);
-      if (k > 0 && !(t[k] > t[k - 1])) {
-        throw_invalid(where, "trajectory.t" + row, format_value(t[k]), "must be strictly increasing");
-      }
     }
-    if (std::abs(t.front()) > time_tolerance * T || std::abs(t.back() - T) > time_tolerance * T) {
-      throw_invalid(where, "trajectory.t", "[" + format_value(t.front()) + ", " + format_value(t.back()) + "]",
-                    "must run from 0 to T = " + format_value(T));
-    }
+    require_sample_times(t, T, time_tolerance, where, "trajectory");
   }
 };
 
