@@ -6,7 +6,8 @@
 // stops it the same way; the solve's entry point then reports Status::TimeLimit. The deadline and a
 // cancel flag (the CLI's SIGINT flag, Python's cancel token) are also polled inside long sweeps
 // (`stop_pending`: cheap, no callback), so that a solve stops within about a millisecond of work
-// however long its iterations are; the stop callback runs once per iteration.
+// however long its iterations are; the stop callback runs once per iteration, and every
+// kCallbackInterval inside the long steps of an iteration that poll() (a dense factorisation).
 
 #include <atomic>
 #include <chrono>
@@ -63,6 +64,21 @@ class SolveMonitor {
   static std::string stopped_message(int k) {
     return "stopped at step " + std::to_string(k) + " (time limit or cancellation)";
   }
+  /// stop_pending(), and the stop callback as stop_requested() does, but at most every
+  /// kCallbackInterval (Python's callback takes the GIL): for work inside an iteration that is not
+  /// a sweep and may last seconds (a dense Hessian and its LU, a collocation Jacobian), polled
+  /// between pieces of a few milliseconds. Once true, stays true, and stop_requested() is true too.
+  bool poll() const {
+    if (stopped_ || stop_pending()) return stopped_ = true;
+    if (!stop_) return false;
+    const auto now = std::chrono::steady_clock::now();
+    if (now < next_callback_) return false;
+    next_callback_ = now + kCallbackInterval;
+    return stop_requested();
+  }
+  /// poll() of `monitor`, false without one.
+  static bool poll(const SolveMonitor* monitor) { return monitor != nullptr && monitor->poll(); }
+  static constexpr std::chrono::milliseconds kCallbackInterval{20};
   /// A copy reporting under `name`, or nothing without a monitor (for an options' monitor pointer).
   static std::optional<SolveMonitor> staged(const SolveMonitor* monitor, std::string name) {
     return monitor == nullptr ? std::nullopt : std::optional<SolveMonitor>(monitor->stage(std::move(name)));
@@ -139,6 +155,7 @@ class SolveMonitor {
   std::shared_ptr<Deadline> deadline_;
   std::shared_ptr<const std::atomic<bool>> cancel_;
   mutable bool stopped_ = false;
+  mutable std::chrono::steady_clock::time_point next_callback_{};  ///< poll()'s next call of stop_
 };
 
 }  // namespace cartan

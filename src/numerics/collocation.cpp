@@ -3,7 +3,6 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -40,7 +39,9 @@ constexpr int kMaxPieces = 6;
 /// The user's functions with evaluation counts and forward-difference Jacobians.
 class Model {
  public:
-  Model(const BvpSystem& system, double fd_step) : s_(system), fd_step_(fd_step) {}
+  /// `monitor` (may be null) is polled inside the difference Jacobians (rhs_jacobian).
+  Model(const BvpSystem& system, double fd_step, const SolveMonitor* monitor)
+      : s_(system), fd_step_(fd_step), monitor_(monitor) {}
   int n() const { return s_.n; }
   int k() const { return s_.k; }
   int evaluations() const { return evaluations_; }
@@ -61,23 +62,25 @@ class Model {
   void bc(ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p, VectorRef out) const { s_.bc(ya, yb, p, out); }
 
   /// df/dy (n x n m) and df/dp (n x k m) at the columns of y, where f0 = f(t, y, p) columnwise.
-  void rhs_jacobian(const VectorXd& t, const MatrixXd& y, const VectorXd& p, const MatrixXd& f0, MatrixXd& dfdy,
+  /// False when the monitor polled a stop: every kPointsBetweenPolls points (a millisecond or two
+  /// of differences), or between the components of the batched differences.
+  bool rhs_jacobian(const VectorXd& t, const MatrixXd& y, const VectorXd& p, const MatrixXd& f0, MatrixXd& dfdy,
                     MatrixXd& dfdp) {
     const Index m = t.size();
     dfdy.resize(n(), n() * m);
     dfdp.resize(n(), k() * m);
     if (s_.rhs_jacobian_batch) {
       s_.rhs_jacobian_batch(t, y, p, dfdy, dfdp);
-      return;
+      return true;
     }
-    if (!s_.rhs_jacobian && s_.rhs_batch) {
-      batched_differences(t, y, p, f0, dfdy, dfdp);
-      return;
-    }
+    if (!s_.rhs_jacobian && s_.rhs_batch) return batched_differences(t, y, p, f0, dfdy, dfdp);
     for (Index j = 0; j < m; ++j) {
+      if (j % kPointsBetweenPolls == kPointsBetweenPolls - 1 && SolveMonitor::poll(monitor_)) return false;
       rhs_jacobian(t[j], y.col(j), p, f0.col(j), dfdy.middleCols(n() * j, n()), dfdp.middleCols(k() * j, k()));
     }
+    return true;
   }
+  static constexpr Index kPointsBetweenPolls = 256;
 
   /// d bc / d(ya, yb, p) at a point where bc = r0.
   void bc_jacobian(const VectorXd& ya, const VectorXd& yb, const VectorXd& p, const VectorXd& r0, MatrixXd& dya,
@@ -111,12 +114,13 @@ class Model {
   /// The forward differences of the pointwise path below, every point at once: component i of y
   /// (then of p) is moved at all m points together, one rhs_batch call each (n + k calls instead of
   /// m (n + k)); the steps, and so the values, are those of the pointwise path.
-  void batched_differences(const VectorXd& t, const MatrixXd& y, const VectorXd& p, const MatrixXd& f0,
+  bool batched_differences(const VectorXd& t, const MatrixXd& y, const VectorXd& p, const MatrixXd& f0,
                            MatrixXd& dfdy, MatrixXd& dfdp) {
     const Index m = t.size();
     MatrixXd moved = y, f(n(), m);
     VectorXd step(m);
     for (Index i = 0; i < n(); ++i) {
+      if (SolveMonitor::poll(monitor_)) return false;
       for (Index j = 0; j < m; ++j) {
         moved(i, j) = moved_by_step(y(i, j));
         step[j] = moved(i, j) - y(i, j);
@@ -127,12 +131,14 @@ class Model {
     }
     VectorXd pp = p;
     for (Index i = 0; i < k(); ++i) {
+      if (SolveMonitor::poll(monitor_)) return false;
       pp[i] = moved_by_step(p[i]);
       const double dp = pp[i] - p[i];
       rhs(t, y, pp, f);
       for (Index j = 0; j < m; ++j) dfdp.col(k() * j + i) = (f.col(j) - f0.col(j)) / dp;
       pp[i] = p[i];
     }
+    return true;
   }
 
   /// x moved by the difference step fd_step max(1, |x|), the same for every difference quotient.
@@ -152,6 +158,7 @@ class Model {
 
   const BvpSystem& s_;
   double fd_step_;
+  const SolveMonitor* monitor_;
   int evaluations_ = 0;
 };
 
@@ -227,15 +234,18 @@ struct RateJacobians {
   MatrixXd dy_mid, dp_mid;      // n x n (m - 1), n x k (m - 1)
 };
 
-/// The Jacobian of the residual with respect to (y_0, ..., y_{m-1}, p), blockwise.
+/// The Jacobian of the residual with respect to (y_0, ..., y_{m-1}, p), blockwise; false when the
+/// monitor polled a stop in the differences (Model::rhs_jacobian).
 template <int N>
-void jacobian(Model& model, const Iterate& it, RateJacobians& rates, CollocationJacobian& jac) {
+bool jacobian(Model& model, const Iterate& it, RateJacobians& rates, CollocationJacobian& jac) {
   using Square = Eigen::Matrix<double, N, N>;
   const int n = model.n(), k = model.k();
   const Index m = it.nodes();
   jac.resize(n, k, m);
-  model.rhs_jacobian(it.t, it.y, it.p, it.f, rates.dy_nodes, rates.dp_nodes);
-  model.rhs_jacobian(it.tmid, it.ymid, it.p, it.fmid, rates.dy_mid, rates.dp_mid);
+  if (!model.rhs_jacobian(it.t, it.y, it.p, it.f, rates.dy_nodes, rates.dp_nodes) ||
+      !model.rhs_jacobian(it.tmid, it.ymid, it.p, it.fmid, rates.dy_mid, rates.dp_mid)) {
+    return false;
+  }
   const Square eye = Square::Identity(n, n);
   for (Index i = 0; i + 1 < m; ++i) {
     const auto jy_left = square<N>(rates.dy_nodes, i), jy_right = square<N>(rates.dy_nodes, i + 1);
@@ -252,6 +262,7 @@ void jacobian(Model& model, const Iterate& it, RateJacobians& rates, Collocation
     }
   }
   model.bc_jacobian(it.y.col(0), it.y.col(m - 1), it.p, it.residual.tail(n + k), jac.Da, jac.Db, jac.Dp);
+  return true;
 }
 
 /// Factorises the Newton matrix with the chosen solver and solves with it.
@@ -259,9 +270,10 @@ class LinearSolver {
  public:
   /// `block`: the block LU to use (the workspace's, whose storage outlives the solve).
   LinearSolver(LinearSolverKind kind, BlockLU& block) : kind_(kind), block_(block) {}
-  bool factorize(const CollocationJacobian& jac) {
+  /// False when the matrix is singular, or when the block LU polled a stop from `monitor` (stopped()).
+  bool factorize(const CollocationJacobian& jac, const SolveMonitor* monitor) {
     if (kind_ == LinearSolverKind::BlockLU) {
-      const bool ok = block_.factorize(jac);
+      const bool ok = block_.factorize(jac, [monitor] { return SolveMonitor::poll(monitor); });
       error_ = block_.error();
       return ok;
     }
@@ -278,6 +290,7 @@ class LinearSolver {
     return kind_ == LinearSolverKind::BlockLU ? block_.solve(rhs) : VectorXd(sparse_.solve(rhs));
   }
   const std::string& error() const { return error_; }
+  bool stopped() const { return kind_ == LinearSolverKind::BlockLU && block_.stopped(); }
 
  private:
   LinearSolverKind kind_;
@@ -378,8 +391,6 @@ struct NewtonOutcome {
 struct Counters {
   int newton = 0;
   int jacobians = 0;
-  /// The last Newton iteration's time per node: the next one's on a refined mesh is foreseen from it.
-  std::chrono::duration<double> iteration_per_node{0};
 };
 
 bool newton_converged(const ResidualSize& size, const CollocationOptions& options) {
@@ -419,18 +430,11 @@ NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOption
   auto worth_reusing = [&](double simplified, double norm) {
     return options.reuse_jacobian && simplified <= kReuseContraction * norm;
   };
-  // Between the phases of an iteration (Jacobian, factorisation, each trial): a stop abandons the
-  // iteration and returns the last accepted iterate, `it`.
-  auto stop_pending = [&] { return options.monitor != nullptr && options.monitor->stop_pending(); };
+  // Inside the phases of an iteration (the Jacobian's differences, the factorisation) and between
+  // them (each trial): a stop abandons the iteration and returns the last accepted iterate, `it`.
+  auto poll = [&] { return SolveMonitor::poll(options.monitor); };
   const NewtonOutcome stopped{Status::Interrupted, "stop requested"};
-  auto iteration_begin = std::chrono::steady_clock::now();
   for (int iteration = 0;; ++iteration) {
-    const auto now = std::chrono::steady_clock::now();
-    const auto nodes = static_cast<double>(it.nodes());
-    if (iteration > 0) counters.iteration_per_node = (now - iteration_begin) / nodes;
-    iteration_begin = now;
-    // The next iteration is begun only if it can end in time (its length foreseen from the last).
-    const auto next_iteration = std::chrono::duration_cast<std::chrono::nanoseconds>(counters.iteration_per_node * nodes);
     const ResidualSize size = residual_size(it, n, options.tol);
     if (newton_converged(size, options)) return {};
     if (iteration == options.max_newton_iterations) {
@@ -440,7 +444,7 @@ NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOption
     }
     if (options.monitor != nullptr) {
       options.monitor->report(counters.newton, std::max(size.collocation, size.boundary));
-      if (options.monitor->stop_requested_before(next_iteration)) return stopped;
+      if (options.monitor->stop_requested()) return stopped;
     }
     ++counters.newton;
     const VectorXd z = it.unknowns();
@@ -458,10 +462,11 @@ NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOption
         }
       }
     }
-    jacobian<N>(model, it, rates, jac);
+    if (!jacobian<N>(model, it, rates, jac)) return stopped;
     ++counters.jacobians;
-    if (stop_pending()) return stopped;
-    if (!solver.factorize(jac)) {
+    if (poll()) return stopped;
+    if (!solver.factorize(jac, options.monitor)) {
+      if (solver.stopped()) return stopped;
       return {Status::SingularJacobian, "the collocation Jacobian is singular on " + std::to_string(it.nodes()) +
                                                " nodes (" + solver.error() + ")"};
     }
@@ -474,7 +479,7 @@ NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOption
     double alpha = 1;
     bool accepted = false;
     for (int backtrack = 0; backtrack < kMaxBacktracks && !accepted; ++backtrack, alpha /= 2) {
-      if (stop_pending()) return stopped;
+      if (poll()) return stopped;
       if (!evaluate<N>(model, it, VectorXd(z - alpha * step), trial)) continue;
       chord = solver.solve(trial.residual);
       const double simplified = chord.norm();
@@ -615,7 +620,7 @@ void validate_input(const BvpSystem& system, const VectorXd& t, const MatrixXd& 
 template <int N>
 BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p, const CollocationOptions& options,
               bool adapt) {
-  Model model(system, options.fd_step);
+  Model model(system, options.fd_step, options.monitor);
   Counters counters;
   BvpResult result;
   const WorkspaceLease lease;
@@ -638,12 +643,13 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
     const Index m = it.nodes();
     std::vector<int> pieces(static_cast<std::size_t>(m - 1), 2);  // after a Newton failure: halve all
     std::string why = outcome.message;
+    VectorXd rms;
     if (outcome.status == Status::Converged) {
       if (!adapt) {
         fill<N>(result, model, workspace, counters, Status::Converged, "collocation equations solved on the given mesh");
         return result;
       }
-      const VectorXd rms = rms_residuals<N>(model, workspace);
+      rms = rms_residuals<N>(model, workspace);
       if (rms.maxCoeff() <= options.tol) {
         fill<N>(result, model, workspace, counters, Status::Converged, "residual below tol = " + format_value(options.tol), &rms);
         return result;
@@ -668,6 +674,11 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
     if (round == options.max_refinements) {
       fill<N>(result, model, workspace, counters, Status::NotConverged,
            why + " after max_refinements = " + std::to_string(options.max_refinements));
+      return result;
+    }
+    if (SolveMonitor::poll(options.monitor)) {  // before the refined mesh's interpolation and first evaluation
+      fill<N>(result, model, workspace, counters, Status::Interrupted, "stop requested before refining",
+              rms.size() > 0 ? &rms : nullptr);
       return result;
     }
     refine(it, pieces, t, y);

@@ -150,7 +150,7 @@ void forward(const Panel& M, int n, Index rows, Vector& b) {
 }  // namespace
 
 template <int N, int Q>
-bool BlockLU::factorize_panels(const CollocationJacobian& J) {
+bool BlockLU::factorize_panels(const CollocationJacobian& J, const std::function<bool()>& stop) {
   const int n = n_, k = k_, q = n_ + k_, width = 2 * n + q;  // panel columns: current | next | border (y_0, p)
   const Index steps = steps_;
   const Index stride = Index{2} * n * width;  // doubles per panel before the last
@@ -158,6 +158,11 @@ bool BlockLU::factorize_panels(const CollocationJacobian& J) {
   panels_.resize(static_cast<std::size_t>(size));  // keeps its capacity when smaller
   swaps_.resize(static_cast<std::size_t>(n * steps));
   for (Index j = 0; j < steps; ++j) {
+    if (j % kStepsBetweenPolls == kStepsBetweenPolls - 1 && stop && stop()) {
+      stopped_ = true;
+      error_ = "stopped at block " + std::to_string(j) + " (time limit or cancellation)";
+      return false;
+    }
     const bool last = j + 1 == steps;
     const Index fresh = last ? q : n;  // rows entering: r_{j+1}, or the boundary conditions
     double* data = panels_.data() + stride * j;
@@ -264,12 +269,15 @@ decltype(auto) with_panel_shape(int n, int q, F&& f) {
 
 }  // namespace
 
-bool BlockLU::factorize(const CollocationJacobian& J) {
+bool BlockLU::factorize(const CollocationJacobian& J, const std::function<bool()>& stop) {
   n_ = J.n;
   k_ = J.k;
   steps_ = J.m - 1;
   error_.clear();
-  return with_panel_shape(n_, n_ + k_, [&](auto N, auto Q) { return factorize_panels<decltype(N)::value, decltype(Q)::value>(J); });
+  stopped_ = false;
+  return with_panel_shape(n_, n_ + k_, [&](auto N, auto Q) {
+    return factorize_panels<decltype(N)::value, decltype(Q)::value>(J, stop);
+  });
 }
 
 VectorXd BlockLU::solve(const VectorXd& rhs) const {

@@ -2,8 +2,11 @@
 // dense partial-pivoting LU of the same matrix, and its singularity detection.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <memory>
 #include <random>
 
+#include "cartan/monitor.hpp"
 #include "cartan/numerics/collocation_jacobian.hpp"
 #include "test_support.hpp"
 
@@ -49,6 +52,24 @@ TEST(BlockLU, DetectsSingularMatrices) {
   BlockLU lu;
   EXPECT_FALSE(lu.factorize(j));
   EXPECT_NE(lu.error().find("singular"), std::string::npos) << lu.error();
+  EXPECT_FALSE(lu.stopped());
+}
+
+// The factorisation polls its stop predicate every kStepsBetweenPolls steps: with a monitor's
+// cancel flag raised it stops at the first poll (the flag lowered: the same matrix factorises).
+TEST(BlockLU, StopsOnARaisedCancelFlag) {
+  std::mt19937 rng(cartan::testing::kSeed);
+  const CollocationJacobian j = random_jacobian(6, 0, 2 * BlockLU::kStepsBetweenPolls + 10, rng);
+  const auto flag = std::make_shared<std::atomic<bool>>(true);
+  const SolveMonitor monitor = SolveMonitor().with_cancel_flag(flag);
+  BlockLU lu;
+  EXPECT_FALSE(lu.factorize(j, [&] { return monitor.poll(); }));
+  EXPECT_TRUE(lu.stopped());
+  EXPECT_EQ(lu.error(), "stopped at block 255 (time limit or cancellation)");
+  flag->store(false);
+  const SolveMonitor fresh = SolveMonitor().with_cancel_flag(flag);
+  EXPECT_TRUE(lu.factorize(j, [&] { return fresh.poll(); })) << lu.error();
+  EXPECT_FALSE(lu.stopped());
 }
 
 }  // namespace

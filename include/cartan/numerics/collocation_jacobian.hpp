@@ -18,6 +18,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -40,8 +41,11 @@ struct CollocationJacobian {
 
 class BlockLU {
  public:
-  /// Returns false (and sets error()) when a pivot is zero or not finite.
-  bool factorize(const CollocationJacobian& jacobian);
+  /// Returns false (and sets error()) when a pivot is zero or not finite, or when `stop` (may be
+  /// empty; called every kStepsBetweenPolls steps, about a millisecond) returns true (stopped()).
+  bool factorize(const CollocationJacobian& jacobian, const std::function<bool()>& stop = {});
+  bool stopped() const { return stopped_; }
+  static constexpr Eigen::Index kStepsBetweenPolls = 256;
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
   const std::string& error() const { return error_; }
   /// Doubles held by the factors (their storage is kept when a smaller matrix is factorised next,
@@ -56,7 +60,7 @@ class BlockLU {
   // one parameter): the same elimination, in the same order, on fixed-size panels. Other sizes
   // take the runtime-size path.
   template <int N, int Q>
-  bool factorize_panels(const CollocationJacobian& jacobian);
+  bool factorize_panels(const CollocationJacobian& jacobian, const std::function<bool()>& stop);
   template <int N, int Q>
   Eigen::VectorXd solve_panels(const Eigen::VectorXd& rhs) const;
 
@@ -70,6 +74,7 @@ class BlockLU {
   Eigen::FullPivLU<Eigen::MatrixXd> border_;
   mutable Eigen::VectorXd pivot_rhs_;  ///< solve's workspace
   std::string error_;
+  bool stopped_ = false;
 };
 
 }  // namespace cartan::numerics

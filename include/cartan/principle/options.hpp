@@ -121,8 +121,8 @@ struct SolveOptions {
   int samples = 0;                     ///< collocation only: output at this many uniform times (0: the final mesh)
   std::optional<int> max_nodes;        ///< collocation only (default kDefaultMaxNodes)
   /// Seconds the whole call may take (every method and attempt): the running method stops (polled
-  /// once per iteration and inside sweeps) early enough for the work after a stop, and the result
-  /// has status time-limit. Empty: no limit.
+  /// once per iteration, inside sweeps, dense factorisations and difference Jacobians) early enough
+  /// for the work after a stop, and the result has status time-limit. Empty: no limit.
   std::optional<double> time_limit;
   SolveMonitor monitor;                ///< progress reports and stop requests
 

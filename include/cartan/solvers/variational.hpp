@@ -1,8 +1,10 @@
 #pragma once
 // The variational method's Newton iteration, compiled once (src/solvers/variational.cpp): a
 // Newton step on the gradient of S_h at the interior nodes, damped by the natural monotonicity
-// test (Deuflhard), until the simplified correction is below the tolerance. The path, its
-// gradient and Hessian are the kernel's typed arithmetic (transported/variational.hpp).
+// test (Deuflhard), until the simplified correction is below the tolerance. A stop ends an
+// iteration where it is: the Hessian, its LU (numerics/dense_lu.hpp above a thousand unknowns)
+// and each damping trial poll the monitor. The path, its gradient and Hessian are the kernel's
+// typed arithmetic (transported/variational.hpp).
 
 #include <Eigen/Core>
 #include <string>
@@ -20,7 +22,9 @@ class PathSystem {
   virtual Eigen::Index unknowns() const = 0;
   /// The gradient at the current path; false when it is not finite.
   virtual bool gradient(Eigen::VectorXd& out) = 0;
-  /// The Hessian at the current path, whose gradient is `gradient`; false when not finite.
+  /// The Hessian at the current path, whose gradient is `gradient`; false when not finite, or
+  /// when the monitor polled a stop while forming it (SolveMonitor::poll; the iteration then ends
+  /// as interrupted).
   virtual bool hessian(const Eigen::VectorXd& gradient, Eigen::MatrixXd& out) = 0;
   /// The gradient at the current path moved by s delta (the trial, kept until the next one);
   /// false when it is not finite.

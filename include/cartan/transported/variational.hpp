@@ -262,7 +262,9 @@ class VariationalNewton {
   }
   const std::vector<Covector>& xi() const { return xi_; }
 
-  /// Forward-difference Hessian at g, whose steps and gradient are `steps` and `base`.
+  /// Forward-difference Hessian at g, whose steps and gradient are `steps` and `base`; false when
+  /// a value is not finite or the monitor has a stop pending (polled at every node: n gradient
+  /// sweeps, at most a few milliseconds).
   bool hessian(const std::vector<Element>& g, const std::vector<Step>& steps, const Eigen::VectorXd& base,
                Eigen::MatrixXd& out) {
     out.resize(unknowns_, unknowns_);
@@ -271,6 +273,7 @@ class VariationalNewton {
     Eigen::VectorXd column;
     const double e = options_.hessian_step;
     for (Eigen::Index j = 0; j < unknowns_ / n; ++j) {
+      if (SolveMonitor::poll(options_.monitor)) return false;
       const std::size_t node = static_cast<std::size_t>(j) + 1;
       for (int i = 0; i < n; ++i) {
         moved[node] = G::compose(g[node], G::exp(groups::TangentOf<G>(e * groups::TangentOf<G>::Unit(i))));
