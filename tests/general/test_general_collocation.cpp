@@ -136,8 +136,8 @@ TEST(GeneralCollocation, StartsFromATrajectoryAndRejectsABadOne) {
   const auto direct = solve(problem, collocation_options(1e-10));
   EXPECT_NEAR_MATRIX(s.v0, direct.v0, 1e-8);
 
-  auto shorter = guess;
-  shorter.trajectory->t.back() = 1.4;
+  auto shorter = guess;  // times from 0 to 1.4, not to T = 1.5
+  for (double& t : shorter.trajectory->t) t *= 1.4 / 1.5;
   expect_invalid([&] { solve(problem, collocation_options(1e-10), shorter); }, {"guess.trajectory", "must run from 0 to T = 1.5"});
   auto ragged = guess;
   ragged.trajectory->Xi.pop_back();

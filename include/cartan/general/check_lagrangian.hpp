@@ -187,12 +187,7 @@ mechanics::CheckReport check_lagrangian(const M& manifold, const L& l, const std
   if (hessian) {
     for (const auto& acc : blocks) report.checks.push_back(acc.result());
   } else {
-    mechanics::CallbackCheck none;
-    none.callback = "hessian";
-    none.reference = "differences of momentum and point_gradient";
-    none.checked = false;
-    none.note = "no analytic hessian: the solvers difference momentum and point_gradient";
-    report.checks.push_back(none);
+    report.checks.push_back(mechanics::detail::no_analytic_hessian("point_gradient"));
   }
   return report;
 }

@@ -190,6 +190,17 @@ std::string finiteness_note(const A& a, const D& d, const std::string& callback,
   return {};
 }
 
+/// The report's entry for a model without its own hessian: not checked (`gradient`: the name of the
+/// model's gradient callback).
+inline CallbackCheck no_analytic_hessian(const std::string& gradient) {
+  CallbackCheck none;
+  none.callback = "hessian";
+  none.reference = "differences of momentum and " + gradient;
+  none.checked = false;
+  none.note = "no analytic hessian: the solvers difference momentum and " + gradient;
+  return none;
+}
+
 /// Runs one sample of a check: body() returns {discrepancy, note}; an exception is recorded.
 template <class Body>
 void run_sample(CheckAccumulator& acc, int k, const std::string& at, double base, const Body& body) {
@@ -334,12 +345,7 @@ CheckReport check_lagrangian(const L& l, const std::vector<LagrangianSample<G>>&
   if (hessian) {
     for (const auto& acc : blocks) report.checks.push_back(acc.result());
   } else {
-    CallbackCheck none;
-    none.callback = "hessian";
-    none.reference = "differences of momentum and group_gradient";
-    none.checked = false;
-    none.note = "no analytic hessian: the solvers difference momentum and group_gradient";
-    report.checks.push_back(none);
+    report.checks.push_back(detail::no_analytic_hessian("group_gradient"));
   }
   return report;
 }
