@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Figures of the general theory (docs/general-connections.md) with cartan.solve_general:
+"""Figures of the general theory (docs/general-connections.md) with cartan.solve on manifolds:
 
 * fig_sphere_particle.png: the particle l = 1/2 v.A v - G z on S^2 with its Levi-Civita connection
   between the same endpoints, for A = I (the classical spherical pendulum) and two anisotropic A
@@ -41,8 +41,8 @@ def sphere_figure(cartan, out, rows):
     fig = plt.figure(figsize=(6.2, 6.0))
     ax = sphere_axes(fig, 111)
     for mass, color, style, label in MASSES:
-        r = cartan.solve_general(sphere, T=SPHERE["T"], N=SPHERE["N"], q0=q0, qT=qT, inertia=list(mass),
-                                 gravity=SPHERE["gravity"], order=2)
+        r = cartan.solve(sphere, T=SPHERE["T"], N=SPHERE["N"], q0=q0, qT=qT, inertia=list(mass),
+                         gravity=SPHERE["gravity"], order=2)
         rows.append((f"S^2 particle A = diag{mass}", r))
         ax.plot(*r.q.T, color=color, linestyle=style, linewidth=2.0, label=label)
     title = f"Particle on $S^2$, $l = \\frac{{1}}{{2}} v^T A v - G z$, $G = {SPHERE['gravity']}$, $T = {SPHERE['T']}$"
@@ -61,7 +61,7 @@ def so3_figure(cartan, out, rows):
         ax.plot(*(r.g @ a0).T, color=color, linestyle=style, linewidth=2.0, label="Cartan–Schouten " + LABELS[lam])
     for metric, color, style, label in METRICS:
         manifold = cartan.GroupManifold("so3", "levi-civita", metric=list(metric))
-        r = cartan.solve_general(manifold, T=SO3["T"], N=SO3["N"], q0=np.eye(3), qT=gT, inertia=list(INERTIA), order=2)
+        r = cartan.solve(manifold, T=SO3["T"], N=SO3["N"], q0=np.eye(3), qT=gT, inertia=list(INERTIA), order=2)
         rows.append((f"SO(3) Levi-Civita metric diag{metric}", r))
         ax.plot(*(r.q @ a0).T, color=color, linestyle=style, linewidth=2.0, label=label)
     finish_sphere_figure(fig, ax, {"$a_0$": a0, "$a_T$": aT},

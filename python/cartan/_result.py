@@ -92,7 +92,7 @@ class Result:
     failed"). T, N, tol: the problem's horizon and steps and the requested tolerance.
 
     The solution at every sample (the nodes; collocation: its final mesh or `samples` times): t
-    (N+1,); q (N+1, *point_shape): the points (a group's elements, also `g`); frame (N+1, d, m): the
+    (N+1,); q ``(N+1, *point_shape)``: the points (a group's elements, also `g`); frame (N+1, d, m): the
     parallel frame e_i(t_k) along the path (frame[0] the frame at q0; on a group the transport
     operator P_k = Ad(h_k) of eq:reduced-system, also `P`, acting on the algebra); v, mu (N+1, m): the
     transported velocity and the momentum in components of the frame at q0 (q' = frame @ v); the
@@ -101,8 +101,8 @@ class Result:
     A failed result carries the best iterate of the requested problem (never a stage of a
     continuation at another T or lambda), or no rows at all.
 
-    v0 and xi0 or Xi0: the initial values; terminal_error: how far q_N is from qT (|log(gT^-1 g_N)| on
-    a group, |difference(qT, q_N)| where that is a logarithm on a manifold, never 0 at a cut locus);
+    v0 and xi0 or Xi0: the initial values; terminal_error: how far q_N is from qT (``|log(gT^-1 g_N)|`` on
+    a group, ``|difference(qT, q_N)|`` where that is a logarithm on a manifold, never 0 at a cut locus);
     xi_terminal: the size of the auxiliary at T; outer_iterations, inner_iterations (also
     `iterations`), sweeps: work done (collocation: mesh refinements, Newton iterations, Jacobians);
     residual_history; solve_time: seconds in the solver, every attempt; mesh_size, max_residual,

@@ -91,8 +91,8 @@ def test_site(browser):
     assert sorted(figures) == sorted(["fig_so3_free-rigid-body.png", "fig_so3_oscillator.png", "fig_heisenberg.png",
                                       "fig_sphere_particle.png", "fig_so3_connections.png"]), figures
     # The references document the API: Python from the docstrings, C++ from the headers.
-    for name in ("cartan.solve", "cartan.solve_general", "cartan.solve_bvp", "cartan.verify", "cartan.SO3.exp",
-                 "cartan.SolveResult", "cartan.Result", "cartan.Sphere"):
+    for name in ("cartan.solve", "cartan.solve_bvp", "cartan.verify", "cartan.SO3.exp",
+                 "cartan.Result", "cartan.Problem", "cartan.Sphere"):
         assert name in report.ids["api-python.html"], name
     cpp = {path: " ".join(ids) for path, ids in report.ids.items() if path.startswith("cpp/")}
     assert "transported5solve" in cpp["cpp/transported.html"]   # Sphinx's id of cartan::transported::solve
