@@ -11,6 +11,7 @@
 #include "cartan/groups/so3.hpp"
 #include "cartan/principle/vocabulary.hpp"
 #include "cartan/api/json_io.hpp"
+#include "cartan/api/spaces.hpp"
 #include "cartan/models/catalogue.hpp"
 
 namespace cartan::cli {
@@ -54,6 +55,25 @@ const char* non_negative_finite(double x) {
 }
 const char* one_or_two(double x) { return is_scheme_order(x) ? nullptr : kSchemeOrderRule; }
 
+/// "sphere: levi-civita; ..." for --connection's help.
+std::string manifold_connections() {
+  std::string out;
+  for (const auto& space : api::spaces()) {
+    if (space.kind == api::SpaceKind::Group) continue;  // as on a group, above
+    std::string takes;
+    for (const auto c : space.connections) takes.append(takes.empty() ? "" : ", ").append(to_string(c));
+    out.append(out.empty() ? "" : "; ").append(space.name).append(": ").append(takes);
+  }
+  return out + "; a group: as above, its left-invariant connections";
+}
+
+/// Each space's one line, for --manifold's help.
+std::string manifold_spaces() {
+  std::string out;
+  for (const auto& space : api::spaces()) out.append(out.empty() ? "" : "; ").append(space.name).append(": ").append(space.what);
+  return out;
+}
+
 std::vector<ProblemField> make_fields() {
   using S = ProblemSpec;
   const std::string groups = models::group_names();
@@ -73,7 +93,7 @@ std::vector<ProblemField> make_fields() {
       {"inertia", &S::inertia,
        "n numbers (the diagonal) or n*n (a symmetric positive-definite matrix, row-major), n = the algebra's dimension "
        "(default: " + inertias + ")", nullptr, ProblemField::Scope::Group},
-      {"lambda", &S::lambda, "Cartan-Schouten parameter (any real; default 0.5)", finite_value, ProblemField::Scope::Group},
+      {"lambda", &S::lambda, "Cartan-Schouten parameter (any real; default 0.5)", finite_value, ProblemField::Scope::Any},
       {"T", &S::T, "final time (default 1)", positive_finite, ProblemField::Scope::Any},
       {"N", &S::N, "number of steps (default 100)", at_least_one, ProblemField::Scope::Any},
       {"g0", &S::g0, "initial element (default the identity): " + elements, nullptr, ProblemField::Scope::Group},
@@ -111,22 +131,28 @@ std::vector<ProblemField> make_fields() {
        "groups: " + enum_choices<connections::ConnectionKind>() +
            " (cartan-schouten, the default, with --lambda; levi-civita of the left-invariant metric --metric; "
            "coefficients, the bilinear map of --alpha); the last two are solved by the general solver (methods auto, "
-           "shooting, collocation)", nullptr, ProblemField::Scope::Group},
-      {"metric", &S::metric, "levi-civita: the metric, n numbers (diagonal) or n*n (default: the inertia)", nullptr,
-       ProblemField::Scope::Group},
+           "shooting, collocation). A --manifold takes those of its space (default its first): " + manifold_connections(),
+       nullptr, ProblemField::Scope::Any},
+      {"metric", &S::metric, "levi-civita on a group: the metric, n numbers (diagonal) or n*n (default: the inertia, or the mass)",
+       nullptr, ProblemField::Scope::Any},
       {"alpha", &S::alpha,
        "coefficients: a JSON file, an n x n x n array alpha with alpha(e_i, e_j) = sum_k alpha[i][j][k] e_k",
-       nullptr, ProblemField::Scope::Group},
+       nullptr, ProblemField::Scope::Any},
       {"manifold", &S::manifold,
-       "a manifold instead of a group: sphere or hyperbolic-plane (S^2 or H^2 with its Levi-Civita connection; model particle)", nullptr,
+       "a space instead of a group model: the particle l = 1/2 v^T A v - V(q) on one of: " + api::space_names() +
+           " (" + manifold_spaces() + "; model particle; v in the frame transported from --frame0)", nullptr,
        ProblemField::Scope::Manifold},
-      {"mass", &S::mass, "manifold: a1,a2 in l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1,1)", nullptr,
+      {"mass", &S::mass, "manifold: A, m numbers (the diagonal) or m*m (symmetric positive definite, row-major) (default the identity)",
+       nullptr, ProblemField::Scope::Manifold},
+      {"gravity", &S::gravity, "manifold: G in V(q) = G q[last] (sphere, hyperbolic-plane, euclidean; default 0)", finite_value,
        ProblemField::Scope::Manifold},
-      {"gravity", &S::gravity, "manifold: G in l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 0)", finite_value,
-       ProblemField::Scope::Manifold},
-      {"q0", &S::q0, "manifold: initial point x,y,z (moved onto the manifold: normalised on the sphere, onto z^2 - x^2 - y^2 = 1 on the hyperbolic plane)", nullptr, ProblemField::Scope::Manifold},
-      {"qT", &S::qT, "manifold: final point x,y,z (as q0; not equal to q0, nor antipodal on the sphere)", nullptr,
-       ProblemField::Scope::Manifold},
+      {"q0", &S::q0, "manifold: initial point (the sphere: x,y,z, normalised; the hyperbolic plane: x,y,z moved onto z^2 - x^2 - y^2 = 1; "
+       "euclidean: 2 or 3 coordinates; a group: an element as --g0, default the identity)", nullptr, ProblemField::Scope::Manifold},
+      {"qT", &S::qT, "manifold: final point, as q0 (required)", nullptr, ProblemField::Scope::Manifold},
+      {"frame0", &S::frame0,
+       "manifold: the frame at q0, its m rows e_1 .. e_m (tangent vectors at q0: 3 numbers each on a quadric), row after row "
+       "(default: on the quadrics e1 towards qT along the minimal geodesic and e2 = J (q0 x e1); elsewhere the space's own basis)",
+       nullptr, ProblemField::Scope::Manifold},
   };
 }
 
@@ -267,9 +293,9 @@ void check_general_method(const ProblemSpec& spec, const std::string& problem) {
   check_samples(spec, method);
 }
 
-/// --connection: its name, the options that belong to it, the general solver's methods, and the
-/// metric (levi-civita: symmetric positive definite, default the inertia) or the alpha file.
-void validate_connection(ProblemSpec& spec, std::size_t n) {
+/// --connection's name and the options that belong to it: lambda (cartan-schouten), metric
+/// (levi-civita), alpha (coefficients: its file read, n x n x n). Returns the connection.
+connections::ConnectionKind connection_options(ProblemSpec& spec, std::size_t n) {
   using connections::ConnectionKind;
   const std::string& c = spec.connection;
   const ConnectionKind kind = parse_enum<ConnectionKind>(c, kWhere);
@@ -281,22 +307,30 @@ void validate_connection(ProblemSpec& spec, std::size_t n) {
   }
   if (kind != ConnectionKind::LeviCivita && given(spec, "metric")) bad("metric", excerpt(spec.metric), only(ConnectionKind::LeviCivita));
   if (kind != ConnectionKind::Coefficients && given(spec, "alpha")) bad("alpha", quote_input(spec.alpha), only(ConnectionKind::Coefficients));
-  if (kind == ConnectionKind::CartanSchouten) return;
-  check_general_method(spec, "--connection " + c);
-  // The metric's and alpha's sizes and values are the library's to check (api::check, in validate).
-  if (kind == ConnectionKind::LeviCivita && spec.metric.empty()) spec.metric = spec.inertia;
   if (kind == ConnectionKind::Coefficients && spec.alpha_values.empty()) {  // else given as numbers (a result file's echo)
     if (spec.alpha.empty()) bad("alpha", "(missing)", "is required by --connection coefficients");
     spec.alpha_values = read_alpha(spec.alpha, n);
   }
+  return kind;
 }
 
-/// --manifold sphere | hyperbolic-plane: model particle, mass (2 positive numbers), gravity, q0 and qT (normalised,
-/// neither equal nor antipodal), the general solver's methods (auto, shooting).
+/// --connection on a group: its options, the general solver's methods where it runs, and the
+/// metric (levi-civita: default the inertia). The metric's and alpha's sizes and values are the
+/// library's to check (api::check, in validate).
+void validate_connection(ProblemSpec& spec, std::size_t n) {
+  using connections::ConnectionKind;
+  const ConnectionKind kind = connection_options(spec, n);
+  if (kind == ConnectionKind::CartanSchouten) return;
+  check_general_method(spec, "--connection " + spec.connection);
+  if (kind == ConnectionKind::LeviCivita && spec.metric.empty()) spec.metric = spec.inertia;
+}
+
+/// --manifold, a space of the library's catalogue (api/spaces.hpp): model particle, the general
+/// solver's methods (auto, shooting, collocation), the connection (the space's default unless
+/// given) and its options, and the library's checks of the rest (mass, gravity, points, frame0,
+/// the guess); q0, qT, the connection, mass and frame0 echoed as the library poses them.
 void validate_manifold_problem(ProblemSpec& spec) {
-  if (spec.manifold != "sphere" && spec.manifold != "hyperbolic-plane") {
-    bad("manifold", quote_input(spec.manifold), "is not one of: sphere, hyperbolic-plane");
-  }
+  const api::SpaceInfo& space = api::find_space(spec.manifold, kWhere);
   const std::string kind = "--manifold " + spec.manifold;
   check_scope(spec, ProblemField::Scope::Manifold, kind + " (it belongs to problems on a group)");
   if (spec.model.empty()) spec.model = "particle";
@@ -304,13 +338,18 @@ void validate_manifold_problem(ProblemSpec& spec) {
   check_general_method(spec, kind);
   for (const auto& field : problem_fields()) check_field(spec, field, kWhere);
   require_memory("N", spec.N, kBytesPerNode * spec.N, "the trajectory and its JSON output, ~1 KiB per step");
-  if (spec.mass.empty()) spec.mass = {1, 1};
-  if (spec.q0.empty()) bad("q0", "(missing)", "is required for " + kind);
+  if (!given(spec, "connection")) spec.connection = std::string(to_string(space.connections.front()));
+  api::require_connection(space, parse_enum<connections::ConnectionKind>(spec.connection, kWhere), kWhere);
+  std::size_t m = static_cast<std::size_t>(space.dims.front());
+  if (space.kind == api::SpaceKind::Euclidean && !spec.q0.empty()) m = spec.q0.size();
+  connection_options(spec, m);
+  if (spec.q0.empty() && space.kind != api::SpaceKind::Group) bad("q0", "(missing)", "is required for " + kind);
   if (spec.qT.empty()) bad("qT", "(missing)", "is required for " + kind);
-  // mass, q0, qT, v0: the library's checks; q0 and qT echoed on the manifold
   const api::ManifoldProblem on = api::on_manifold(manifold_problem(spec), {spec.v0, spec.xi0}, kWhere);
   spec.q0 = on.q0;
   spec.qT = on.qT;
+  spec.mass = on.mass;
+  spec.frame0 = on.frame0;
 }
 
 }  // namespace
@@ -393,7 +432,20 @@ api::GroupProblem group_problem(const ProblemSpec& spec) {
 }
 
 api::ManifoldProblem manifold_problem(const ProblemSpec& spec) {
-  return {spec.manifold, spec.mass, spec.gravity, spec.q0, spec.qT, spec.T, spec.N};
+  api::ManifoldProblem p;
+  p.manifold = spec.manifold;
+  p.mass = spec.mass;
+  p.gravity = spec.gravity;
+  p.q0 = spec.q0;
+  p.qT = spec.qT;
+  p.T = spec.T;
+  p.N = spec.N;
+  p.connection = connection_kind(spec);  // validate names the space's default when none is given
+  p.lambda = spec.lambda;
+  p.metric = spec.metric;
+  p.alpha = spec.alpha_values;
+  p.frame0 = spec.frame0;
+  return p;
 }
 
 }  // namespace cartan::cli

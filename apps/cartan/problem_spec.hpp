@@ -17,9 +17,9 @@
 namespace cartan::cli {
 
 struct ProblemSpec {
-  /// Empty: a problem on a group (group, model, inertia, lambda, g0, gT); "sphere" or
-  /// "hyperbolic-plane": the general problem on the quadric (api::ManifoldProblem: model particle,
-  /// mass, gravity, q0, qT).
+  /// Empty: a problem on a group (group, model, inertia, lambda, g0, gT); a space of the library's
+  /// catalogue (api/spaces.hpp): the particle on it (api::ManifoldProblem: model particle, mass,
+  /// gravity, the connection and its options, q0, qT, frame0).
   std::string manifold;
   std::string group = "so3";            ///< a group of the model table (models/catalogue.hpp)
   std::string model;                    ///< a model of the group; empty: the group's first (validate fills it)
@@ -40,9 +40,10 @@ struct ProblemSpec {
   int max_iterations = cartan::kDefaultMaxIterations;
   double time_limit = 0;                ///< seconds; 0: no limit
   std::string output;                   ///< empty: stdout
-  std::vector<double> mass;             ///< manifold: a1, a2 of l = 1/2 (a1 v1^2 + a2 v2^2) - G z (default 1, 1)
+  std::vector<double> mass;             ///< manifold: A, m or m^2 numbers (default the identity; filled by validate)
   double gravity = 0;                   ///< manifold: G
-  std::vector<double> q0, qT;           ///< manifold: endpoints (3 numbers each, moved onto the manifold by validate)
+  std::vector<double> q0, qT;           ///< manifold: endpoints (moved onto the manifold by validate)
+  std::vector<double> frame0;           ///< manifold: the rows e_1 .. e_m of the frame at q0 (empty: the default; filled by validate)
   std::string connection{to_string(connections::ConnectionKind::CartanSchouten)};  ///< groups: a ConnectionKind word
   std::vector<double> metric;           ///< levi-civita: n or n^2 numbers (default: the inertia)
   std::string alpha;                    ///< coefficients: a JSON file alpha[i][j][k], alpha(e_i, e_j) = sum_k alpha[i][j][k] e_k

@@ -103,7 +103,7 @@ __all__ = [
     "Trajectory", "Result", "Problem", "euler_poincare", "lie_poisson", "lagrangian_hessian", "solve", "sweep",
     "VerifyReport", "verify", "load", "model_of", "CheckReport", "check_lagrangian",
     "BvpResult", "solve_bvp",
-    "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "Chart", "MANIFOLDS",
+    "Sphere", "HyperbolicPlane", "Euclidean", "GroupManifold", "Chart", "MANIFOLDS", "SPACES",
     "solve_general", "verify_general",
 ]
 
@@ -261,21 +261,46 @@ def solve(lagrangian=None, *, space=None, lam=None, T, N, gT=None, g0=None, meth
     return _result.from_group_fields(d, problem)
 
 
-def load(path):
+def load(path, *, space=None):
     """Reads a :class:`Result` from the JSON `cartan solve --output` writes (or
     :meth:`Result.to_json`): every key is checked, and a bad or missing one raises ValueError
-    naming it; null (the CLI's NaN or infinity) becomes NaN. What the file does not hold is rebuilt:
-    v0 and xi0 are the first rows of v and xi, residual_history is empty, and u, P, energy and
-    cumulative_action come from the library as after a solve (for a built-in model, with the model
-    :func:`model_of` rebuilds, which the result's problem then carries, so that ``cartan.verify(r)``
-    checks the file as `cartan verify` does; for "python:<name>" models energy and cumulative_action
-    are None, and verify needs the Lagrangian: ``cartan.verify(r, my_lagrangian)``)."""
-    fields = _results.load_dict(path)
-    grp = _results._group_class(fields["group"], "cartan.load")
-    model = None if fields["model"].startswith(_results.PYTHON_MODEL) else _results.model_of(SimpleNamespace(**fields))
-    problem = Problem(kind="group", space=grp, lagrangian=model, lam=fields["lam"], q0=fields["g0"], qT=fields["gT"],
-                      inertia=fields["inertia"], model=fields["model"])
-    return _result.from_group_fields({**fields, **grp._along(model, fields, fields["lam"])}, problem)
+    naming it; null (the CLI's NaN or infinity) becomes NaN. Every problem a file describes reads
+    back: a group model's (Cartan-Schouten), the particle on any space of :data:`SPACES` (the
+    sphere, the hyperbolic plane, Euclidean space, a GroupManifold of any connection), and a group
+    record of another connection whose model is the particle's (free-rigid-body, free-body: the
+    particle on the GroupManifold). What the file does not hold is rebuilt: v0 and xi0 (or Xi0) are
+    the first rows, residual_history is empty, and the frame (P on a group), u, energy and
+    cumulative_action come from the library as after a solve, with the Lagrangian the file
+    describes, which the result's problem then carries, so that ``cartan.verify(r)`` checks the
+    file as `cartan verify` does. A Lagrangian defined in Python is only named ("python:<name>"):
+    energy and cumulative_action are None, and verify needs it: ``cartan.verify(r, my_lagrangian)``.
+    So is a :class:`Chart` (manifold "python:<name>"): pass it, ``cartan.load(path, space=chart)``."""
+    d = _results.read_fields(path)
+    if d["kind"] == "group" and d["connection"] == "cartan-schouten":
+        if space is not None:
+            raise ValueError(f"cartan.load: space = {space!r} applies to a file of a Chart; this file's problem is a "
+                             f"group model's ({d['group']})")
+        fields = _results.group_fields(d)
+        grp = _results._group_class(fields["group"], "cartan.load")
+        named = fields["model"].startswith(_results.PYTHON_MODEL)
+        model = None if named else _results.model_of(SimpleNamespace(**fields))
+        problem = Problem(kind="group", space=grp, lagrangian=model, lam=fields["lam"], q0=fields["g0"],
+                          qT=fields["gT"], inertia=fields["inertia"], model=fields["model"])
+        return _result.from_group_fields({**fields, **grp._along(model, fields, fields["lam"])}, problem)
+    space = _results.manifold_of_fields(d, space)
+    fields, terms = _results.manifold_fields(d, space)
+    named = terms["model"].startswith(_results.PYTHON_MODEL)
+    request = _cartan._GeneralRequest()
+    request.inertia, request.gravity = terms["inertia"], terms["gravity"]
+    along = _cartan._along_general(space, request, {**fields, **terms}, named)
+    problem = Problem(kind="manifold", space=space, q0=terms["q0"], qT=terms["qT"], inertia=terms["inertia"],
+                      gravity=terms["gravity"], frame0=terms["frame0"], model="" if terms["model"] == "particle" else terms["model"])
+    return _result.Result(**{**fields, **along}, problem=problem)
+
+
+#: The spaces of the library's catalogue (include/cartan/api/spaces.hpp), which a result file and the
+#: CLI's ``--manifold`` describe: name -> dict(dims, point, connections, gravity, what).
+SPACES = _results.SPACES
 
 
 def model_of(result):
@@ -307,9 +332,10 @@ def _refuse_other_kind(where, arguments, keywords, why):
             raise ValueError(f"{where}: {name} = {shown[:80]}{'...' if len(shown) > 80 else ''} {why}")
 
 
-def _solve_on_manifold(manifold, lagrangian, arguments):
+def _solve_on_manifold(manifold, lagrangian, arguments, validate=False):
     """cartan.solve on a manifold: the library's general::solve with the manifold's keywords and a
-    Lagrangian object of the manifold or the terms."""
+    Lagrangian object of the manifold or the terms; with `validate`, only every check the solve
+    makes before it starts (cartan.sweep's), returning None."""
     _refuse_other_kind("cartan.solve", arguments, _GROUP_KEYWORDS,
                        f"applies to a group model's problem, not on the manifold {type(manifold).__name__} (its "
                        "connection is the manifold's)")
@@ -317,6 +343,20 @@ def _solve_on_manifold(manifold, lagrangian, arguments):
         if arguments[name] is None:
             raise TypeError(f"cartan.solve: missing a required argument: {name!r} (a problem on a manifold)")
     a = arguments
+    if validate:
+        return _cartan._validate_general(manifold, _manifold_request(lagrangian, a))
+    d = _cartan._solve_general(manifold, _manifold_request(lagrangian, a))
+    python = (type(lagrangian).__name__ if lagrangian is not None
+              else "potential" if a["potential"] is not None else None)
+    problem = Problem(kind="manifold", space=manifold, lagrangian=lagrangian, q0=d["q0"], qT=d["qT"],
+                      inertia=a["inertia"], potential=a["potential"], potential_gradient=a["potential_gradient"],
+                      gravity=a["gravity"], frame0=a["frame0"], model="" if python is None else _results.PYTHON_MODEL + python)
+    return _result.from_manifold_fields(d, problem)
+
+
+def _manifold_request(lagrangian, a):
+    """The library's request of a manifold's problem from cartan.solve's arguments `a` (types
+    checked here, values by the library)."""
     check_types("cartan.solve", {k: a[k] for k in ("T", "N", "method", "continuation", "order", "tol", "max_iterations",
                                                    "samples", "max_nodes", "time_limit", "segments", "lambda_start")})
     request = _cartan._GeneralRequest()
@@ -325,11 +365,7 @@ def _solve_on_manifold(manifold, lagrangian, arguments):
     request.gravity, request.lagrangian, request.frame0 = a["gravity"], lagrangian, a["frame0"]
     request.v0, request.Xi0, request.progress, request.guess = a["v0"], a["Xi0"], a["progress"], a["guess"]
     _set_options(request, {**a, "samples": 0 if a["samples"] is None else a["samples"]})
-    d = _cartan._solve_general(manifold, request)
-    problem = Problem(kind="manifold", space=manifold, lagrangian=lagrangian, q0=d["q0"], qT=d["qT"],
-                      inertia=a["inertia"], potential=a["potential"], potential_gradient=a["potential_gradient"],
-                      gravity=a["gravity"], frame0=a["frame0"])
-    return _result.from_manifold_fields(d, problem)
+    return request
 
 
 #: The solve's options (the library's OptionWords, principle/options.hpp).
@@ -459,6 +495,10 @@ def verify(result, lagrangian=None, *, space=None, group=None, inertia=None, pot
                            f"not on the manifold {type(manifold).__name__}")
         if body is None and not given_terms and problem is not None and problem.kind == "manifold":
             terms, body = {k: v for k, v in problem.terms().items() if k != "lagrangian"}, problem.lagrangian
+            if problem.model.startswith(_results.PYTHON_MODEL) and body is None and terms["potential"] is None:
+                raise ValueError(f"cartan.verify: the result's Lagrangian was defined in Python (model = "
+                                 f"{problem.model!r}) and did not travel with it: cartan.verify(result, lagrangian, "
+                                 "space=manifold) or cartan.verify(result, manifold, potential=..., ...)")
         request = _cartan._GeneralRequest()
         request.inertia, request.potential, request.potential_gradient = (terms["inertia"], terms["potential"],
                                                                           terms["potential_gradient"])

@@ -962,6 +962,10 @@ class _GeneralRequest(metaclass=type):
 
 def _solve_general(manifold: Any, request: _GeneralRequest) -> dict: ...
 
+def _validate_general(manifold: Any, request: _GeneralRequest) -> None: ...
+
+def _along_general(manifold: Any, request: _GeneralRequest, fields: dict, named_only: bool) -> dict: ...
+
 def _verify_general(manifold: Any, request: _GeneralRequest, result: Any) -> dict: ...
 
 def _check_general_lagrangian(manifold: Any, request: _GeneralRequest, samples: Any, seed: int, scale: float, q: Any) -> dict: ...
@@ -969,5 +973,7 @@ def _check_general_lagrangian(manifold: Any, request: _GeneralRequest, samples: 
 def _result_text(fields: dict) -> str:
     """The result file's text (one line of JSON) of a SolveResult's fields: the library's writer, the CLI's."""
 
-def _read_result(text: str, where: str, lie_kernel_only: bool) -> dict:
-    """The fields of a result file's text: the library's reader, the CLI's (every key checked; ValueError naming it). lie_kernel_only: refuse a manifold's or another connection's result first, naming that key."""
+def _read_result(text: str, where: str) -> dict:
+    """The fields of a result file's text: the library's reader, the CLI's (every key checked; ValueError naming it)."""
+
+spaces: list[dict[str, Any]]

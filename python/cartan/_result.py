@@ -30,7 +30,9 @@ class Problem:
     `inertia`, `potential`, `potential_gradient`, `gravity`. q0, qT: the boundary points (a group's
     elements). frame0: the frame of T_q0 Q the components are taken in (None: tangent_basis(q0)).
     model: how a result file names the Lagrangian ("free-rigid-body", ... for a built-in model,
-    "python:<type name>" for one defined in Python; "" on a manifold).
+    "python:<type name>" for one defined in Python; on a manifold "" for the particle given by its
+    terms, "python:<type name>" for a Lagrangian object and "python:potential" for a potential
+    defined in Python, which a result file names and verify then asks for).
 
     A problem that travelled (pickling, processes) keeps the objects that pickle; one that does
     not (a Chart or Lagrangian built from lambdas) is None, and what needs it asks for it by name.
@@ -297,9 +299,11 @@ class Result:
 
     def to_json(self, path):
         """Writes the result to `path` as the JSON of `cartan solve --output` (the same keys; NaN and
-        infinities as null), which `cartan verify path` checks and :func:`cartan.load` reads back. A
-        Lagrangian defined in Python is written as model "python:<type name>", which `cartan verify`
-        rejects (it cannot rebuild the model) and :func:`cartan.load` accepts."""
+        infinities as null), which `cartan verify path` checks and :func:`cartan.load` reads back: a
+        group model's problem, or the particle on any space of :data:`cartan.SPACES` with its
+        connection, mass, gravity and frame0. A Lagrangian or potential defined in Python is written
+        as model "python:<type name>", which `cartan verify` rejects (it cannot rebuild it) and
+        :func:`cartan.load` accepts; a Chart (Python code) raises ValueError (pickle the result)."""
         _results.to_json(self, path)
 
     def plot(self, path=None):

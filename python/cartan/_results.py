@@ -57,28 +57,77 @@ def _group_class(group, where):
 
 # ---- The result file ----------------------------------------------------------------------------
 
+#: The catalogue of spaces a result file describes (include/cartan/api/spaces.hpp): name -> entry
+#: (dims, point, connections, gravity, what).
+SPACES = {s["name"]: s for s in _cartan.spaces}
+#: The group models whose Lagrangian is the particle's 1/2 v.A v (A the inertia): a group record of
+#: another connection reads as the particle on the GroupManifold.
+_KINETIC_MODELS = ("free-rigid-body", "free-body")
+
+
 def _inertia_numbers(inertia):
-    """The numbers a file records of an (n, n) inertia: its diagonal when the matrix is diagonal
-    (as the CLI echoes a diagonal), else its n^2 entries row-major; none for None."""
+    """The numbers a file records of an (n, n) inertia (or its (n,) diagonal): its diagonal when the
+    matrix is diagonal (as the CLI echoes a diagonal), else its n^2 entries row-major; none for None."""
     if inertia is None:
         return np.zeros(0)
     inertia = np.asarray(inertia, dtype=float)
+    if inertia.ndim == 1:
+        return inertia
     return np.diag(inertia) if np.array_equal(inertia, np.diag(np.diag(inertia))) else inertia.ravel()
+
+
+def _connection_record(space):
+    """(connection, lambda, metric numbers, alpha numbers) of a manifold the file can describe."""
+    empty, nan = np.zeros(0), math.nan
+    if hasattr(space, "group"):  # a GroupManifold
+        if space.lam is not None:
+            return "cartan-schouten", space.lam, empty, empty
+        metric = space.metric(space.group.identity())
+        if metric is not None:
+            return "levi-civita", nan, _inertia_numbers(metric), empty
+        return "coefficients", nan, empty, np.ravel(space.alpha)
+    if hasattr(space, "christoffel_symbols"):  # Euclidean: alpha[i, j, k] = Gamma^k_ij = christoffel[k, i, j]
+        alpha = np.transpose(space.christoffel_symbols, (1, 2, 0))
+        return ("coefficients", nan, empty, np.ravel(alpha)) if np.any(alpha) else ("levi-civita", nan, empty, empty)
+    return "levi-civita", nan, empty, empty
+
+
+def _manifold_record(r):
+    """The problem of a manifold's Result as the file's keys: the space, the particle's terms (or
+    "python:<name>" for a Lagrangian or potential defined in Python), the connection, the points and
+    the frame at q0."""
+    p, space = r.problem, r.problem.space
+    if space is None:
+        raise ValueError("Result.to_json: space = None: the manifold did not travel with the result (set `r.space`)")
+    chart = isinstance(space, _cartan.Chart)
+    if p.lagrangian is not None:
+        model = PYTHON_MODEL + type(p.lagrangian).__name__
+    else:
+        model = "particle" if p.potential is None else PYTHON_MODEL + "potential"
+    m = np.shape(r.v)[1]
+    frame0 = np.asarray(p.frame0 if p.frame0 is not None else space.tangent_basis(p.q0), dtype=float)
+    connection, lam, metric, alpha = (None, math.nan, np.zeros(0), np.zeros(0)) if chart else _connection_record(space)
+    return {"kind": "manifold", "manifold": PYTHON_MODEL + space.name if chart else space.name, "model": model,
+            "mass": _inertia_numbers(np.eye(m) if p.inertia is None else p.inertia),
+            "gravity": 0.0 if p.gravity is None else float(p.gravity), "connection": connection, "lambda": lam,
+            "metric": metric, "alpha": alpha, "q0": np.ravel(p.q0), "qT": np.ravel(p.qT), "frame0": frame0.T.ravel()}
 
 
 def to_json(r, path):
     """Writes `r` to `path` with the library's writer of result files (the CLI's: one line)."""
-    if r.problem.kind != "group":
-        raise ValueError(f"Result.to_json: manifold = {r.manifold!r}: the result file describes a group model's "
-                         "problem (cartan solve --manifold writes the sphere's and hyperbolic plane's particle in "
-                         "its own frame); a manifold's Result is not written yet (pickle it)")
     rows = len(r.t)
+    if r.problem.kind == "group":
+        problem = {"kind": "group", "group": _group_class(r.group, "Result.to_json").name, "model": r.model,
+                   "inertia": _inertia_numbers(r.inertia), "connection": r.connection, "lambda": r.lam,
+                   "g0": np.ravel(r.g0), "gT": np.ravel(r.gT)}
+        aux = r.xi
+    else:
+        problem = _manifold_record(r)
+        aux = np.reshape(r.Xi, (rows, -1))
     fields = {
-        "status": r.status, "message": r.message, "method": r.method, "order": r.order, "branch": r.branch,
-        "group": _group_class(r.group, "Result.to_json").name, "model": r.model,
-        "inertia": _inertia_numbers(r.inertia), "connection": r.connection, "lambda": r.lam, "T": r.T, "N": r.N,
-        "tol": r.tol, "g0": np.ravel(r.g0), "gT": np.ravel(r.gT), "t": r.t,
-        "g": np.reshape(r.g, (rows, int(np.prod(np.shape(r.g)[1:])))), "v": r.v, "mu": r.mu, "xi": r.xi,
+        **problem, "status": r.status, "message": r.message, "method": r.method, "order": r.order,
+        "branch": r.branch, "T": r.T, "N": r.N, "tol": r.tol, "t": r.t,
+        "points": np.reshape(r.q, (rows, int(np.prod(np.shape(r.q)[1:])))), "v": r.v, "mu": r.mu, "aux": aux,
         "terminal_error": r.terminal_error, "xi_terminal": r.xi_terminal, "outer_iterations": r.outer_iterations,
         "inner_iterations": r.inner_iterations, "sweeps": r.sweeps, "action": r.action, "solve_time": r.solve_time,
         "mesh_size": r.mesh_size, "max_residual": r.max_residual,
@@ -88,24 +137,34 @@ def to_json(r, path):
         f.write(_cartan._result_text(fields))
 
 
-def load_dict(path):
-    """The fields of a group model's Result read from the result file at `path` (see :func:`cartan.load`)
-    by the library's reader, the one `cartan verify` uses; every error is a ValueError naming the
-    key and the file."""
-    where = "cartan.load"
+def read_fields(path):
+    """The library's fields of the result file at `path` (its reader, the one `cartan verify` uses);
+    every error is a ValueError naming the key and the file."""
     with open(path, encoding="utf-8") as f:
         text = f.read()
     try:
-        d = _cartan._read_result(text, where, lie_kernel_only=True)
+        return _cartan._read_result(text, "cartan.load")
     except ValueError as e:
         raise ValueError(f"{e} (in {path})") from None
+
+
+_CORE = ("status", "success", "message", "method", "order", "branch", "T", "N", "tol", "t", "v", "mu", "terminal_error",
+         "xi_terminal", "outer_iterations", "inner_iterations", "sweeps", "action", "solve_time", "residual_history")
+
+
+def _collocation_fields(d, out):
+    if d["mesh_size"] is not None:
+        out["mesh_size"], out["max_residual"], out["group_defect"] = d["mesh_size"], d["max_residual"], d["group_defect"]
+    return out
+
+
+def group_fields(d):
+    """The fields of a group model's Result (Cartan-Schouten) from the library's fields of a file."""
     group = _GROUPS[d["group"]]
     n, shape = group.dim, tuple(group.element_shape)
     inertia = np.asarray(d["inertia"], dtype=float)
     rows = len(d["t"])
-    out = {key: d[key] for key in ("status", "success", "message", "method", "order", "branch", "model", "connection",
-                                   "T", "N", "tol", "t", "v", "mu", "terminal_error", "xi_terminal", "outer_iterations",
-                                   "inner_iterations", "sweeps", "action", "solve_time", "residual_history")}
+    out = {key: d[key] for key in _CORE + ("model", "connection")}
     out.update({
         "group": group.__name__, "side": "left", "lam": d["lambda"],
         "inertia": None if inertia.size == 0 else np.diag(inertia) if inertia.size == n else inertia.reshape(n, n),
@@ -113,9 +172,70 @@ def load_dict(path):
         "g": d["points"].reshape((rows, *shape)), "xi": d["aux"],
         "v0": d["v"][0] if rows else np.zeros(n), "xi0": d["aux"][0] if rows else np.zeros(n),
     })
-    if d["mesh_size"] is not None:
-        out["mesh_size"], out["max_residual"], out["group_defect"] = d["mesh_size"], d["max_residual"], d["group_defect"]
-    return out
+    return _collocation_fields(d, out)
+
+
+def _square(numbers, m):
+    numbers = np.asarray(numbers, dtype=float)
+    return np.diag(numbers) if numbers.size == m else numbers.reshape(m, m)
+
+
+def manifold_of_fields(d, space=None):
+    """The space of a manifold record, or of a group record of another connection than
+    Cartan-Schouten (a GroupManifold), built from its name and connection data; a Chart (manifold
+    "python:<name>") is `space`, which must be given, of the file's dimension."""
+    name = d.get("manifold") or d["group"]
+    if name.startswith(PYTHON_MODEL):
+        if not isinstance(space, _cartan.Chart) or space.dim != len(d["q0"]):
+            raise ValueError(f"cartan.load: manifold = {name!r} is a Chart defined in Python, which the file only "
+                             f"names: pass it, cartan.load(path, space=chart) (a Chart of dimension {len(d['q0'])}; "
+                             f"space = {space!r})")
+        return space
+    if space is not None:
+        raise ValueError(f"cartan.load: space = {space!r} applies to a file of a Chart; this file's manifold is "
+                         f"{name!r}, which it describes")
+    if name == "sphere":
+        return _cartan.Sphere()
+    if name == "hyperbolic-plane":
+        return _cartan.HyperbolicPlane()
+    m = len(d["q0"]) if name == "euclidean" else _GROUPS[name].dim
+    alpha = np.asarray(d["alpha"], dtype=float)
+    if name == "euclidean":
+        if d["connection"] != "coefficients":
+            return _cartan.Euclidean(dim=m)
+        return _cartan.Euclidean(np.transpose(alpha.reshape(m, m, m), (2, 0, 1)))  # christoffel[k, i, j] = alpha[i, j, k]
+    connection = d["connection"]
+    if connection == "cartan-schouten":
+        return _cartan.GroupManifold(name, connection, lam=d["lambda"])
+    if connection == "levi-civita":
+        metric = d["metric"] if len(d["metric"]) else d.get("mass", d.get("inertia"))
+        return _cartan.GroupManifold(name, connection, metric=_square(metric, m))
+    return _cartan.GroupManifold(name, connection, alpha=alpha.reshape(m, m, m))
+
+
+def manifold_fields(d, space):
+    """(fields, problem terms) of a manifold's Result from the library's fields of a file: a manifold
+    record, or a group record of a model whose Lagrangian is the particle's under another connection."""
+    group_record = d["kind"] == "group"
+    m = np.shape(d["v"])[1] if len(d["t"]) else (space.group.dim if hasattr(space, "group") else len(d["q0"]))
+    shape = tuple(space.group.element_shape) if hasattr(space, "group") else (len(d["q0"]) if len(d["q0"]) else m,)
+    if group_record:
+        if d["model"] not in _KINETIC_MODELS:
+            raise ValueError(f"cartan.load: model = {d['model']!r} under connection {d['connection']!r}: only the "
+                             f"particle's Lagrangian ({', '.join(_KINETIC_MODELS)}) is posed on a GroupManifold in "
+                             "Python (`cartan verify` checks this file)")
+        mass, gravity, frame0 = d["inertia"], 0.0, np.eye(m).ravel()
+        q0, qT, model = d["g0"], d["gT"], "particle"
+    else:
+        mass, gravity, frame0, q0, qT, model = d["mass"], d["gravity"], d["frame0"], d["q0"], d["qT"], d["model"]
+    rows = len(d["t"])
+    point = np.shape(space.tangent_basis(np.reshape(q0, shape)))[0]
+    out = {key: d[key] for key in _CORE}
+    out.update({"q": d["points"].reshape((rows, *shape)), "Xi": d["aux"].reshape((rows, m, m)),
+                "v0": d["v"][0] if rows else np.zeros(m), "Xi0": d["aux"][0].reshape(m, m) if rows else np.zeros((m, m))})
+    terms = {"q0": np.reshape(q0, shape), "qT": np.reshape(qT, shape), "inertia": _square(mass, m),
+             "gravity": None if gravity == 0 else gravity, "frame0": np.reshape(frame0, (m, point)).T, "model": model}
+    return _collocation_fields(d, out), terms
 
 
 # ---- Dense output --------------------------------------------------------------------------------

@@ -2,13 +2,15 @@
 concurrent.futures-style executor (processes, a cluster) or on a Dask distributed client.
 
 Every problem is checked (its keys and argument types here, then the library's own validation,
-``<Group>._validate``) before any work is submitted; the problems then go out in chunks of
+``<Group>._validate`` or, for a manifold's problem, ``_validate_general``) before any work is
+submitted; the problems then go out in chunks of
 consecutive problems, one task per chunk, and the results come back in the problems' order.
 The solver is deterministic, so the results are the same bit for bit wherever they were computed
 (all fields but ``solve_time``).
 
-Local threads give parallelism because a solve of a built-in model runs without the GIL
-(python/src/python_models.hpp, visit_model); a Lagrangian written in Python holds the GIL in its
+Local threads give parallelism because a solve of a built-in model, or of a manifold's particle
+given by its terms, runs without the GIL (python/src/python_models.hpp, visit_model;
+python/src/general_binding.hpp, solve_on); a Lagrangian written in Python holds the GIL in its
 callbacks, so its problems run one at a time on threads: use a ProcessPoolExecutor for those.
 """
 import concurrent.futures
@@ -25,11 +27,6 @@ from ._arguments import check_types
 _NOT_IN_SWEEPS = ("progress",)
 
 
-def _not_in_sweeps():
-    """cartan.solve's arguments a sweep's problem does not take: progress, and a manifold's problem."""
-    from . import _MANIFOLD_KEYWORDS
-
-    return _NOT_IN_SWEEPS + _MANIFOLD_KEYWORDS + ("space",)
 
 
 #: The default number of tasks, at most (chunksize = ceil(len(problems) / _TASKS)).
@@ -42,6 +39,7 @@ def sweep(problems, executor=None, *, chunksize=None):
 
     problems: a sequence of dicts of cartan.solve's keyword arguments, ``lagrangian`` included, e.g.
     ``[dict(lagrangian=cartan.RigidBody([2, 3, 4]), lam=lam, T=50, N=1000, gT=gT) for lam in lams]``
+    or a manifold's, ``dict(lagrangian=cartan.Sphere(), T=T, N=200, q0=q0, qT=qT, gravity=9.81)``
     (every argument but ``progress``).
     executor: None (default) for a pool of os.cpu_count() local threads; or any
     concurrent.futures.Executor (``submit``; or an object with ``map`` only, which must keep the
@@ -146,12 +144,7 @@ def _checked(i, problem, signature):
     where = f"cartan.sweep: problems[{i}]"
     if not isinstance(problem, Mapping):
         raise TypeError(f"{where} = {type(problem).__name__} is not a dict of cartan.solve's keyword arguments")
-    from . import MANIFOLDS
-
-    if isinstance(problem.get("lagrangian"), MANIFOLDS):
-        raise ValueError(f"{where}: lagrangian = {type(problem['lagrangian']).__name__} is a manifold; a sweep "
-                         "solves group models' problems (solve a manifold's with cartan.solve, one at a time)")
-    excluded = _not_in_sweeps()
+    excluded = _NOT_IN_SWEEPS
     for key in problem:
         if key not in signature.parameters or key in excluded:
             takes = ", ".join(k for k in signature.parameters if k not in excluded)
@@ -163,10 +156,15 @@ def _checked(i, problem, signature):
     check_types(where, problem)
     bound.apply_defaults()
     arguments = dict(bound.arguments)
-    from . import _transported
+    from . import MANIFOLDS, _solve_on_manifold, _transported
 
+    lagrangian, space = arguments.get("lagrangian"), arguments.get("space")
     try:
-        _transported("_validate", arguments)
+        if space is not None or isinstance(lagrangian, MANIFOLDS):  # a manifold's problem (as cartan.solve)
+            manifold = space if space is not None else lagrangian
+            _solve_on_manifold(manifold, None if lagrangian is manifold else lagrangian, arguments, validate=True)
+        else:
+            _transported("_validate", arguments)
     except ValueError as e:
         raise ValueError(f"{where}: {e}") from e
     except TypeError as e:  # a group model's required lam or gT

@@ -63,6 +63,18 @@ void bind_general(py::module_& m) {
   m.def("_solve_general", [](const py::object& manifold, const GeneralRequest& request) {
     return visit_manifold(manifold, [&](const auto& mf, ChartCallbacks* chart) { return solve_on(mf, request, chart); });
   }, py::arg("manifold"), py::arg("request"));
+  m.def("_validate_general", [](const py::object& manifold, const GeneralRequest& request) {
+    visit_manifold(manifold, [&](const auto& mf, ChartCallbacks*) {
+      validate_on(mf, request);
+      return py::dict();  // the visitor's type; nothing to return
+    });
+  }, py::arg("manifold"), py::arg("request"));
+  m.def("_along_general", [](const py::object& manifold, const GeneralRequest& request, const py::dict& fields,
+                             bool named_only) {
+    return visit_manifold(manifold, [&](const auto& mf, ChartCallbacks* chart) {
+      return run_on_chart(chart, [&] { return along_on(mf, request, fields, named_only); });
+    });
+  }, py::arg("manifold"), py::arg("request"), py::arg("fields"), py::arg("named_only"));
   m.def("_verify_general", [](const py::object& manifold, const GeneralRequest& request, const py::object& result) {
     return visit_manifold(manifold, [&](const auto& mf, ChartCallbacks* chart) {
       return verify_on(mf, request, result, chart);

@@ -332,6 +332,12 @@ struct GeneralRequest : OptionWords {
 
 inline constexpr const char* kWhere = "cartan.solve_general";
 
+/// The spaces whose points are vectors with a vertical last axis, where gravity V = G q[last]
+/// applies (api/spaces.hpp, SpaceInfo::gravity): the quadrics and Euclidean space.
+template <class M>
+constexpr bool kVerticalAxis = std::is_same_v<M, Sphere> || std::is_same_v<M, HyperbolicPlane> ||
+                               requires(const M& x) { x.coefficients(); };
+
 /// The Lagrangian of the request on M; `python` is set when it calls back into Python.
 template <class M>
 general::ErasedLagrangian<M> request_lagrangian(const M&, const GeneralRequest& r, std::shared_ptr<CallbackState> state,
@@ -356,15 +362,16 @@ general::ErasedLagrangian<M> request_lagrangian(const M&, const GeneralRequest& 
   if (!r.gravity.is_none()) {
     const double G = number_arg<double>(r.gravity, kWhere, "gravity");
     require_finite(G, kWhere, "gravity");
-    if constexpr (!std::is_same_v<M, Sphere>) {
+    if constexpr (!kVerticalAxis<M>) {
       throw_invalid(kWhere, "gravity", format_value(G),
-                    "applies to the Sphere only (give potential and potential_gradient)");
+                    "applies to the sphere, the hyperbolic plane and Euclidean space only (V = G q[last]; give potential "
+                    "and potential_gradient)");
     } else {
       if (!r.potential.is_none()) {
         throw_invalid(kWhere, "potential", repr_of(r.potential), "and gravity exclude each other");
       }
       return general::ErasedLagrangian<M>(
-          general::KineticPotential<M>::with_linear_potential(inertia, Vector(0, 0, G)));
+          general::KineticPotential<M>::with_linear_potential(inertia, Vector(G * Vector::Unit(Vector::RowsAtCompileTime - 1))));
     }
   }
   if (r.potential.is_none() != r.potential_gradient.is_none()) {
@@ -463,23 +470,50 @@ void add_general_along_fields(py::dict& d, std::optional<general::GeneralAlong<M
   d["cumulative_action"] = along ? py::object(to_numpy(std::move(along->action))) : none;
 }
 
+/// A request on M as solve_on poses it: the problem (the request's Lagrangian, the points checked
+/// on M, frame0), the options and the guess. Not movable: the erased Lagrangian may refer to the
+/// Python object held here.
 template <class M>
-py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* chart) {
-  using Problem = general::ErasedProblem<M>;
-  const std::string where = kWhere;
-  auto state = std::make_shared<CallbackState>();
+struct PosedRequest {
+  std::shared_ptr<CallbackState> state = std::make_shared<CallbackState>();
   std::optional<PythonManifoldLagrangian<M>> python_object;
   bool python = false;
-  Problem problem{manifold, request_lagrangian(manifold, r, state, python_object, python), r.T, r.N,
-                  point_arg(manifold, r.q0, where, "q0"), point_arg(manifold, r.qT, where, "qT"), std::nullopt};
-  if (!r.frame0.is_none()) problem.frame0 = to_eigen<FrameOf<M>>(r.frame0, where, "frame0");
-
-  cartan::SolveOptions options = solve_options(r, where);
-  options.monitor = python_monitor(r.progress).stage("general shooting");  // copied here, with the GIL
+  general::ErasedProblem<M> problem;
+  cartan::SolveOptions options;
   general::GeneralGuess<M> guess;
-  if (!r.v0.is_none()) guess.v0 = finite_arg<ComponentsOf<M>>(r.v0, where, "v0");
-  if (!r.Xi0.is_none()) guess.Xi0 = finite_arg<ComponentMatrixOf<M>>(r.Xi0, where, "Xi0");
-  if (!r.guess.is_none()) guess.trajectory = trajectory_of(manifold, r.guess, kWhere, "guess");
+
+  PosedRequest(const M& manifold, const GeneralRequest& r)
+      : problem{manifold, request_lagrangian(manifold, r, state, python_object, python), r.T, r.N,
+                point_arg(manifold, r.q0, kWhere, "q0"), point_arg(manifold, r.qT, kWhere, "qT"), std::nullopt},
+        options(solve_options(r, kWhere)) {
+    if (!r.frame0.is_none()) problem.frame0 = to_eigen<FrameOf<M>>(r.frame0, kWhere, "frame0");
+    if (!r.v0.is_none()) guess.v0 = finite_arg<ComponentsOf<M>>(r.v0, kWhere, "v0");
+    if (!r.Xi0.is_none()) guess.Xi0 = finite_arg<ComponentMatrixOf<M>>(r.Xi0, kWhere, "Xi0");
+    if (!r.guess.is_none()) guess.trajectory = trajectory_of(manifold, r.guess, kWhere, "guess");
+  }
+  PosedRequest(const PosedRequest&) = delete;
+  PosedRequest& operator=(const PosedRequest&) = delete;
+};
+
+/// What a solve of the request would refuse before it starts (the problem's and the options'
+/// validation, the arguments' conversions), without solving: cartan.sweep's check of a problem.
+template <class M>
+void validate_on(const M& manifold, const GeneralRequest& r) {
+  const PosedRequest<M> posed(manifold, r);
+  posed.problem.validate();
+  posed.options.validate();
+}
+
+template <class M>
+py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* chart) {
+  PosedRequest<M> posed(manifold, r);
+  const general::ErasedProblem<M>& problem = posed.problem;
+  cartan::SolveOptions& options = posed.options;
+  options.monitor = python_monitor(r.progress).stage("general shooting");  // copied here, with the GIL
+  const general::GeneralGuess<M>& guess = posed.guess;
+  std::optional<PythonManifoldLagrangian<M>>& python_object = posed.python_object;
+  const bool python = posed.python;
+  const std::shared_ptr<CallbackState>& state = posed.state;
 
   // The solve, then what the result carries along it (general/along.hpp) where the problem is at
   // hand; a result stopped on request has its samples only (as a group model's SolveResult).
@@ -526,6 +560,37 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   d["Xi0"] = to_numpy(s.Xi0);
   d["iterations"] = s.inner_iterations;
   add_general_along_fields(d, std::move(along));
+  return d;
+}
+
+/// What a result file does not hold and the library computes along the samples (general/along.hpp:
+/// frame, u, energy, cumulative_action, action) of the fields of a loaded manifold result (t, q, v,
+/// T, q0, qT, frame0 as rows) for the request's Lagrangian; with `named_only` (a Lagrangian defined
+/// in Python, which the file only names) the frame and u, energy and the action None and NaN.
+template <class M>
+py::dict along_on(const M& manifold, const GeneralRequest& r, const py::dict& fields, bool named_only) {
+  constexpr const char* where = "cartan.load";
+  auto state = std::make_shared<CallbackState>();
+  std::optional<PythonManifoldLagrangian<M>> python_object;
+  bool python = false;
+  general::GeneralTrajectory<M> x;
+  const Array t = as_array(fields["t"], where, "t");
+  x.t.assign(t.data(), t.data() + t.shape(0));
+  x.q = to_eigen_list<PointOf<M>>(fields["q"], where, "q");
+  x.v = to_eigen_list<ComponentsOf<M>>(fields["v"], where, "v");
+  const general::ErasedProblem<M> problem{
+      manifold, request_lagrangian(manifold, r, state, python_object, python), number_arg<double>(fields["T"], where, "T"),
+      number_arg<int>(fields["N"], where, "N"), point_arg(manifold, fields["q0"], where, "q0"),
+      point_arg(manifold, fields["qT"], where, "qT"), to_eigen<FrameOf<M>>(fields["frame0"], where, "frame0")};
+  const general::GeneralAlong<M> along = general::along_general(problem, x);  // empty lists below two samples
+  const py::object none = py::none();
+  const bool known = !named_only && !along.energy.empty();
+  py::dict d;
+  d["frame"] = along.frame.empty() ? none : py::object(to_numpy(along.frame));
+  d["u"] = along.u.empty() ? none : py::object(to_numpy(along.u));
+  d["energy"] = known ? py::object(to_numpy(along.energy)) : none;
+  d["cumulative_action"] = known ? py::object(to_numpy(along.action)) : none;
+  d["action"] = known ? along.action.back() : std::numeric_limits<double>::quiet_NaN();
   return d;
 }
 

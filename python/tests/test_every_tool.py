@@ -8,13 +8,18 @@ depends on t); the order-2 scheme's drift is O(h^2): below 1e-3 relative at thes
 (measured up to 2e-4). cumulative_action ends on action exactly (the same sum). Dense output at a
 node returns the sample itself, bit for bit."""
 import math
+import os
 import pickle
+import subprocess
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import cartan
 
+ROOT = Path(__file__).resolve().parents[2]
+CARTAN_BIN = os.environ.get("CARTAN_BIN", str(ROOT / "build" / "cartan"))
 GT = cartan.SO3.minimal_rotation([-1.0, -1, -1], [0.9, 1.0, 1.0])
 S2_Q0, S2_QT = cartan.Sphere.point([1, 0, -0.3]), cartan.Sphere.point([0, 1, -0.5])
 
@@ -105,11 +110,35 @@ def test_model_of_and_files(solved, tmp_path):
         back = cartan.load(tmp_path / "r.json")
         np.testing.assert_array_equal(back.g, r.g)
         assert cartan.verify(back).passed  # a built-in model is rebuilt from the file
+    elif isinstance(r.space, cartan.Chart):  # its geometry is Python code: the file names it, load takes it
+        r.to_json(tmp_path / "r.json")
+        with pytest.raises(ValueError, match=r"manifold = 'python:.*' is a Chart defined in Python.*space=chart"):
+            cartan.load(tmp_path / "r.json")
+        back = cartan.load(tmp_path / "r.json", space=r.space)
+        np.testing.assert_array_equal(back.q, r.q)
+        np.testing.assert_allclose(back.frame, r.frame, rtol=0, atol=1e-13)
+        assert cartan.verify(back).passed
+        out = subprocess.run([CARTAN_BIN, "verify", str(tmp_path / "r.json")], capture_output=True, text=True,
+                             timeout=120)  # the CLI reads the file and says why it cannot check it
+        assert out.returncode == 2 and "defined in Python" in out.stderr, out.stderr
     else:
         with pytest.raises(ValueError, match="given by its terms"):
             cartan.model_of(r)
-        with pytest.raises(ValueError, match="not written yet"):
-            r.to_json(tmp_path / "r.json")
+        # Every space of the catalogue: the file describes the problem (space, connection, mass,
+        # gravity, frame0), load rebuilds it, and the loaded result verifies by itself with the same
+        # figures, its frame, u, energy and action recomputed by the library from the samples.
+        r.to_json(tmp_path / "r.json")
+        back = cartan.load(tmp_path / "r.json")
+        assert back.manifold == r.manifold and back.connection == r.connection
+        np.testing.assert_array_equal(back.q, r.q)
+        np.testing.assert_array_equal(back.Xi, r.Xi)
+        np.testing.assert_allclose(back.frame, r.frame, rtol=0, atol=1e-13)  # rebuilt from the same nodes
+        np.testing.assert_allclose(back.energy, r.energy, rtol=1e-13, atol=1e-13)
+        assert back.action == pytest.approx(r.action, rel=1e-13)
+        assert cartan.verify(back).passed and cartan.verify(back).text == cartan.verify(r).text
+        out = subprocess.run([CARTAN_BIN, "verify", str(tmp_path / "r.json")], capture_output=True, text=True,
+                             timeout=120)  # the CLI reads the same file: the same problem, the same verdict
+        assert out.returncode == 0 and "VERDICT: PASS" in out.stdout, out.stdout + out.stderr
 
 
 def test_a_manifold_lagrangian_object_goes_through_the_same_door():
@@ -143,3 +172,29 @@ def test_a_manifold_lagrangian_object_goes_through_the_same_door():
     np.testing.assert_array_equal(old.q, terms.q)
     with pytest.warns(DeprecationWarning, match="GeneralSolveResult is deprecated"):
         assert cartan.GeneralSolveResult is cartan.Result
+
+
+def test_a_sweep_of_manifold_problems_is_the_same_as_their_solves():
+    """cartan.sweep takes a manifold's problems as cartan.solve does (the sphere's pendulum at three
+    gravities, a Euclidean projectile, a GroupManifold): the same results bit for bit (the solver is
+    deterministic; threads change nothing), each verified by itself; a bad one is refused by index
+    before anything is solved."""
+    problems = [dict(lagrangian=cartan.Sphere(), T=1.0, N=100, q0=S2_Q0, qT=S2_QT, gravity=g) for g in (0.0, 1.0, 3.0)]
+    problems.append(dict(lagrangian=cartan.Euclidean(dim=3), T=1.0, N=50, q0=[0.0, 0, 0], qT=[1.0, 0, 0], gravity=9.81))
+    problems.append(dict(lagrangian=cartan.GroupManifold("so3", "levi-civita", metric=[1.0, 2.0, 3.0]), T=1.0, N=100,
+                         q0=np.eye(3), qT=GT, inertia=[2.0, 3.0, 4.0]))
+    swept = cartan.sweep(problems)
+    for problem, r in zip(problems, swept):
+        alone = cartan.solve(**problem)
+        assert r.converged and cartan.verify(r).passed, r.message
+        np.testing.assert_array_equal(r.q, alone.q)
+        np.testing.assert_array_equal(r.v, alone.v)
+    # The projectile: q(t) = c t - 1/2 g t^2 e3 with c = qT / T + 1/2 g T e3 (the schemes integrate a
+    # constant force exactly; the shooting tolerance remains).
+    t = swept[3].t
+    expected = np.outer(t, [1.0, 0, 9.81 / 2]) - np.outer(0.5 * 9.81 * t**2, [0, 0, 1])
+    np.testing.assert_allclose(swept[3].q, expected, atol=1e-9)
+    with pytest.raises(ValueError, match=r"problems\[1\]: .*q0"):
+        cartan.sweep([problems[0], dict(problems[0], q0=[0.0, 0, 0])])
+    with pytest.raises(TypeError, match=r"problems\[0\]: missing a required argument: 'qT'"):
+        cartan.sweep([{k: v for k, v in problems[0].items() if k != "qT"}])

@@ -303,9 +303,10 @@ def test_solve_is_one_entry_point_for_both_kinds_of_problem():
         cartan.solve(cartan.RigidBody([2.0, 3.0, 4.0]), T=3.0, N=100, lam=0.3, gT=GT, gravity=1.0)
     with pytest.raises(TypeError, match=r"^cartan\.solve: missing a required argument: 'gT'"):
         cartan.solve(cartan.RigidBody([2.0, 3.0, 4.0]), T=3.0, N=100, lam=0.3)
-    with pytest.raises(ValueError, match=r"^cartan\.sweep: problems\[0\]: lagrangian = Sphere is a manifold"):
-        cartan.sweep([dict(lagrangian=Sphere(), **SPHERE_ARGS)])
-    with pytest.raises(TypeError, match=r"^cartan\.sweep: problems\[0\]: key 'q0' is not an argument"):
+    swept = cartan.sweep([dict(lagrangian=Sphere(), **SPHERE_ARGS)])  # a sweep takes what cartan.solve takes
+    np.testing.assert_array_equal(swept[0].q, cartan.solve(Sphere(), **SPHERE_ARGS).q)
+    with pytest.raises(ValueError, match=r"^cartan\.sweep: problems\[0\]: cartan\.solve: q0 = .* applies to a problem "
+                                         r"on a manifold"):
         cartan.sweep([dict(lagrangian=cartan.RigidBody([2.0, 3.0, 4.0]), T=3.0, N=100, lam=0.3, gT=GT, q0=np.eye(3))])
     with pytest.raises(TypeError, match=r"^cartan\.sweep: problems\[0\]: missing a required argument: 'lam'"):
         cartan.sweep([dict(lagrangian=cartan.RigidBody([2.0, 3.0, 4.0]), T=3.0, N=100, gT=GT)])
@@ -472,8 +473,8 @@ SPHERE_ARGS = dict(T=1.0, N=20, q0=[0, 0, 1.0], qT=Sphere.point([1, 0, 1]))
     (lambda: cartan.solve_general(Sphere(), order=3, **SPHERE_ARGS), ["order = 3"]),
     (lambda: cartan.solve_general(Sphere(), frame0=[[1.0, 0], [0, 0], [0, 1]], **SPHERE_ARGS), ["frame0", "tangent"]),
     (lambda: cartan.solve_general(Sphere(), **{**SPHERE_ARGS, "T": -1.0}), ["T = -1"]),
-    (lambda: cartan.solve_general(HyperbolicPlane(), gravity=1.0, T=1.0, N=10, q0=[0, 0, 1.0], qT=[0, 0, 1.0]),
-     ["gravity", "Sphere only"]),
+    (lambda: cartan.solve_general(GroupManifold("so3", lam=0.5), gravity=1.0, T=1.0, N=10, q0=np.eye(3), qT=np.eye(3)),
+     ["gravity", "the sphere, the hyperbolic plane and Euclidean space only"]),
     (lambda: cartan.solve_general("sphere", **SPHERE_ARGS), ["manifold", "is not a manifold"]),
     (lambda: cartan.solve_general(GroupManifold("so3", lam=0.5), T=1.0, N=10, q0=np.ones((3, 3)), qT=np.eye(3)),
      ["q0", "orthogonal"]),

@@ -140,7 +140,7 @@ class RecordingExecutor(concurrent.futures.ThreadPoolExecutor):
 
 @pytest.mark.parametrize("bad, error, message", [
     ([1, 2, 3], TypeError, r"^cartan\.sweep: problems\[2\] = list is not a dict of cartan\.solve's keyword arguments$"),
-    ({"lamb": 0.5}, TypeError, r"^cartan\.sweep: problems\[2\]: key 'lamb' is not an argument of a sweep's problem \(one of: lagrangian, lam, T, N, gT, g0, method"),
+    ({"lamb": 0.5}, TypeError, r"^cartan\.sweep: problems\[2\]: key 'lamb' is not an argument of a sweep's problem \(one of: lagrangian, space, lam, T, N, gT, g0, method"),
     ({"progress": print}, TypeError, r"problems\[2\]: key 'progress' is not an argument of a sweep's problem"),
     ({"T": None}, TypeError, r"^cartan\.sweep: problems\[2\]: T = None \(NoneType\) is not a real number$"),
     ({"N": 2.5}, TypeError, r"^cartan\.sweep: problems\[2\]: N = 2\.5 \(float\) is not an integer$"),

@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 #include <cmath>
+#include <type_traits>
 
 #include "cartan/errors.hpp"
 
@@ -27,24 +28,54 @@ void require_matrix_numbers(std::string_view where, const char* name, const std:
   if (x.size() != n && x.size() != n * n) {
     throw_invalid(where, name, excerpt(x),
                   "must have " + std::to_string(n) + " numbers (the diagonal) or " + std::to_string(n * n) +
-                      " (the matrix, row-major) for group " + std::string(group));
+                      " (the matrix, row-major) for " + std::string(group));
   }
   require_numbers(where, name, x, x.size(), "");
 }
 
-/// The metric of a Levi-Civita connection: symmetric (to 1e-12 of its largest entry) and positive definite.
-void require_metric(std::string_view where, const std::vector<double>& metric, Eigen::Index n) {
-  const bool diagonal = metric.size() == static_cast<std::size_t>(n);
+/// A matrix of n numbers (its diagonal) or n^2 (row-major) as an n x n matrix.
+Eigen::MatrixXd square_matrix(const std::vector<double>& numbers, Eigen::Index n) {
   Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
+  const bool diagonal = numbers.size() == static_cast<std::size_t>(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     for (Eigen::Index j = 0; j < n; ++j) {
-      if (!diagonal) m(i, j) = metric[static_cast<std::size_t>(i * n + j)];
+      if (!diagonal) m(i, j) = numbers[static_cast<std::size_t>(i * n + j)];
     }
-    if (diagonal) m(i, i) = metric[static_cast<std::size_t>(i)];
+    if (diagonal) m(i, i) = numbers[static_cast<std::size_t>(i)];
   }
+  return m;
+}
+
+/// A metric or a mass, given as n or n^2 finite numbers (require_matrix_numbers): symmetric (to
+/// 1e-12 of its largest entry) and positive definite.
+void require_spd(std::string_view where, const char* name, const std::vector<double>& numbers, Eigen::Index n) {
+  const Eigen::MatrixXd m = square_matrix(numbers, n);
   const double scale = m.cwiseAbs().maxCoeff();
   if (!((m - m.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale) || Eigen::LLT<Eigen::MatrixXd>(m).info() != Eigen::Success) {
-    throw_invalid(where, "metric", excerpt(metric), "must be symmetric positive definite");
+    throw_invalid(where, name, excerpt(numbers), "must be symmetric positive definite");
+  }
+}
+
+/// The connection data given with `connection` on a space of dimension n: a metric with
+/// levi-civita only (and only where `metric_allowed`: a group's), alpha with coefficients only
+/// (n^3 numbers).
+void require_connection_data(connections::ConnectionKind connection, const std::vector<double>& metric,
+                             const std::vector<double>& alpha, std::size_t n, std::string_view space, bool metric_allowed,
+                             std::string_view where) {
+  using connections::ConnectionKind;
+  const auto only = [](ConnectionKind owner) { return "is an option of connection " + std::string(to_string(owner)) + " only"; };
+  if (connection != ConnectionKind::LeviCivita && !metric.empty()) throw_invalid(where, "metric", excerpt(metric), only(ConnectionKind::LeviCivita));
+  if (connection != ConnectionKind::Coefficients && !alpha.empty()) throw_invalid(where, "alpha", excerpt(alpha), only(ConnectionKind::Coefficients));
+  if (!metric.empty()) {
+    if (!metric_allowed) {
+      throw_invalid(where, "metric", excerpt(metric),
+                    "is not an option of " + std::string(space) + " (its Levi-Civita connection is that of its own metric)");
+    }
+    require_matrix_numbers(where, "metric", metric, n, space);
+    require_spd(where, "metric", metric, static_cast<Eigen::Index>(n));
+  }
+  if (connection == ConnectionKind::Coefficients) {
+    require_numbers(where, "alpha", alpha, n * n * n, "alpha[i][j][k] in (i, j, k) order");
   }
 }
 
@@ -87,28 +118,15 @@ void check_guess(const Guess& guess, int n, std::string_view group, bool lie_ker
 }  // namespace
 
 CheckedGroupProblem checked(const GroupProblem& problem, const Guess& guess, bool elements, std::string_view where) {
-  using connections::ConnectionKind;
   CheckedGroupProblem out;
   out.model = &models::find_model(problem.group, problem.model, where);
   const models::ModelInfo& model = *out.model;
   const auto n = static_cast<std::size_t>(model.dim);
   out.inertia = problem.inertia.empty() ? model.default_inertia : problem.inertia;
-  require_matrix_numbers(where, "inertia", out.inertia, n, model.group);
+  require_matrix_numbers(where, "inertia", out.inertia, n, "group " + std::string(model.group));
   models::check_inertia(model, out.inertia, where);
-  const auto only = [](ConnectionKind owner) { return "is an option of connection " + std::string(to_string(owner)) + " only"; };
-  if (problem.connection != ConnectionKind::LeviCivita && !problem.metric.empty()) {
-    throw_invalid(where, "metric", excerpt(problem.metric), only(ConnectionKind::LeviCivita));
-  }
-  if (problem.connection != ConnectionKind::Coefficients && !problem.alpha.empty()) {
-    throw_invalid(where, "alpha", excerpt(problem.alpha), only(ConnectionKind::Coefficients));
-  }
-  if (problem.connection == ConnectionKind::LeviCivita && !problem.metric.empty()) {
-    require_matrix_numbers(where, "metric", problem.metric, n, model.group);
-    require_metric(where, problem.metric, model.dim);
-  }
-  if (problem.connection == ConnectionKind::Coefficients) {
-    require_numbers(where, "alpha", problem.alpha, n * n * n, "alpha[i][j][k] in (i, j, k) order");
-  }
+  require_connection_data(problem.connection, problem.metric, problem.alpha, n, "group " + std::string(model.group), true,
+                          where);
   out.g0 = problem.g0.empty() ? model.identity : problem.g0;
   const std::string element = std::string(model.element_what);
   require_numbers(where, "g0", out.g0, model.element_size, element);
@@ -122,22 +140,78 @@ CheckedGroupProblem checked(const GroupProblem& problem, const Guess& guess, boo
   return out;
 }
 
-template <int K>
-general::ErasedProblem<manifolds::Quadric<K>> quadric_problem(const ManifoldProblem& problem, const Guess& guess,
-                                                              std::string_view where) {
-  using Q = manifolds::Quadric<K>;
-  require_numbers(where, "mass", problem.mass, 2, "a1,a2");
-  for (double a : problem.mass) {
-    if (!(a > 0)) throw_invalid(where, "mass", excerpt(problem.mass), "must be positive");
+namespace {
+
+using manifolds::ComponentMatrixOf;
+using manifolds::FrameOf;
+using manifolds::PointOf;
+
+constexpr std::string_view kParticle = "particle";
+
+template <class M>
+constexpr bool kQuadric = std::is_same_v<M, manifolds::Sphere> || std::is_same_v<M, manifolds::HyperbolicPlane>;
+
+/// The connection of a manifold problem: the space's default when none is named.
+connections::ConnectionKind connection_of(const ManifoldProblem& p, const SpaceInfo& space) {
+  return p.connection.value_or(space.connections.front());
+}
+
+/// The manifold M of a checked problem with its connection.
+template <class M>
+M make_manifold(const ManifoldProblem& p, connections::ConnectionKind connection, const Eigen::MatrixXd& mass) {
+  using connections::ConnectionKind;
+  if constexpr (requires { typename M::Group; }) {
+    switch (connection) {
+      case ConnectionKind::CartanSchouten: return M::cartan_schouten(p.lambda);
+      case ConnectionKind::LeviCivita:
+        return M::levi_civita(p.metric.empty() ? ComponentMatrixOf<M>(mass) : ComponentMatrixOf<M>(square_matrix(p.metric, M::kDim)));
+      case ConnectionKind::Coefficients: return M::coefficients(p.alpha);
+    }
+    throw std::logic_error("make_manifold: unknown connection");
+  } else if constexpr (requires { typename M::Coefficients; }) {  // Euclidean<n>
+    typename M::Coefficients gamma;  // gamma[i](k, j) = Gamma^k_ij = alpha[i][j][k]
+    constexpr int n = M::kDim;
+    for (int i = 0; i < n; ++i) {
+      gamma[static_cast<std::size_t>(i)].setZero();
+      if (connection != ConnectionKind::Coefficients) continue;
+      for (int j = 0; j < n; ++j) {
+        for (int k = 0; k < n; ++k) gamma[static_cast<std::size_t>(i)](k, j) = p.alpha[static_cast<std::size_t>((i * n + j) * n + k)];
+      }
+    }
+    return M(gamma);
+  } else {
+    return M{};
   }
-  require_finite(problem.gravity, where, "gravity");
-  const Eigen::Vector3d q0 = quadric_point<K>(problem.q0, "q0", where), qT = quadric_point<K>(problem.qT, "qT", where);
-  manifolds::Sphere::Frame frame;
-  if constexpr (K > 0) {
+}
+
+/// A point of the problem's space from its numbers (`name`: q0 or qT): a quadric's moved onto it,
+/// a group element's checked and projected (models/catalogue.hpp), R^n's coordinates.
+template <class M>
+PointOf<M> point_of(const std::vector<double>& x, const char* name, const SpaceInfo& space, std::string_view where) {
+  if constexpr (requires { typename M::Group; }) {
+    const models::ModelInfo& info = models::find_model(space.name, {}, where);
+    require_numbers(where, name, x, info.element_size, std::string(info.element_what));
+    info.check_element(x, where, name);
+    return models::element_of<typename M::Group>(x);
+  } else if constexpr (requires { typename M::Coefficients; }) {
+    require_numbers(where, name, x, M::kDim, std::to_string(M::kDim) + " coordinates");
+    return Eigen::Map<const PointOf<M>>(x.data());
+  } else {
+    return quadric_point<std::is_same_v<M, manifolds::Sphere> ? 1 : -1>(x, name, where);
+  }
+}
+
+/// The quadrics' default frame at q0: e1 the unit tangent along the minimal geodesic towards qT,
+/// e2 = J (q0 x e1).
+template <class Q>
+FrameOf<Q> frame_towards(const Eigen::Vector3d& q0, const Eigen::Vector3d& qT, const ManifoldProblem& problem,
+                         std::string_view where) {
+  FrameOf<Q> frame;
+  if constexpr (std::is_same_v<Q, manifolds::Sphere>) {
     if (q0.cross(qT).norm() < 1e-12) {
       throw_invalid(where, "q0/qT", excerpt(problem.q0) + " / " + excerpt(problem.qT),
-                    q0.dot(qT) > 0 ? "are equal: the frame's e1 (towards qT along the minimal great circle) is undefined"
-                                   : "are antipodal: the minimal great circle is not unique");
+                    q0.dot(qT) > 0 ? "are equal: the frame's e1 (towards qT along the minimal great circle) is undefined (give frame0)"
+                                   : "are antipodal: the minimal great circle is not unique (give frame0)");
     }
     frame.col(0) = (qT - q0.dot(qT) * q0).normalized();  // along the minimal great circle
     frame.col(1) = q0.cross(Eigen::Vector3d(frame.col(0)));
@@ -145,25 +219,98 @@ general::ErasedProblem<manifolds::Quadric<K>> quadric_problem(const ManifoldProb
     const Eigen::Vector3d towards = Q::project_tangent(q0, qT);  // along the geodesic to qT; <., .> = J
     if (!(std::sqrt(std::max(0.0, Q::inner(towards, towards))) > 1e-12)) {
       throw_invalid(where, "q0/qT", excerpt(problem.q0) + " / " + excerpt(problem.qT),
-                    "are equal: the frame's e1 (towards qT along the geodesic) is undefined");
+                    "are equal: the frame's e1 (towards qT along the geodesic) is undefined (give frame0)");
     }
     frame.col(0) = towards / std::sqrt(Q::inner(towards, towards));
     frame.col(1) = Q::metric(q0) * q0.cross(Eigen::Vector3d(frame.col(0)));  // J (q0 x e1): unit, tangent, J-orthogonal to e1
   }
-  if (!guess.v0.empty()) require_numbers(where, "v0", guess.v0, 2, "a guess of v(0) in the frame (e1, e2)");
-  if (!guess.xi0.empty()) {
-    throw_invalid(where, "xi0", excerpt(guess.xi0), "is a guess of the Lie-group kernel's xi, not of the " +
-                                                         std::string(Q::name()) + "'s solver");
-  }
-  using Particle = general::KineticPotential<Q>;
-  const Particle particle = Particle::with_linear_potential(Eigen::Vector2d(problem.mass[0], problem.mass[1]).asDiagonal(),
-                                                            Eigen::Vector3d(0, 0, problem.gravity));
-  return {Q{}, general::ErasedLagrangian<Q>(particle), problem.T, problem.N, q0, qT, frame};
+  return frame;
 }
 
-template general::ErasedProblem<manifolds::Sphere> quadric_problem<1>(const ManifoldProblem&, const Guess&, std::string_view);
-template general::ErasedProblem<manifolds::HyperbolicPlane> quadric_problem<-1>(const ManifoldProblem&, const Guess&,
-                                                                                 std::string_view);
+/// "GeneralProblem: <name> = ..." (the general problem's validation) as "<where>: <name> = ...".
+template <class Problem>
+void validate_for(const Problem& problem, std::string_view where) {
+  try {
+    problem.validate();
+  } catch (const std::invalid_argument& e) {
+    constexpr std::string_view prefix = "GeneralProblem: ";
+    const std::string_view message = e.what();
+    throw std::invalid_argument(std::string(where) + ": " +
+                                std::string(message.starts_with(prefix) ? message.substr(prefix.size()) : message));
+  }
+}
+
+}  // namespace
+
+template <class M>
+general::ErasedProblem<M> manifold_problem(const ManifoldProblem& p, const Guess& guess, std::string_view where) {
+  constexpr int m = M::kDim;
+  constexpr int d = manifolds::VectorOf<M>::RowsAtCompileTime;
+  const SpaceInfo& space = find_space(p.manifold, where);
+  if (p.model != kParticle) {
+    throw_invalid(where, "model", quote_input(p.model),
+                  "is not a model of " + std::string(space.name) + " (models: particle; a Lagrangian defined in Python is "
+                  "solved and verified in Python)");
+  }
+  const connections::ConnectionKind connection = connection_of(p, space);
+  require_connection(space, connection, where);
+  require_connection_data(connection, p.metric, p.alpha, m, space.name, space.kind == SpaceKind::Group, where);
+  Eigen::MatrixXd mass = Eigen::MatrixXd::Identity(m, m);
+  if (!p.mass.empty()) {
+    require_matrix_numbers(where, "mass", p.mass, m, space.name);
+    require_spd(where, "mass", p.mass, m);
+    mass = square_matrix(p.mass, m);
+  }
+  require_finite(p.gravity, where, "gravity");
+  if (p.gravity != 0 && !space.gravity) {
+    throw_invalid(where, "gravity", format_value(p.gravity),
+                  "does not apply on " + std::string(space.name) + " (V = G q[last] needs points that are vectors)");
+  }
+  PointOf<M> q0;
+  if constexpr (requires { typename M::Group; }) {
+    q0 = p.q0.empty() ? PointOf<M>(M::Group::identity()) : point_of<M>(p.q0, "q0", space, where);
+  } else {
+    q0 = point_of<M>(p.q0, "q0", space, where);
+  }
+  const PointOf<M> qT = point_of<M>(p.qT, "qT", space, where);
+  std::optional<FrameOf<M>> frame0;
+  if (!p.frame0.empty()) {
+    require_numbers(where, "frame0", p.frame0, static_cast<std::size_t>(m * d),
+                    std::to_string(m) + " rows of " + std::to_string(d) + " numbers: e_1 .. e_" + std::to_string(m) + " at q0");
+    frame0 = Eigen::Map<const Eigen::Matrix<double, m, d, m == 1 ? Eigen::ColMajor : Eigen::RowMajor>>(p.frame0.data()).transpose();
+  } else if constexpr (kQuadric<M>) {
+    frame0 = frame_towards<M>(q0, qT, p, where);
+  }
+  if (!guess.v0.empty()) require_numbers(where, "v0", guess.v0, m, "a guess of v(0) in the frame at q0");
+  if (!guess.xi0.empty()) {
+    throw_invalid(where, "xi0", excerpt(guess.xi0),
+                  "is a guess of a group model's xi (a problem on a group), not of a manifold problem's (give v0)");
+  }
+  using Particle = general::KineticPotential<M>;
+  const ComponentMatrixOf<M> A = mass;
+  Particle particle(A);
+  if constexpr (!requires { typename M::Group; }) {
+    PointOf<M> c = PointOf<M>::Zero();
+    c[c.size() - 1] = p.gravity;
+    if (p.gravity != 0) particle = Particle::with_linear_potential(A, c);
+  }
+  general::ErasedProblem<M> out{make_manifold<M>(p, connection, mass), general::ErasedLagrangian<M>(particle), p.T, p.N, q0, qT,
+                                frame0};
+  validate_for(out, where);
+  return out;
+}
+
+#define CARTAN_API_MANIFOLD_PROBLEM(M) \
+  template general::ErasedProblem<M> manifold_problem<M>(const ManifoldProblem&, const Guess&, std::string_view);
+CARTAN_API_MANIFOLD_PROBLEM(manifolds::Sphere)
+CARTAN_API_MANIFOLD_PROBLEM(manifolds::HyperbolicPlane)
+CARTAN_API_MANIFOLD_PROBLEM(manifolds::Euclidean<2>)
+CARTAN_API_MANIFOLD_PROBLEM(manifolds::Euclidean<3>)
+CARTAN_API_MANIFOLD_PROBLEM(manifolds::GroupManifold<groups::SO3>)
+CARTAN_API_MANIFOLD_PROBLEM(manifolds::GroupManifold<groups::Heisenberg>)
+CARTAN_API_MANIFOLD_PROBLEM(manifolds::GroupManifold<groups::SE2>)
+CARTAN_API_MANIFOLD_PROBLEM(manifolds::GroupManifold<groups::SE3>)
+#undef CARTAN_API_MANIFOLD_PROBLEM
 
 }  // namespace cartan::api::detail
 
@@ -179,9 +326,12 @@ void check(const ManifoldProblem& problem, const Guess& guess, std::string_view 
 
 ManifoldProblem on_manifold(const ManifoldProblem& problem, const Guess& guess, std::string_view where) {
   ManifoldProblem out = problem;
-  detail::visit_manifold(problem, guess, where, [&](const auto& quadric) {
-    out.q0.assign(quadric.q0.data(), quadric.q0.data() + 3);
-    out.qT.assign(quadric.qT.data(), quadric.qT.data() + 3);
+  detail::visit_manifold(problem, guess, where, [&]<class M>(const general::ErasedProblem<M>& posed) {
+    out.q0 = models::element_numbers(posed.q0);
+    out.qT = models::element_numbers(posed.qT);
+    out.connection = detail::connection_of(problem, find_space(problem.manifold, where));
+    if (out.mass.empty()) out.mass.assign(static_cast<std::size_t>(M::kDim), 1.0);
+    out.frame0 = models::element_numbers(posed.initial_frame().transpose());  // the rows e_1 .. e_m
     return 0;
   });
   return out;

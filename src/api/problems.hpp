@@ -4,11 +4,14 @@
 // Private to src/api/.
 
 #include <Eigen/Core>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "cartan/api/solve.hpp"
+#include "cartan/api/spaces.hpp"
+#include "cartan/errors.hpp"
 #include "cartan/general/compiled.hpp"
 #include "cartan/models/catalogue.hpp"
 #include "cartan/transported/compiled.hpp"
@@ -25,19 +28,30 @@ struct CheckedGroupProblem {
 /// group (ModelInfo::check_element).
 CheckedGroupProblem checked(const GroupProblem& problem, const Guess& guess, bool elements, std::string_view where);
 
-/// The manifold problem checked (api::check), its points moved onto the quadric Q, and its frame
-/// at q0 (e1, e2), as the general problem on Q.
-template <int K>
-general::ErasedProblem<manifolds::Quadric<K>> quadric_problem(const ManifoldProblem& problem, const Guess& guess,
-                                                              std::string_view where);
+/// The manifold problem checked (api::check) as the general problem on M (the particle with the
+/// problem's connection, its points moved onto M, its frame at q0 when it has one): instantiated in
+/// problems.cpp for the spaces of spaces.hpp.
+template <class M>
+general::ErasedProblem<M> manifold_problem(const ManifoldProblem& problem, const Guess& guess, std::string_view where);
 
-/// visit(the general problem of `problem` on its quadric), checked: "sphere" or "hyperbolic-plane",
-/// any other name refused by name.
+/// visit(the general problem of `problem` on its space), checked; a name not in spaces() refused by name.
 template <class Visitor>
 auto visit_manifold(const ManifoldProblem& problem, const Guess& guess, std::string_view where, Visitor&& visit) {
-  if (problem.manifold == manifolds::Sphere::name()) return visit(quadric_problem<1>(problem, guess, where));
-  if (problem.manifold == manifolds::HyperbolicPlane::name()) return visit(quadric_problem<-1>(problem, guess, where));
-  throw_invalid(where, "manifold", quote_input(problem.manifold), "is not one of: sphere, hyperbolic-plane");
+  const SpaceInfo& space = find_space(problem.manifold, where);
+  switch (space.kind) {
+    case SpaceKind::Group:
+      return models::visit_model(space.name, {}, where, [&]<class Entry>(const Entry&) {
+        return visit(manifold_problem<manifolds::GroupManifold<typename Entry::Table::Group>>(problem, guess, where));
+      });
+    case SpaceKind::Quadric:
+      if (space.name == manifolds::Sphere::name()) return visit(manifold_problem<manifolds::Sphere>(problem, guess, where));
+      return visit(manifold_problem<manifolds::HyperbolicPlane>(problem, guess, where));
+    case SpaceKind::Euclidean:
+      if (problem.q0.size() == 2) return visit(manifold_problem<manifolds::Euclidean<2>>(problem, guess, where));
+      if (problem.q0.size() == 3) return visit(manifold_problem<manifolds::Euclidean<3>>(problem, guess, where));
+      throw_invalid(where, "q0", excerpt(problem.q0), "must have 2 or 3 numbers (the coordinates of a point of euclidean: R^2 or R^3)");
+  }
+  throw std::logic_error("visit_manifold: unknown kind of space");
 }
 
 /// The connection of a checked non-Cartan–Schouten group problem on G: Levi-Civita of the metric

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cartan/api/json_io.hpp"
+#include "cartan/api/spaces.hpp"
 #include "cartan/enum_names.hpp"
 #include "cartan/errors.hpp"
 #include "cartan/models/catalogue.hpp"
@@ -59,11 +60,26 @@ const models::ModelInfo& group_info(const GroupProblem& p, std::string_view wher
   return models::find_model(p.group, python_model ? std::string_view{} : std::string_view(p.model), where);
 }
 
+/// alpha's n^3 numbers as n planes of n rows: alpha[i][j][k].
+json alpha_planes(const std::vector<double>& alpha, std::size_t n) {
+  if (alpha.size() != n * n * n) {
+    throw_invalid("cartan::api::result_json", "alpha", excerpt(alpha), "must have n^3 = " + std::to_string(n * n * n) + " numbers");
+  }
+  json out = json::array();
+  for (std::size_t i = 0; i < n; ++i) out.push_back(json_rows(alpha.data() + i * n * n, n, n));
+  return out;
+}
+
+/// n numbers (a diagonal) as a list, n^2 numbers as n rows.
+json matrix_numbers(const std::vector<double>& x, std::size_t n) {
+  return x.size() == n * n && n > 1 ? json_rows(x.data(), n, n) : json_list(x);
+}
+
 void write_problem(json& out, const GroupProblem& p) {
   const auto n = static_cast<std::size_t>(group_info(p, "cartan::api::result_json").dim);
   out["group"] = p.group;
   out["model"] = p.model;
-  out["inertia"] = p.inertia.size() == n * n && n > 1 ? json_rows(p.inertia.data(), n, n) : json_list(p.inertia);
+  out["inertia"] = matrix_numbers(p.inertia, n);
   out["lambda"] = number_or_null(p.lambda);
   out["g0"] = json_list(p.g0);
   out["gT"] = json_list(p.gT);
@@ -75,29 +91,65 @@ void write_problem(json& out, const GroupProblem& p) {
     case connections::ConnectionKind::LeviCivita:
       out["metric"] = json_list(p.metric);
       break;
-    case connections::ConnectionKind::Coefficients: {
-      if (p.alpha.size() != n * n * n) {
-        throw_invalid("cartan::api::result_json", "alpha", excerpt(p.alpha), "must have n^3 = " + std::to_string(n * n * n) + " numbers");
-      }
-      json alpha = json::array();  // alpha[i][j][k]
-      for (std::size_t i = 0; i < n; ++i) {
-        alpha.push_back(json_rows(p.alpha.data() + i * n * n, n, n));
-      }
-      out["alpha"] = alpha;
+    case connections::ConnectionKind::Coefficients:
+      out["alpha"] = alpha_planes(p.alpha, n);
       break;
-    }
   }
   out["T"] = number_or_null(p.T);
   out["N"] = p.N;
 }
 
+/// The widths of a manifold problem's rows: a point's numbers d_q, a tangent vector's d, the
+/// dimension m (euclidean: the length of q0, 2 or 3).
+struct ManifoldWidths {
+  std::size_t point, vector, m;
+};
+
+/// The length of q0 as R^n's or a chart's dimension: 2 or 3.
+std::size_t coordinates(const ManifoldProblem& p, std::string_view where) {
+  if (p.q0.size() != 2 && p.q0.size() != 3) {
+    throw_invalid(where, "q0", excerpt(p.q0),
+                  "must have 2 or 3 numbers (the coordinates of a point of " + p.manifold + ": R^2 or R^3, or a chart of them)");
+  }
+  return p.q0.size();
+}
+
+ManifoldWidths manifold_widths(const ManifoldProblem& p, std::string_view where) {
+  if (p.manifold.starts_with(kPythonModelPrefix)) {  // a Chart defined in Python: m coordinates
+    const std::size_t m = coordinates(p, where);
+    return {m, m, m};
+  }
+  const SpaceInfo& space = find_space(p.manifold, where);
+  switch (space.kind) {
+    case SpaceKind::Group: {
+      const models::ModelInfo& info = models::find_model(space.name, {}, where);
+      const auto m = static_cast<std::size_t>(info.dim);
+      return {info.element_size, m, m};
+    }
+    case SpaceKind::Quadric: return {3, 3, 2};
+    case SpaceKind::Euclidean: {
+      const std::size_t m = coordinates(p, where);
+      return {m, m, m};
+    }
+  }
+  throw std::logic_error("manifold_widths: unknown kind of space");
+}
+
 void write_problem(json& out, const ManifoldProblem& p) {
+  const ManifoldWidths w = manifold_widths(p, "cartan::api::result_json");
   out["manifold"] = p.manifold;
-  out["model"] = kManifoldModel;
-  out["mass"] = json_list(p.mass);
+  out["model"] = p.model;
+  out["mass"] = matrix_numbers(p.mass, w.m);
   out["gravity"] = number_or_null(p.gravity);
+  if (p.connection) {
+    out["connection"] = to_string(*p.connection);
+    if (*p.connection == connections::ConnectionKind::CartanSchouten) out["lambda"] = number_or_null(p.lambda);
+    if (!p.metric.empty()) out["metric"] = matrix_numbers(p.metric, w.m);
+    if (*p.connection == connections::ConnectionKind::Coefficients) out["alpha"] = alpha_planes(p.alpha, w.m);
+  }
   out["q0"] = json_list(p.q0);
   out["qT"] = json_list(p.qT);
+  if (!p.frame0.empty()) out["frame0"] = json_rows(p.frame0.data(), w.m, w.vector);
   out["T"] = number_or_null(p.T);
   out["N"] = p.N;
 }
@@ -198,6 +250,22 @@ void read_horizon(const Reader& in, Problem& p, double& tol) {
   require_tolerance(tol, in.where());
 }
 
+/// alpha[i][j][k]: n planes of n rows of n numbers, as n^3 numbers in (i, j, k) order.
+std::vector<double> read_alpha(const Reader& in, std::size_t n) {
+  const json& alpha = in.key("alpha");
+  if (!alpha.is_array() || alpha.size() != n) {
+    in.bad("alpha", io::describe(alpha), "must be an n x n x n array, n = " + std::to_string(n));
+  }
+  std::vector<double> out;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::MatrixXd plane = in.table(alpha[i], "alpha[" + std::to_string(i) + "]", n, n);
+    for (Eigen::Index a = 0; a < plane.rows(); ++a) {
+      for (Eigen::Index b = 0; b < plane.cols(); ++b) out.push_back(plane(a, b));
+    }
+  }
+  return out;
+}
+
 /// A group problem's fields, in the order `cartan verify` has always named them: the names, the
 /// numbers, the connection, the boundary elements, then the inertia's size.
 GroupProblem read_group_problem(const Reader& in, double& tol) {
@@ -218,18 +286,7 @@ GroupProblem read_group_problem(const Reader& in, double& tol) {
   if (p.connection == connections::ConnectionKind::LeviCivita && j.contains("metric")) {
     p.metric = in.numbers(j["metric"], "metric", {n, n * n}, std::to_string(n) + " or " + std::to_string(n * n) + " numbers");
   }
-  if (p.connection == connections::ConnectionKind::Coefficients) {
-    const json& alpha = in.key("alpha");
-    if (!alpha.is_array() || alpha.size() != n) {
-      in.bad("alpha", io::describe(alpha), "must be an n x n x n array, n = " + std::to_string(n));
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      const Eigen::MatrixXd plane = in.table(alpha[i], "alpha[" + std::to_string(i) + "]", n, n);
-      for (Eigen::Index a = 0; a < plane.rows(); ++a) {
-        for (Eigen::Index b = 0; b < plane.cols(); ++b) p.alpha.push_back(plane(a, b));
-      }
-    }
-  }
+  if (p.connection == connections::ConnectionKind::Coefficients) p.alpha = read_alpha(in, n);
   p.g0 = in.numbers("g0", info.element_size);
   p.gT = in.numbers("gT", info.element_size);
   if (!(python_model && inertia.is_array() && inertia.empty())) {  // a Python model may have none
@@ -239,16 +296,33 @@ GroupProblem read_group_problem(const Reader& in, double& tol) {
   return p;
 }
 
+/// A manifold problem's fields: the names, the points (which give euclidean's dimension), the
+/// Lagrangian's numbers, the connection, the frame, the horizon.
 ManifoldProblem read_manifold_problem(const Reader& in, double& tol) {
   ManifoldProblem p;
   p.manifold = in.text("manifold");
-  if (const std::string model = in.text("model"); model != kManifoldModel) {
-    in.bad("model", quote_input(model), "is not a model of " + p.manifold + " (models: particle)");
+  if (!p.manifold.starts_with(kPythonModelPrefix)) (void)find_space(p.manifold, in.where());
+  p.model = in.text("model");
+  if (p.model != kManifoldModel && !p.model.starts_with(kPythonModelPrefix)) {
+    in.bad("model", quote_input(p.model), "is not a model of " + p.manifold + " (models: particle, or python:<type name>)");
   }
-  p.mass = in.numbers(in.key("mass"), "mass");
-  p.gravity = in.number("gravity");
   p.q0 = in.numbers(in.key("q0"), "q0");
   p.qT = in.numbers(in.key("qT"), "qT");
+  const ManifoldWidths w = manifold_widths(p, in.where());
+  const std::string sizes = std::to_string(w.m) + " numbers (the diagonal) or " + std::to_string(w.m * w.m) + " (the matrix)";
+  p.mass = in.numbers(in.key("mass"), "mass", {w.m, w.m * w.m}, sizes);
+  p.gravity = in.number("gravity");
+  const json& j = in.document();
+  if (j.contains("connection")) p.connection = in.word<connections::ConnectionKind>("connection");
+  if (j.contains("lambda")) p.lambda = in.number("lambda");
+  if (j.contains("metric")) p.metric = in.numbers(j["metric"], "metric", {w.m, w.m * w.m}, sizes);
+  if (p.connection == connections::ConnectionKind::Coefficients) p.alpha = read_alpha(in, w.m);
+  if (j.contains("frame0")) {
+    const Eigen::MatrixXd rows = in.table("frame0", w.m, w.vector);
+    for (Eigen::Index i = 0; i < rows.rows(); ++i) {
+      for (Eigen::Index k = 0; k < rows.cols(); ++k) p.frame0.push_back(rows(i, k));
+    }
+  }
   read_horizon(in, p, tol);
   return p;
 }
@@ -264,7 +338,9 @@ Widths widths(const ResultRecord& r, std::string_view where) {
     const auto n = static_cast<std::size_t>(info.dim);
     return {info.element_size, n, r.result.lie_kernel ? n : n * n};
   }
-  return {3, 2, 4};  // a point of R^3 on the quadric; 2 components; Xi 2 x 2
+  const auto& p = std::get<ManifoldProblem>(r.problem);
+  const ManifoldWidths w = manifold_widths(p, where);
+  return {w.point, w.m, w.m * w.m};
 }
 
 ResultRecord read(const json& j, std::string_view where) {
@@ -302,7 +378,10 @@ ResultRecord read(const json& j, std::string_view where) {
   x.samples.v = in.table("v", rows, w.n);
   x.samples.mu = in.table("mu", rows, w.n);
   x.samples.aux = in.table(x.lie_kernel ? "xi" : "Xi", rows, w.aux);
-  if (j.contains("frame0")) x.frame0 = in.table("frame0", 2, 3);
+  if (const auto* m = std::get_if<ManifoldProblem>(&r.problem); m != nullptr && !m->frame0.empty()) {
+    x.frame0 = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+        m->frame0.data(), static_cast<Eigen::Index>(w.n), static_cast<Eigen::Index>(m->frame0.size() / w.n));
+  }
 
   // The diagnostics: optional (a trajectory computed elsewhere can be verified); when absent,
   // NaN (unknown) and no iterations.
@@ -385,7 +464,7 @@ nlohmann::json result_json(const ResultRecord& record) {
   out["v"] = json_rows(x.v);
   out["mu"] = json_rows(x.mu);
   out[r.lie_kernel ? "xi" : "Xi"] = json_rows(x.aux);
-  if (r.frame0) out["frame0"] = json_rows(*r.frame0);
+  if (r.frame0 && !out.contains("frame0")) out["frame0"] = json_rows(*r.frame0);  // the frame a solve chose
   out["terminal_error"] = number_or_null(r.terminal_error);
   out["xi_terminal"] = number_or_null(r.xi_terminal);
   out["iterations"] = {{"outer", r.outer_iterations}, {"inner", r.inner_iterations}, {"sweeps", r.sweeps}};

@@ -1,5 +1,5 @@
-// api::solve: the catalogue's model on its group through the kernel the connection allows, or a
-// quadric's particle (solve.hpp); every solve is the library's compiled one (transported/ and
+// api::solve: the catalogue's model on its group through the kernel the connection allows, or the
+// particle on a space of the catalogue (spaces.hpp) (solve.hpp); every solve is the library's compiled one (transported/ and
 // general/compiled.hpp), so this unit instantiates only the conversions to numbers.
 #include "problems.hpp"
 
@@ -60,11 +60,11 @@ Result solve(const GroupProblem& problem, const cartan::SolveOptions& options, c
 }
 
 Result solve(const ManifoldProblem& problem, const cartan::SolveOptions& options, const Guess& guess, std::string_view where) {
-  return detail::visit_manifold(problem, guess, where, [&]<class M>(const general::ErasedProblem<M>& quadric) {
+  return detail::visit_manifold(problem, guess, where, [&]<class M>(const general::ErasedProblem<M>& posed) {
     general::GeneralGuess<M> start;
-    if (!guess.v0.empty()) start.v0 = vector_of<Eigen::Vector2d>(guess.v0);
-    Result r = result_of<M>(general::solve(quadric, options, start));
-    r.frame0 = quadric.frame0->transpose();  // the rows e1, e2
+    if (!guess.v0.empty()) start.v0 = vector_of<manifolds::ComponentsOf<M>>(guess.v0);
+    Result r = result_of<M>(general::solve(posed, options, start));
+    r.frame0 = posed.initial_frame().transpose();  // the rows e_1 .. e_m
     return r;
   });
 }

@@ -85,9 +85,9 @@ verify::Report verify(const GroupProblem& problem, const Samples& samples, int o
 
 verify::Report verify(const ManifoldProblem& problem, const Samples& samples, int order, double tol, Status status,
                       std::string_view where) {
-  return detail::visit_manifold(problem, {}, where, [&]<class M>(const general::ErasedProblem<M>& quadric) {
-    check_samples(samples, M::kAmbientDim, M::kDim, M::kDim * M::kDim, where);
-    return general::verify_general(quadric, general_trajectory<M>(samples), order, tol, status);
+  return detail::visit_manifold(problem, {}, where, [&]<class M>(const general::ErasedProblem<M>& posed) {
+    check_samples(samples, manifolds::PointOf<M>::SizeAtCompileTime, M::kDim, M::kDim * M::kDim, where);
+    return general::verify_general(posed, general_trajectory<M>(samples), order, tol, status);
   });
 }
 

@@ -1,7 +1,7 @@
-"""`cartan solve --manifold sphere|hyperbolic-plane` (cartan::api::ManifoldProblem,
-include/cartan/api/solve.hpp): the general transported-velocity problem on S^2 (and H^2) with its
-Levi-Civita connection and the particle
-l = 1/2 (a1 v1^2 + a2 v2^2) - G z. Checked against things the solver does not use: the classical
+"""`cartan solve --manifold SPACE` (cartan::api::ManifoldProblem, include/cartan/api/solve.hpp, on
+every space of include/cartan/api/spaces.hpp): the general transported-velocity problem on S^2
+(and H^2) with its Levi-Civita connection, on R^n and on the groups with their connections, and the
+particle l = 1/2 v^T A v - G q[last]. Checked against things the solver does not use: the classical
 spherical pendulum integrated by SciPy (a metric connection and an isotropic mass give back
 classical mechanics), energy conservation at the scheme's order, the documented frame, and the
 bad-input contract (exit 2, one line naming the value).
@@ -143,9 +143,12 @@ def test_anisotropic_mass_changes_the_dynamics(tmp_path):
     (["--qT", "2,0,-0.6"], "are equal"),
     (["--qT", "0,0,0"], "qT = 0,0,0 has zero length"),
     (["--qT", "1,2"], "qT = 1,2 must have 3 numbers"),
-    (["--lambda", "0.3"], "lambda = 0.3 is not an option"),
+    (["--lambda", "0.3"], "lambda = 0.3 is an option of --connection cartan-schouten only"),
+    (["--connection", "coefficients"], "connection = coefficients is not a connection of sphere"),
+    (["--frame0", "0,1,0"], "frame0 = 0,1,0 must have 6 numbers"),
+    (["--frame0", "1,0,0,0,1,0"], "must consist of tangent vectors at q0"),
     (["--group", "se2"], "is not an option of --manifold sphere"),
-    (["--mass", "1,-2"], "mass = 1,-2 must be positive"),
+    (["--mass", "1,-2"], "mass = 1,-2 must be symmetric positive definite"),
     (["--mass", "1,2,3"], "must have 2 numbers"),
     (["--method", "two-level"], "is not a method of --manifold sphere"),
     (["--samples", "5"], "samples = 5 is an option of --method collocation only"),
@@ -166,7 +169,7 @@ def test_manifold_options_are_refused_on_groups_and_unknown_manifolds():
     r = run("solve", "--group", "so3", "--a0", "1,0,0", "--aT", "0,1,0", "--q0", "1,0,0")
     assert r.returncode == 2 and "q0 = 1,0,0 is not an option of a problem on a group" in r.stderr
     r = run("solve", "--manifold", "torus", "--q0", Q0, "--qT", QT)
-    assert r.returncode == 2 and 'manifold = "torus" is not one of: sphere' in r.stderr
+    assert r.returncode == 2 and 'manifold = "torus" is not one of: so3, heisenberg, se2, se3, sphere' in r.stderr
     r = run("solve", "--manifold", "sphere", "--qT", QT)
     assert r.returncode == 2 and "q0 = (missing) is required" in r.stderr
 
@@ -183,6 +186,39 @@ def test_verify_passes_sphere_results_and_fails_them_for_another_problem(tmp_pat
         (tmp_path / "wrong.json").write_text(json.dumps(data))
         r = run("verify", str(tmp_path / "wrong.json"), "--json")
         assert r.returncode == 1 and json.loads(r.stdout)["verdict"] == "FAIL", r.stdout
+
+
+def test_every_space_of_the_catalogue_solves_and_verifies(tmp_path):
+    """Each space the library compiles, through `cartan solve --manifold` and `cartan verify` of its
+    file; the projectile in R^3 against its closed form (both schemes integrate a constant force
+    exactly: the shooting tolerance remains)."""
+    r = solve_file(tmp_path, "--manifold", "euclidean", "--q0", "0,0,0", "--qT", "1,2,-0.5", "--gravity", "9.81",
+                   "--mass", "2,1,4", "--T", "1.5", "--N", "60", "--order", "2", name="e.json")
+    assert r["status"] == "converged" and r["connection"] == "levi-civita", r["message"]
+    t, q = np.array(r["t"]), np.array(r["q"])
+    a = np.array([0, 0, 9.81 / 4])
+    c = np.array([1, 2, -0.5]) / 1.5 + 0.5 * a * 1.5
+    np.testing.assert_allclose(q, np.outer(t, c) - 0.5 * np.outer(t**2, a), atol=1e-9)
+    cases = {
+        "h.json": ["--manifold", "hyperbolic-plane", "--q0", "0,0,1", "--qT", "0.5,0.2,1.2", "--gravity", "1"],
+        "p.json": ["--manifold", "euclidean", "--q0", "0,0", "--qT", "1,0.4", "--connection", "coefficients",
+                   "--alpha", str(tmp_path / "alpha.json"), "--order", "2"],
+        "so3.json": ["--manifold", "so3", "--qT", "0.36,-0.48,0.8,0.8,0.6,0,-0.48,0.64,0.6", "--connection",
+                     "levi-civita", "--metric", "1,2,3", "--mass", "2,3,4"],
+        "cs.json": ["--manifold", "se2", "--qT", "0.8,-0.6,1,0.6,0.8,0.5,0,0,1", "--lambda", "0.3"],
+        "h3.json": ["--manifold", "heisenberg", "--q0", "0,0,0", "--qT", "1,0.5,0.2", "--connection", "levi-civita"],
+        "se3.json": ["--manifold", "se3", "--qT", "1,0,0,0.5,0,1,0,0.2,0,0,1,-0.3,0,0,0,1", "--mass", "1,1,1,2,3,4"],
+    }
+    (tmp_path / "alpha.json").write_text(json.dumps([[[0, 1.5], [0, 0]], [[0, 0], [0, 0]]]))
+    for name, args in cases.items():
+        r = solve_file(tmp_path, *args, name=name)
+        assert r["status"] == "converged", (name, r["message"])
+        out = run("verify", str(tmp_path / name))
+        assert out.returncode == 0 and "VERDICT: PASS" in out.stdout, (name, out.stdout + out.stderr)
+    r = run("solve", "--manifold", "so3", "--qT", "1,0,0,0,1,0,0,0,1", "--gravity", "1")
+    assert r.returncode == 2 and "gravity = 1 does not apply on so3" in r.stderr, r.stderr
+    r = run("solve", "--manifold", "euclidean", "--q0", "0,0,0,0", "--qT", "1,0,0,0")
+    assert r.returncode == 2 and "q0 = 0,0,0,0 must have 2 or 3 numbers" in r.stderr, r.stderr
 
 
 def test_sweep_says_it_does_not_take_manifold_problems():

@@ -239,7 +239,14 @@ TEST(ResultFile, GeneralRecordsTravel) {
   EXPECT_EQ(back.result.samples.aux, r.result.samples.aux);
 
   ResultRecord m;
-  m.problem = ManifoldProblem{"sphere", {1, 2}, 0.5, {1, 0, 0}, {0, 1, 0}, 2.0, 2};
+  ManifoldProblem sphere;
+  sphere.mass = {1, 2};
+  sphere.gravity = 0.5;
+  sphere.q0 = {1, 0, 0};
+  sphere.qT = {0, 1, 0};
+  sphere.T = 2.0;
+  sphere.N = 2;
+  m.problem = sphere;
   m.result.samples.t = Eigen::Vector3d(0, 1, 2);
   m.result.samples.points = Eigen::MatrixXd::Constant(3, 3, 0.5);
   m.result.samples.v = m.result.samples.mu = Eigen::MatrixXd::Ones(3, 2);

@@ -6,11 +6,14 @@
 // as well; this header declares only (nlohmann's forward declarations).
 //
 // Keys: status, message, method, order, branch; the problem echoed (on a group: group, model,
-// inertia, lambda, T, N, tol, g0, gT, connection and side "left" | metric | alpha; on a manifold:
-// manifold, model "particle", mass, gravity, q0, qT, T, N, tol); the samples t, g (q), v, mu, xi
-// (the Lie-group kernel) or Xi (n^2 numbers a row), frame0 (a manifold); terminal_error,
+// inertia, lambda, T, N, tol, g0, gT, connection and side "left" | metric | alpha; on a space of
+// api/spaces.hpp: manifold, model "particle" (or "python:<type name>"), mass (m numbers or m rows),
+// gravity, connection with lambda | metric | alpha, q0, qT, frame0 (its m rows e_i), T, N, tol);
+// the samples t, g (q), v, mu, xi (the Lie-group kernel) or Xi (m^2 numbers a row); terminal_error,
 // xi_terminal, iterations {outer, inner, sweeps}, action (the Lie-group kernel), solve_time_s;
 // collocation: mesh_size, max_residual, group_defect (where finite). NaN and infinities are null.
+// A manifold file of an earlier version (the quadrics' particle with mass a1, a2, no connection)
+// reads as the same problem: the space's default connection, frame0 as it recorded it.
 
 #include <nlohmann/json_fwd.hpp>
 #include <string>
@@ -18,12 +21,13 @@
 #include <variant>
 
 #include "cartan/api/solve.hpp"
+#include "cartan/api/spaces.hpp"
 
 namespace cartan::api {
 
 /// The prefix of the model name of a Lagrangian defined in Python ("python:<type name>"): a file
 /// records its name, not its code, so it is read but never rebuilt (api::verify refuses it).
-inline constexpr std::string_view kPythonModelPrefix = "python:";
+inline constexpr std::string_view kPythonModelPrefix = kPythonPrefix;
 
 /// What a result file holds: the problem as solved, the tolerance asked for, and the result.
 struct ResultRecord {

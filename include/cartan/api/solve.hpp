@@ -42,21 +42,34 @@ struct GroupProblem {
   std::vector<double> g0, gT;       ///< the elements' numbers (ModelInfo::element_what); g0 empty: the identity
 };
 
-/// The particle l = 1/2 (a1 v1^2 + a2 v2^2) - G z on a quadric of R^3 with its Levi-Civita
-/// connection (manifolds/quadric.hpp): the unit sphere (z^2 + x^2 + y^2 = 1) or the hyperbolic
-/// plane (the upper sheet of x^2 + y^2 - z^2 = -1, z > 0). v is in the frame of T_{q0}Q with e1
-/// the unit tangent at q0 along the minimal geodesic towards qT and e2 = J (q0 x e1), J = diag(1,
-/// 1, K) the metric (q0 x e1 on the sphere): so q0 and qT may not be equal, nor antipodal on the
-/// sphere.
+/// The particle l = 1/2 v^T A v - V(q) on any space of the catalogue (spaces.hpp) with one of its
+/// connections: a group with a left-invariant connection (Cartan–Schouten of lambda, Levi-Civita of
+/// a metric, the bilinear map alpha), the sphere or the hyperbolic plane with Levi-Civita
+/// (manifolds/quadric.hpp), R^2 or R^3 flat or with constant Christoffel symbols alpha. v is in
+/// the frame transported from frame0 (eq:int-diff-EL); A is in that frame. V = G q[last] (the
+/// uniform gravity of the spaces whose points are vectors), 0 on a group. The default frame of the
+/// quadrics has e1 the unit tangent at q0 along the minimal geodesic towards qT and e2 = J (q0 x
+/// e1), J = diag(1, 1, K) the metric (so q0 and qT may then not be equal, nor antipodal on the
+/// sphere); of the other spaces, the space's tangent_basis (the left-invariant basis on a group,
+/// the coordinate basis of R^n).
 struct ManifoldProblem {
-  std::string manifold = "sphere";  ///< "sphere" or "hyperbolic-plane"
-  std::vector<double> mass{1, 1};   ///< a1, a2 > 0
-  double gravity = 0;               ///< G
-  /// 3 numbers each, moved onto the quadric: divided by their length (the sphere) or by
-  /// sqrt(z^2 - x^2 - y^2) (the hyperbolic plane: z > 0 and z^2 > x^2 + y^2).
+  std::string manifold = "sphere";  ///< a space of spaces()
+  std::vector<double> mass;         ///< A: m numbers (the diagonal) or m^2 (row-major), symmetric positive definite; empty: I
+  double gravity = 0;               ///< G (spaces with SpaceInfo::gravity)
+  /// The points: a quadric's 3 numbers, moved onto it (divided by their length on the sphere, by
+  /// sqrt(z^2 - x^2 - y^2) on the hyperbolic plane: z > 0 and z^2 > x^2 + y^2); R^n's n
+  /// coordinates; a group element's numbers (models/catalogue.hpp). q0 of a group: empty, the identity.
   std::vector<double> q0, qT;
   double T = 1;
   int N = 100;
+  std::optional<connections::ConnectionKind> connection;  ///< empty: the space's first (spaces.hpp)
+  double lambda = 0.5;              ///< cartan-schouten (groups)
+  std::vector<double> metric;       ///< levi-civita on a group: m or m^2 numbers; empty: the mass
+  std::vector<double> alpha;        ///< coefficients: m^3 numbers, alpha(e_i, e_j) = sum_k alpha[i][j][k] e_k in (i, j, k) order
+  std::vector<double> frame0;       ///< the rows e_1 .. e_m of the frame at q0 (m x d numbers); empty: the default
+  /// "particle" (l above); a result file may name a Lagrangian defined in Python
+  /// ("python:<type name>"), which is read but never solved or verified here.
+  std::string model = "particle";
 };
 
 /// Guesses of v(0) and xi(0), n numbers each (xi0: the Lie-group kernel only); empty: none.
@@ -91,15 +104,18 @@ inline bool lie_kernel(const GroupProblem& problem) {
 /// Throws std::invalid_argument "<where>: <name> = <value> <problem>" for what a problem and its
 /// guess tell wrong by themselves: unknown names, wrong sizes, non-finite numbers, an inertia the
 /// model refuses, a metric that is not symmetric positive definite, connection data of another
-/// connection, a guess of xi for the general solver; on a manifold, an unknown manifold, a mass
-/// that is not positive, points that cannot be moved onto it, and q0, qT equal (or antipodal on
-/// the sphere). Not that g0 and gT are elements of the
+/// connection, a guess of xi for the general solver; on a manifold, an unknown manifold or a
+/// connection it does not take, a mass that is not symmetric positive definite, gravity where
+/// it does not apply, points that cannot be moved onto it or are not elements of the group, a
+/// frame0 of the wrong size or not a basis of the tangent space at q0, and (with the quadrics'
+/// default frame) q0, qT equal or antipodal on the sphere. Not that g0 and gT are elements of the
 /// group: solve checks that (so that a sweep reports such a point as its own row), nor the options.
 void check(const GroupProblem& problem, const Guess& guess = {}, std::string_view where = "cartan::api::check");
 void check(const ManifoldProblem& problem, const Guess& guess = {}, std::string_view where = "cartan::api::check");
 
-/// check(problem, guess), then the problem with q0 and qT moved onto the manifold as solve moves
-/// them: what a caller echoes as the points it solved between.
+/// check(problem, guess), then the problem as solve poses it: q0 and qT moved onto the manifold
+/// (a group's q0 the identity when none was given), the connection named, the mass and the
+/// frame0 it solved with: what a caller echoes (what a result file records).
 ManifoldProblem on_manifold(const ManifoldProblem& problem, const Guess& guess = {},
                             std::string_view where = "cartan::api::on_manifold");
 
