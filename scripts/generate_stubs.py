@@ -9,6 +9,14 @@ attributes. Regenerate after changing the bindings (python/src), then commit the
 ``--check`` writes nothing and fails if the committed stub differs from what the module gives
 (python/tests/test_stubs.py runs it in `make test`, beside mypy's stubtest).
 
+Why not mypy's stubgen (Debian's python3-mypy 1.0.1, which stubtest below uses): measured on this
+module (2026-11-29), its output is not Python (``def point_shape(self) -> The shape of a point:
+...``: a property's docstring read as its type, a SyntaxError at line 38), 20 of its 53
+constructors lose their signature (``__init__(self, *args, **kwargs)``: pybind11's overloads and
+keyword-only arguments; here 5, the classes with no constructor: the groups and BvpSolution), and its
+``numpy.ndarray[numpy.float64]`` annotations are not valid for mypy (ndarray takes two
+parameters). This script is those rules and nothing else; stubtest checks its result.
+
 Types: pybind11's names become annotations (``numpy.ndarray[numpy.float64[3, 1]]`` ->
 ``NDArray[numpy.float64]``, ``object`` -> ``Any``, ``cartan._cartan.X`` -> ``X``); a C++ type
 pybind11 could not name (``cartan::...``) is an error: register the class before the function that

@@ -168,6 +168,35 @@ TEST(LieKernel, TheAuxiliaryMapTakesVMuToTheCoadjointAction) {
   EXPECT_NEAR_MATRIX(general::xi_to_aux<groups::Heisenberg>(centre_only), Eigen::Matrix3d::Zero(), 1e-15);
 }
 
+// The Hessian structure a Lagrangian declares reaches the Lie-group kernel's scheme through every
+// adapter and erasure (a KineticPotential reports it; OnGroupManifold, general::ErasedLagrangian,
+// LieLagrangian and mechanics::ErasedLagrangian forward it), so that the particle on a
+// Cartan-Schouten GroupManifold costs what the model does (bench_general,
+// BM_Solve_CartanSchoutenModelOrManifold); before, every erased Lagrangian reported none.
+TEST(LieKernel, TheHessianStructureTravelsThroughTheErasures) {
+  using Structure = mechanics::RuntimeHessianStructure;
+  const auto expect = [](const Structure& s, bool constant, bool independent, bool zero, const char* what) {
+    EXPECT_EQ(s.constant_momentum_hessian, constant) << what;
+    EXPECT_EQ(s.gradient_independent_of_velocity, independent) << what;
+    EXPECT_EQ(s.zero_group_gradient, zero) << what;
+  };
+  const SO3Manifold so3 = SO3Manifold::cartan_schouten(0.3);
+  const general::KineticPotential<SO3Manifold> free(paper_inertia());
+  const auto potential = [](const groups::SO3::Element& g) { return g.trace(); };
+  const auto gradient = [](const groups::SO3::Element&) { return Eigen::Vector3d::Zero().eval(); };
+  const general::KineticPotential<SO3Manifold> pulled(paper_inertia(), potential, gradient);
+  expect(mechanics::hessian_structure_of(free), true, true, true, "KineticPotential");
+  expect(mechanics::hessian_structure_of(pulled), true, true, false, "KineticPotential with V");
+  const ErasedLagrangian<SO3Manifold> erased_free(free), erased_model(general::OnGroupManifold<groups::SO3, mechanics::SO3Oscillator>{
+                                                               mechanics::SO3Oscillator(paper_inertia())});
+  expect(erased_free.hessian_structure(), true, true, true, "general::ErasedLagrangian(KineticPotential)");
+  expect(erased_model.hessian_structure(), true, true, false, "general::ErasedLagrangian(OnGroupManifold(SO3Oscillator))");
+  const mechanics::ErasedLagrangian<groups::SO3> lie(general::LieLagrangian<groups::SO3, ErasedLagrangian<SO3Manifold>>{erased_free, so3});
+  expect(lie.hessian_structure(), true, true, true, "mechanics::ErasedLagrangian(LieLagrangian)");
+  expect(mechanics::ErasedLagrangian<groups::SO3>(mechanics::RigidBody(paper_inertia())).hessian_structure(), true, true, true,
+         "mechanics::ErasedLagrangian(RigidBody)");
+}
+
 // Design §5.4, item 1: the dispatched solve against the general kernel, node by node.
 TEST(LieKernel, GeneralSolveOnCartanSchoutenRunsTheLieKernel) {
   for_every_case([](const auto& p, SchemeOrder order, const std::string& name) {

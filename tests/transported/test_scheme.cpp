@@ -5,6 +5,7 @@
 
 #include "cartan/mechanics/free_body.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
+#include "cartan/transported/compiled.hpp"  // erased(problem)
 #include "cartan/transported/continuation.hpp"
 #include "cartan/transported/two_level.hpp"
 #include "test_support.hpp"
@@ -78,6 +79,9 @@ TEST(TransportedScheme, TangentLinearMatchesFiniteDifferences) {
       expect_tangent_matches_differences(h3, order, rng);
       expect_tangent_matches_differences(without_structure(oscillator), order, rng);
       expect_tangent_matches_differences(without_structure(free_body), order, rng);
+      // Behind the erased type: the structure read at run time (constant mu_v, the Hessian held).
+      expect_tangent_matches_differences(transported::erased(oscillator), order, rng);
+      expect_tangent_matches_differences(transported::erased(free_body), order, rng);
       // The closed-form left Jacobians of SE(2) and SE(3) inside the step.
       const transported::TransportedProblem<groups::SE2, mechanics::SE2FreeBody> se2{
           mechanics::SE2FreeBody(Eigen::Vector3d(2, 1, 3).asDiagonal()), lambda, 2.0, 40, groups::SE2::identity(),

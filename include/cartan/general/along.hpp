@@ -5,7 +5,9 @@
 // connection when l does not depend on t: docs/general-connections.md#energy; what verify checks)
 // and the cumulative discrete transported action (action.hpp).
 //
-// The frame is rebuilt from consecutive nodes, E_0 = the problem's initial frame and
+// The frame is the trajectory's own where it has one at every node (a solve's: its scheme's or
+// collocation's transported frame), else rebuilt from consecutive nodes, E_0 = the problem's
+// initial frame and
 //   E_{k+1} = transport_along_step(q_k, difference(q_k, q_{k+1})) E_k,
 // exact for both shooting schemes (their steps are such pieces) and second order in the sample
 // spacing for collocation (its frame solves e' = -Gamma(q', e) along the smooth path).
@@ -44,8 +46,8 @@ void check_along_general(const GeneralProblem<M, L>& problem, const GeneralTraje
   if (n >= 2) require_sample_times(x.t, problem.T, 0.01 / static_cast<double>(n - 1), "along_general", "trajectory");
 }
 
-/// The frames, u, energy and cumulative S_h (0 at the first node; the last entry is the action) of
-/// `x` as a solution of `problem` (the header's comment), at x's own times. Throws
+/// The frames (x's own, or rebuilt: the header's comment), u, energy and cumulative S_h (0 at the
+/// first node; the last entry is the action) of `x` as a solution of `problem`, at x's own times. Throws
 /// std::invalid_argument as check_along_general; with fewer than two samples every list is empty,
 /// and where a sample is not finite energy and action are NaN.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
@@ -61,7 +63,7 @@ GeneralAlong<M> along_general(const GeneralProblem<M, L>& problem, const General
     out.action.assign(n, std::numeric_limits<double>::quiet_NaN());
     return out;
   }
-  out.frame = transported_frames(problem, x.q);
+  out.frame = x.frame.size() == n ? x.frame : transported_frames(problem, x.q);  // a solve's own, or rebuilt
   for (std::size_t k = 0; k < n; ++k) {
     out.u.push_back(out.frame[k] * x.v[k]);
     const manifolds::ComponentsOf<M> mu = problem.lagrangian.momentum(x.t[k], x.q[k], x.v[k]);

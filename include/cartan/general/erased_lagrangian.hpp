@@ -40,6 +40,9 @@ class ErasedLagrangian {
   /// Whether the wrapped Lagrangian has its own `hessian` (else hessian() differences it): what
   /// check_lagrangian checks.
   bool has_hessian() const { return impl_->has_hessian(); }
+  /// The wrapped Lagrangian's structure (mechanics::hessian_structure_of; point gradient read as
+  /// the group gradient), which the Lie-group kernel's scheme reads at run time.
+  mechanics::RuntimeHessianStructure hessian_structure() const { return impl_->structure; }
 
  private:
   struct Interface {
@@ -50,10 +53,11 @@ class ErasedLagrangian {
     virtual Vector point_gradient(double t, const Point& q, const Components& v) const = 0;
     virtual LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q, const Components& v) const = 0;
     virtual bool has_hessian() const = 0;
+    mechanics::RuntimeHessianStructure structure;
   };
   template <class L>
   struct Model final : Interface {
-    explicit Model(L l) : lagrangian(std::move(l)) {}
+    explicit Model(L l) : lagrangian(std::move(l)) { this->structure = mechanics::hessian_structure_of(lagrangian); }
     double value(double t, const Point& q, const Components& v) const override { return lagrangian.value(t, q, v); }
     Components momentum(double t, const Point& q, const Components& v) const override {
       return lagrangian.momentum(t, q, v);

@@ -103,6 +103,8 @@ class KineticPotential {
     if (gradient_) h.gradient_q = -manifolds::point_derivative(manifold, q, [&](const Point& p) { return Vector(gradient_(p)); });
     return h;
   }
+  /// mu = A v with A constant; the point gradient -grad V does not depend on v, and is 0 without V.
+  mechanics::RuntimeHessianStructure hessian_structure() const { return {true, true, !gradient_}; }
   /// 1/2 v^T A v + V(q).
   double energy(const Point& q, const Components& v) const { return 0.5 * v.dot(inertia_ * v) + potential(q); }
 
@@ -141,6 +143,8 @@ struct OnGroupManifold {
     const mechanics::LagrangianHessian<G> h = mechanics::lagrangian_hessian<G>(lagrangian, t, g, v);
     return {h.momentum_v, h.momentum_g, h.gradient_v, h.gradient_g};
   }
+  /// The model's (its point gradient is its group gradient).
+  mechanics::RuntimeHessianStructure hessian_structure() const { return mechanics::hessian_structure_of(lagrangian); }
 };
 
 }  // namespace cartan::general

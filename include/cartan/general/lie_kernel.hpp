@@ -48,8 +48,8 @@ inline constexpr bool kIsGroupManifold<manifolds::GroupManifold<G>> = true;
 /// solvers (mechanics::ReducedLagrangian), in the identity frame at g0: the inverse of
 /// OnGroupManifold (lagrangian.hpp). Both take the transported velocity v, left-trivialised at g0
 /// (design §1.2), and both perturb g as g exp(e w): the point gradient is the left-trivialised group
-/// gradient, and the Hessian blocks are the same. Declares no HessianStructure (an erased
-/// Lagrangian's is unknown).
+/// gradient, and the Hessian blocks are the same. Its Hessian structure is the wrapped Lagrangian's,
+/// reported at run time (mechanics::RuntimeHessianStructure).
 template <groups::LieGroup G, ManifoldLagrangian<manifolds::GroupManifold<G>> L>
 struct LieLagrangian {
   L lagrangian;
@@ -73,6 +73,8 @@ struct LieLagrangian {
     const LagrangianHessian<manifolds::GroupManifold<G>> h = general::lagrangian_hessian(manifold, lagrangian, t, g, v);
     return {h.momentum_v, h.momentum_q, h.gradient_v, h.gradient_q};
   }
+  /// The manifold Lagrangian's structure (its point gradient is the group gradient here).
+  mechanics::RuntimeHessianStructure hessian_structure() const { return mechanics::hessian_structure_of(lagrangian); }
 };
 
 /// C(Xi) (design §1.2): the paper's xi of the general auxiliary Xi (rows k index velocity, columns

@@ -5,8 +5,9 @@
 // type's own `hessian` where it has one, central differences otherwise: lagrangian_hessian.hpp).
 // The transported solve and verify are compiled once for it on every shipped group
 // (transported/compiled.hpp, src/transported/), so that the Python module's Lagrangians and a
-// user's own reuse them; the cost is one indirect call per evaluation. A wrapped model's static
-// traits (HessianStructure, natural or purely kinetic) are not seen through the erased type: a
+// user's own reuse them; the cost is one indirect call per evaluation. A wrapped model's
+// HessianStructure is carried as data (hessian_structure(), which the schemes read at run time);
+// its other static traits (natural or purely kinetic) are not seen through the erased type: a
 // built-in model is solved as its own type.
 
 #include <concepts>
@@ -37,6 +38,8 @@ class ErasedLagrangian {
   Tangent velocity(double t, const Element& g, const Covector& mu) const { return impl_->velocity(t, g, mu); }
   /// The wrapped Lagrangian's second derivatives (lagrangian_hessian.hpp).
   LagrangianHessian<G> hessian(double t, const Element& g, const Tangent& v) const { return impl_->hessian(t, g, v); }
+  /// The wrapped Lagrangian's structure (hessian_structure_of), which the schemes read at run time.
+  RuntimeHessianStructure hessian_structure() const { return impl_->structure; }
 
  private:
   struct Interface {
@@ -46,10 +49,11 @@ class ErasedLagrangian {
     virtual Covector group_gradient(double t, const Element& g, const Tangent& v) const = 0;
     virtual Tangent velocity(double t, const Element& g, const Covector& mu) const = 0;
     virtual LagrangianHessian<G> hessian(double t, const Element& g, const Tangent& v) const = 0;
+    RuntimeHessianStructure structure;
   };
   template <class L>
   struct Model final : Interface {
-    explicit Model(L l) : lagrangian(std::move(l)) {}
+    explicit Model(L l) : lagrangian(std::move(l)) { this->structure = hessian_structure_of(lagrangian); }
     double value(double t, const Element& g, const Tangent& v) const override { return lagrangian.value(t, g, v); }
     Covector momentum(double t, const Element& g, const Tangent& v) const override { return lagrangian.momentum(t, g, v); }
     Covector group_gradient(double t, const Element& g, const Tangent& v) const override {

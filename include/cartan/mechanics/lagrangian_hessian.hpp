@@ -4,6 +4,7 @@
 // LagrangianHessian<G>; otherwise they are computed by central differences of its first
 // derivatives (momentum, group_gradient).
 
+#include <concepts>
 #include <array>
 
 #include "cartan/mechanics/lagrangian.hpp"
@@ -41,6 +42,29 @@ struct HessianStructure {
       requires { requires L::kGroupGradientIndependentOfVelocity; };
   static constexpr bool zero_group_gradient = requires { requires L::kZeroGroupGradient; };
 };
+
+/// A Hessian structure known at run time: what a Lagrangian behind an erased type declares
+/// (HessianStructure of the wrapped type, or what it reports), so that the schemes skip the same
+/// work for it (transported/scheme.hpp).
+struct RuntimeHessianStructure {
+  bool constant_momentum_hessian = false;
+  bool gradient_independent_of_velocity = false;
+  bool zero_group_gradient = false;
+};
+
+/// The structure of `lagrangian`: what it reports (`hessian_structure()`: an erased Lagrangian, a
+/// KineticPotential, an adapter), else what its type declares (HessianStructure).
+template <class L>
+RuntimeHessianStructure hessian_structure_of(const L& lagrangian) {
+  if constexpr (requires {
+                  { lagrangian.hessian_structure() } -> std::convertible_to<RuntimeHessianStructure>;
+                }) {
+    return lagrangian.hessian_structure();
+  } else {
+    return {HessianStructure<L>::constant_momentum_hessian, HessianStructure<L>::gradient_independent_of_velocity,
+            HessianStructure<L>::zero_group_gradient};
+  }
+}
 
 /// Central-difference step: truncation ~ step^2 |l'''|, rounding ~ 1e-16 / step: both ~1e-10.
 inline constexpr double kHessianStep = 1e-5;

@@ -61,12 +61,13 @@ class TransportedScheme {
   /// Throws std::invalid_argument for an invalid problem (TransportedProblem::validate) or order.
   TransportedScheme(const TransportedProblem<G, L>& problem, SchemeOrder order)
       : problem_(problem), order_(order), dt_(problem.step()), c_torsion_(2 * problem.lambda - 1),
-        c_curvature_(problem.lambda * (1 - problem.lambda)) {
+        c_curvature_(problem.lambda * (1 - problem.lambda)),
+        structure_(mechanics::hessian_structure_of(problem.lagrangian)) {
     problem.validate();
     require_scheme_order(order, "TransportedScheme");
-    if constexpr (Structure::constant_momentum_hessian) {
-      momentum_v_inverse_ = mechanics::lagrangian_hessian<G>(problem.lagrangian, 0.0, problem.g0, Tangent::Zero())
-                                .momentum_v.inverse();
+    if (structure_.constant_momentum_hessian) {
+      constant_hessian_ = mechanics::lagrangian_hessian<G>(problem.lagrangian, 0.0, problem.g0, Tangent::Zero());
+      momentum_v_inverse_ = constant_hessian_.momentum_v.inverse();
     }
   }
 
@@ -103,7 +104,7 @@ class TransportedScheme {
     for (Directions* m : {&d.gamma, &d.chi, &d.mu, &d.xi, &d.v}) m->setZero(n, columns);
     d.v.leftCols(n).setIdentity();
     if (columns >= 2 * n) d.xi.middleCols(n, n).setIdentity();
-    d.hessian = mechanics::lagrangian_hessian<G>(problem_.lagrangian, node.t, node.g, node.v);
+    d.hessian = node_hessian(node.t, node.g, node.v);
     d.mu = d.hessian.momentum_v * d.v;
     return d;
   }
@@ -134,7 +135,7 @@ class TransportedScheme {
     d.chi.middleCols(n, n).setIdentity();
     d.mu.middleCols(2 * n, n).setIdentity();
     d.xi.rightCols(n).setIdentity();
-    d.hessian = mechanics::lagrangian_hessian<G>(problem_.lagrangian, node.t, node.g, node.v);
+    d.hessian = node_hessian(node.t, node.g, node.v);
     d.v = velocity_tangent(d.hessian, d.mu, d.gamma);
     return d;
   }
@@ -213,7 +214,9 @@ class TransportedScheme {
     // The terms whose coefficients vanish are skipped (P^T zeta for a declared zero gradient,
     // torsion at lambda = 1/2, curvature at lambda = 0, 1): the same values, fewer products.
     r.dmu = c_torsion_ * r.dxi;
-    if constexpr (!Structure::zero_group_gradient) r.dmu += r.p.transpose() * r.zeta;
+    if constexpr (!Structure::zero_group_gradient) {
+      if (!structure_.zero_group_gradient) r.dmu += r.p.transpose() * r.zeta;
+    }
     if (c_curvature_ != 0) r.dmu -= c_curvature_ * (r.coad_v * node.xi);
     return r;
   }
@@ -255,6 +258,7 @@ class TransportedScheme {
     if constexpr (Structure::zero_group_gradient) {
       return Covector::Zero();
     } else {
+      if (structure_.zero_group_gradient) return Covector::Zero();  // an erased model's
       return mechanics::require_finite_result(Covector(problem_.lagrangian.group_gradient(node.t, node.g, node.v)),
                                               "lagrangian.group_gradient", node.t, node.g, node.v);
     }
@@ -269,10 +273,14 @@ class TransportedScheme {
     dr.dmu = c_torsion_ * dr.dxi;
     if (c_curvature_ != 0) dr.dmu -= c_curvature_ * (times(r.coad_v, d.xi) + times(coad_first(node.xi), d.v));
     if constexpr (!Structure::zero_group_gradient) {
-      // eta = P^T zeta: d eta = P^T (ad(chi)^T zeta + dzeta).
-      Directions deta = times(coad_first(r.zeta), d.chi) + times(d.hessian.gradient_g, d.gamma);
-      if constexpr (!Structure::gradient_independent_of_velocity) deta += times(d.hessian.gradient_v, d.v);
-      dr.dmu += times(r.p.transpose(), deta);
+      if (!structure_.zero_group_gradient) {
+        // eta = P^T zeta: d eta = P^T (ad(chi)^T zeta + dzeta).
+        Directions deta = times(coad_first(r.zeta), d.chi) + times(d.hessian.gradient_g, d.gamma);
+        if constexpr (!Structure::gradient_independent_of_velocity) {
+          if (!structure_.gradient_independent_of_velocity) deta += times(d.hessian.gradient_v, d.v);
+        }
+        dr.dmu += times(r.p.transpose(), deta);
+      }
     }
     return dr;
   }
@@ -310,8 +318,19 @@ class TransportedScheme {
     if constexpr (Structure::constant_momentum_hessian) {
       return times(momentum_v_inverse_, dmu);
     } else {
+      if (structure_.constant_momentum_hessian) return times(momentum_v_inverse_, dmu);  // an erased model's
       return hessian.momentum_v.partialPivLu().solve(Directions(dmu - times(hessian.momentum_g, gamma)));
     }
+  }
+
+  /// The Lagrangian's second derivatives at a node; for an erased Lagrangian that reports a
+  /// constant mu_v and a zero gradient, the constant blocks (M, 0, 0, 0) computed once (a typed
+  /// model's analytic Hessian is as cheap and is evaluated as before).
+  mechanics::LagrangianHessian<G> node_hessian(double t, const groups::ElementOf<G>& g, const Tangent& v) const {
+    if constexpr (!(Structure::constant_momentum_hessian && Structure::zero_group_gradient)) {
+      if (structure_.constant_momentum_hessian && structure_.zero_group_gradient) return constant_hessian_;
+    }
+    return mechanics::lagrangian_hessian<G>(problem_.lagrangian, t, g, v);
   }
 
   /// Linearisation of `advance`: g' = g exp(h u) gives gamma' = Ad(exp(-h u)) gamma + h J_r(h u) du;
@@ -327,7 +346,7 @@ class TransportedScheme {
     } else {
       dout.xi = d.xi + dt_ * dr.dxi;
     }
-    dout.hessian = mechanics::lagrangian_hessian<G>(problem_.lagrangian, out.t, out.g, out.v);
+    dout.hessian = node_hessian(out.t, out.g, out.v);
     dout.v = velocity_tangent(dout.hessian, dout.mu, dout.gamma);
   }
 
@@ -336,7 +355,11 @@ class TransportedScheme {
   double dt_;
   double c_torsion_;    // 2 lambda - 1
   double c_curvature_;  // lambda (1 - lambda)
+  /// The Lagrangian's Hessian structure at run time: its type's (Structure), or what an erased
+  /// Lagrangian reports of the type it wraps.
+  mechanics::RuntimeHessianStructure structure_;
   Matrix momentum_v_inverse_ = Matrix::Identity();  // (d^2 l/dv^2)^{-1} when constant (Structure)
+  mechanics::LagrangianHessian<G> constant_hessian_{Matrix::Zero(), Matrix::Zero(), Matrix::Zero(), Matrix::Zero()};  // when mu_v is constant: at (g0, 0)
 };
 
 }  // namespace cartan::transported
