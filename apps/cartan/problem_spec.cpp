@@ -115,7 +115,7 @@ std::vector<ProblemField> make_fields() {
            "when Newton fails on the start's mesh (from that order-2 shooting solution)", nullptr, ProblemField::Scope::Any},
       {"v0", &S::v0, "guess of v(0), n numbers (shooting methods; default the geodesic velocity)", nullptr, ProblemField::Scope::Any},
       {"xi0", &S::xi0, "guess of xi(0), n numbers (shooting, multiple-shooting; default 0)", nullptr, ProblemField::Scope::Group},
-      {"segments", &S::segments, "multiple-shooting only: number of segments (default about 100 steps each, at most 16)", non_negative, ProblemField::Scope::Group},
+      {"segments", &S::segments, "multiple-shooting only: number of segments (default about 100 steps each, at most 16)", non_negative, ProblemField::Scope::Any},
       {"order", &S::order, "1 (the paper's scheme) | 2 (second order) (default 1)", one_or_two, ProblemField::Scope::Any},
       {"tol", &S::tol, "tolerance (default " + format_value(cartan::kDefaultTol) + ")", positive_finite,
        ProblemField::Scope::Any},
@@ -276,19 +276,29 @@ void check_samples(const ProblemSpec& spec, cartan::Method method) {
 }
 
 /// The general solver's methods (general/solve.hpp): auto, shooting, collocation; continuation
-/// none or T, with shooting and collocation only.
-void check_general_method(const ProblemSpec& spec, const std::string& problem) {
-  const cartan::Method method = parse_enum<cartan::Method>(spec.method, "cartan solve");
-  if (method != cartan::Method::Auto && method != cartan::Method::Shooting &&
-      method != cartan::Method::Collocation) {
-    bad("method", quote_input(spec.method), "is not a method of " + problem + " (methods: auto, shooting, collocation)");
+/// none or T, with shooting and collocation only. With `lie_methods` (a group with a
+/// Cartan-Schouten connection, which general::solve runs on the Lie-group kernel) also
+/// multiple-shooting (with --segments), two-level and continuation in lambda.
+void check_general_method(const ProblemSpec& spec, const std::string& problem, bool lie_methods = false) {
+  using cartan::Method;
+  const Method method = parse_enum<Method>(spec.method, "cartan solve");
+  const bool lie_method = method == Method::MultipleShooting || method == Method::TwoLevel;
+  if ((method != Method::Auto && method != Method::Shooting && method != Method::Collocation && !lie_method) ||
+      (lie_method && !lie_methods)) {
+    bad("method", quote_input(spec.method),
+        "is not a method of " + problem + " (methods: auto, shooting, collocation" +
+            (lie_methods ? ", multiple-shooting, two-level)" : ")"));
   }
   const cartan::Continuation continuation = parse_enum<cartan::Continuation>(spec.continuation, "cartan solve");
-  if (continuation == cartan::Continuation::Lambda) {
-    bad("continuation", quote_input(spec.continuation), "is not an option of " + problem + " (none, T)");
+  if (continuation == cartan::Continuation::Lambda && (!lie_methods || method == Method::Collocation)) {
+    bad("continuation", quote_input(spec.continuation),
+        "is not an option of " + problem + (lie_methods ? " with --method collocation (none, T)" : " (none, T)"));
   }
-  if (continuation != cartan::Continuation::None && method == cartan::Method::Auto) {
+  if (continuation != cartan::Continuation::None && method != Method::Shooting && method != Method::Collocation) {
     bad("continuation", quote_input(spec.continuation), "is an option of --method shooting and collocation only");
+  }
+  if (spec.segments != 0 && method != Method::MultipleShooting) {
+    bad("segments", std::to_string(spec.segments), "is an option of --method multiple-shooting only");
   }
   check_samples(spec, method);
 }
@@ -335,11 +345,18 @@ void validate_manifold_problem(ProblemSpec& spec) {
   check_scope(spec, ProblemField::Scope::Manifold, kind + " (it belongs to problems on a group)");
   if (spec.model.empty()) spec.model = "particle";
   if (spec.model != "particle") bad("model", quote_input(spec.model), "is not a model of " + kind + " (models: particle)");
-  check_general_method(spec, kind);
+  if (!given(spec, "connection")) spec.connection = std::string(to_string(space.connections.front()));
+  const connections::ConnectionKind connection = parse_enum<connections::ConnectionKind>(spec.connection, kWhere);
+  api::require_connection(space, connection, kWhere);
+  check_general_method(spec, kind,
+                       space.kind == api::SpaceKind::Group && connection == connections::ConnectionKind::CartanSchouten);
   for (const auto& field : problem_fields()) check_field(spec, field, kWhere);
   require_memory("N", spec.N, kBytesPerNode * spec.N, "the trajectory and its JSON output, ~1 KiB per step");
-  if (!given(spec, "connection")) spec.connection = std::string(to_string(space.connections.front()));
-  api::require_connection(space, parse_enum<connections::ConnectionKind>(spec.connection, kWhere), kWhere);
+  if (spec.segments > spec.N) {
+    bad("segments", std::to_string(spec.segments), "must be between 1 and N (0: the default, about 100 steps each)");
+  }
+  require_memory("segments", spec.segments, kBytesPerSegmentSquared * spec.segments * spec.segments,
+                 "the dense multiple-shooting Jacobian");
   std::size_t m = static_cast<std::size_t>(space.dims.front());
   if (space.kind == api::SpaceKind::Euclidean && !spec.q0.empty()) m = spec.q0.size();
   connection_options(spec, m);

@@ -379,3 +379,30 @@ def test_hyperbolic_plane_with_gravity_conserves_energy_at_second_order(tmp_path
 def test_hyperbolic_plane_bad_points_are_refused_by_name(args, needle):
     r = run("solve", "--manifold", "hyperbolic-plane", "--q0", "0,0,1", *args)
     assert r.returncode == 2 and needle in r.stderr, r.stderr
+
+
+def test_a_group_with_cartan_schouten_takes_the_lie_kernels_methods(tmp_path):
+    """`--manifold so3` with the Cartan-Schouten connection runs general::solve on the Lie-group
+    kernel, whose own methods (multiple shooting, two-level, continuation in lambda) are reachable
+    from this door too, with the model's answer (`--group so3 --model free-rigid-body`, the same
+    problem): the same converged v0 to the shooting tolerance. Other connections and spaces refuse
+    them by name."""
+    qT = "0.36,-0.48,0.8,0.8,0.6,0,-0.48,0.64,0.6"
+    model = solve_file(tmp_path, "--group", "so3", "--model", "free-rigid-body", "--inertia", "2,3,4", "--gT", qT,
+                       "--lambda", "0.3", "--T", "2", "--N", "100", name="model.json")
+    for args in (["--method", "multiple-shooting", "--segments", "4"], ["--method", "two-level"],
+                 ["--method", "shooting", "--continuation", "lambda"]):
+        r = solve_file(tmp_path, "--manifold", "so3", "--mass", "2,3,4", "--qT", qT, "--lambda", "0.3", "--T", "2",
+                       "--N", "100", *args, name="m.json")
+        assert r["status"] == "converged" and r["method"] == args[1], (args, r["message"])
+        # both converged to tol 1e-10 on the same discrete problem: v0 agrees to well within 1e-8
+        np.testing.assert_allclose(r["v"][0], model["v"][0], atol=1e-8, err_msg=str(args))
+        out = run("verify", str(tmp_path / "m.json"))
+        assert out.returncode == 0 and "VERDICT: PASS" in out.stdout, out.stdout + out.stderr
+    for args, fragment in ((["--manifold", "so3", "--connection", "levi-civita", "--method", "two-level"],
+                            "is not a method of --manifold so3 (methods: auto, shooting, collocation)"),
+                           (["--manifold", "so3", "--method", "variational"], "is not a method of --manifold so3"),
+                           (["--manifold", "so3", "--segments", "4"], "segments = 4 is an option of --method "
+                                                                      "multiple-shooting only")):
+        r = run("solve", *args, "--qT", qT)
+        assert r.returncode == 2 and fragment in r.stderr, r.stderr
