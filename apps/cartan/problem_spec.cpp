@@ -275,6 +275,15 @@ void check_samples(const ProblemSpec& spec, cartan::Method method) {
   if (spec.samples == 1) bad("samples", "1", "must be 0 (the final mesh) or at least 2 (uniform times on [0, T])");
 }
 
+/// --segments: at most N, within the memory of the dense multiple-shooting Jacobian.
+void check_segment_count(const ProblemSpec& spec) {
+  if (spec.segments > spec.N) {
+    bad("segments", std::to_string(spec.segments), "must be between 1 and N (0: the default, about 100 steps each)");
+  }
+  require_memory("segments", spec.segments, kBytesPerSegmentSquared * spec.segments * spec.segments,
+                 "the dense multiple-shooting Jacobian");
+}
+
 /// The general solver's methods (general/solve.hpp): auto, shooting, collocation; continuation
 /// none or T, with shooting and collocation only. With `lie_methods` (a group with a
 /// Cartan-Schouten connection, which general::solve runs on the Lie-group kernel) also
@@ -352,11 +361,7 @@ void validate_manifold_problem(ProblemSpec& spec) {
                        space.kind == api::SpaceKind::Group && connection == connections::ConnectionKind::CartanSchouten);
   for (const auto& field : problem_fields()) check_field(spec, field, kWhere);
   require_memory("N", spec.N, kBytesPerNode * spec.N, "the trajectory and its JSON output, ~1 KiB per step");
-  if (spec.segments > spec.N) {
-    bad("segments", std::to_string(spec.segments), "must be between 1 and N (0: the default, about 100 steps each)");
-  }
-  require_memory("segments", spec.segments, kBytesPerSegmentSquared * spec.segments * spec.segments,
-                 "the dense multiple-shooting Jacobian");
+  check_segment_count(spec);
   std::size_t m = static_cast<std::size_t>(space.dims.front());
   if (space.kind == api::SpaceKind::Euclidean && !spec.q0.empty()) m = spec.q0.size();
   connection_options(spec, m);
@@ -397,12 +402,8 @@ void validate(ProblemSpec& spec) {
   }
   for (const auto& field : problem_fields()) check_field(spec, field, kWhere);
   require_memory("N", spec.N, kBytesPerNode * spec.N, "the trajectory and its JSON output, ~1 KiB per step");
-  if (spec.segments > spec.N) {
-    bad("segments", std::to_string(spec.segments), "must be between 1 and N (0: the default, about 100 steps each)");
-  }
+  check_segment_count(spec);
   check_samples(spec, method);
-  require_memory("segments", spec.segments, kBytesPerSegmentSquared * spec.segments * spec.segments,
-                 "the dense multiple-shooting Jacobian");
   if (spec.segments != 0 && method != cartan::Method::MultipleShooting) {
     bad("segments", std::to_string(spec.segments), "is an option of --method multiple-shooting only");
   }

@@ -47,9 +47,10 @@ auto visit_manifold(const ManifoldProblem& problem, const Guess& guess, std::str
       if (space.name == manifolds::Sphere::name()) return visit(manifold_problem<manifolds::Sphere>(problem, guess, where));
       return visit(manifold_problem<manifolds::HyperbolicPlane>(problem, guess, where));
     case SpaceKind::Euclidean:
-      if (problem.q0.size() == 2) return visit(manifold_problem<manifolds::Euclidean<2>>(problem, guess, where));
-      if (problem.q0.size() == 3) return visit(manifold_problem<manifolds::Euclidean<3>>(problem, guess, where));
-      throw_invalid(where, "q0", excerpt(problem.q0), "must have 2 or 3 numbers (the coordinates of a point of euclidean: R^2 or R^3)");
+      if (coordinate_count(space.name, problem.q0, where) == 2) {
+        return visit(manifold_problem<manifolds::Euclidean<2>>(problem, guess, where));
+      }
+      return visit(manifold_problem<manifolds::Euclidean<3>>(problem, guess, where));
   }
   throw std::logic_error("visit_manifold: unknown kind of space");
 }

@@ -105,18 +105,9 @@ struct ManifoldWidths {
   std::size_t point, vector, m;
 };
 
-/// The length of q0 as R^n's or a chart's dimension: 2 or 3.
-std::size_t coordinates(const ManifoldProblem& p, std::string_view where) {
-  if (p.q0.size() != 2 && p.q0.size() != 3) {
-    throw_invalid(where, "q0", excerpt(p.q0),
-                  "must have 2 or 3 numbers (the coordinates of a point of " + p.manifold + ": R^2 or R^3, or a chart of them)");
-  }
-  return p.q0.size();
-}
-
 ManifoldWidths manifold_widths(const ManifoldProblem& p, std::string_view where) {
   if (p.manifold.starts_with(kPythonModelPrefix)) {  // a Chart defined in Python: m coordinates
-    const std::size_t m = coordinates(p, where);
+    const std::size_t m = coordinate_count(p.manifold, p.q0, where);
     return {m, m, m};
   }
   const SpaceInfo& space = find_space(p.manifold, where);
@@ -128,7 +119,7 @@ ManifoldWidths manifold_widths(const ManifoldProblem& p, std::string_view where)
     }
     case SpaceKind::Quadric: return {3, 3, 2};
     case SpaceKind::Euclidean: {
-      const std::size_t m = coordinates(p, where);
+      const std::size_t m = coordinate_count(p.manifold, p.q0, where);
       return {m, m, m};
     }
   }

@@ -61,6 +61,15 @@ const SpaceInfo& find_space(std::string_view name, std::string_view where) {
   throw_invalid(where, "manifold", quote_input(name), "is not one of: " + space_names());
 }
 
+std::size_t coordinate_count(std::string_view space, const std::vector<double>& q0, std::string_view where) {
+  const std::vector<int>& dims = find_space("euclidean", where).dims;
+  for (const int n : dims) {
+    if (q0.size() == static_cast<std::size_t>(n)) return q0.size();
+  }
+  throw_invalid(where, "q0", excerpt(q0),
+                "must have 2 or 3 numbers (the coordinates of a point of " + std::string(space) + ": R^2 or R^3, or a chart of them)");
+}
+
 void require_connection(const SpaceInfo& space, connections::ConnectionKind connection, std::string_view where) {
   std::vector<std::string_view> takes;
   for (const auto c : space.connections) {

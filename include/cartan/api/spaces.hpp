@@ -9,6 +9,7 @@
 // Adding a space: its type's solve compiled (general/compiled.hpp, src/general/solve_<space>.cpp),
 // its entry here, and its branch in src/api/problems.cpp (how its points and connection are read).
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,6 +51,11 @@ std::string space_names();
 /// The space named `name`. Throws std::invalid_argument "<where>: manifold = <name> is not one
 /// of: <space_names()>" for any other name (and says so of a space defined in Python).
 const SpaceInfo& find_space(std::string_view name, std::string_view where);
+
+/// The dimension of R^n or of a chart, which its points' coordinates give: the length of q0, one
+/// of euclidean's compiled dims (2 or 3). Throws std::invalid_argument "<where>: q0 = ... must
+/// have 2 or 3 numbers ..." naming `space` otherwise.
+std::size_t coordinate_count(std::string_view space, const std::vector<double>& q0, std::string_view where);
 
 /// Throws std::invalid_argument "<where>: connection = <word> is not a connection of <space> (it
 /// takes: ...)" unless `space` takes `connection`.
