@@ -31,7 +31,7 @@ build: deps
 # The sanitizer build: clang, AddressSanitizer + UndefinedBehaviorSanitizer on every target, and
 # the libFuzzer targets of tests/fuzz (CARTAN_FUZZ) in the same tree, so that the library is
 # compiled once for the tests and the fuzzers. -O1 -g0: reports name the functions of the stack;
-# line tables (-g1) cost 14 % more compile time (measured on tests/general/test_general.cpp, 49 s
+# line tables (-g1) cost 14 % more compile time (measured on tests/kernels/manifold/test_general.cpp, 49 s
 # against 42 s of CPU): for file and line, rebuild with SANITIZE_FLAGS="-O1 -g1 -DNDEBUG". Measured side by side (bench/README.md, "Build time"): clang compiles the heaviest
 # translation units about twice as fast as GCC with the same sanitizer flags, in half the memory.
 SANITIZE_FLAGS ?= -O1 -g0 -DNDEBUG

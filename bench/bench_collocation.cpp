@@ -7,7 +7,7 @@
 
 #include <array>
 
-#include "cartan/transported/heisenberg_collocation.hpp"
+#include "cartan/kernels/lie_group/heisenberg_collocation.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
 
 namespace {

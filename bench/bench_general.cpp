@@ -1,6 +1,6 @@
 // The cost of generality, side by side in one process on the paper's free body (lambda = 0.3,
-// T = 5, N = 1000): one primal sweep of the Lie-group scheme (transported/scheme.hpp) against the
-// general scheme (general/scheme.hpp) on the same Cartan–Schouten connection given as a
+// T = 5, N = 1000): one primal sweep of the Lie-group scheme (kernels/lie_group/scheme.hpp) against the
+// general scheme (kernels/manifold/scheme.hpp) on the same Cartan–Schouten connection given as a
 // GroupManifold, with the constant-components fast path and without it (frame components
 // recomputed from Gamma at every node), and the general tangent-linear sweep (12 directions); and
 // whole shooting solves, the Lie-group solver's against the general one's with its tangent-linear
@@ -10,13 +10,13 @@
 // bench/README.md, "General connections", has the ratios.
 #include <benchmark/benchmark.h>
 
-#include "cartan/general/compiled.hpp"
-#include "cartan/general/shooting.hpp"
-#include "cartan/general/solve.hpp"  // the typed solve, against the erased one
+#include "cartan/kernels/manifold/compiled.hpp"
+#include "cartan/kernels/manifold/shooting.hpp"
+#include "cartan/kernels/solve.hpp"  // the typed solve, against the erased one
+#include "cartan/kernels/lie_group/compiled.hpp"
+#include "cartan/kernels/lie_group/shooting.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
-#include "cartan/transported/compiled.hpp"
-#include "cartan/transported/shooting.hpp"
-#include "general/general_cases.hpp"  // paper cases, WithoutFastPath
+#include "kernels/manifold/general_cases.hpp"  // paper cases, WithoutFastPath
 
 namespace {
 
@@ -102,7 +102,7 @@ void BM_Solve_GeneralShootingLeviCivita(benchmark::State& state) {
 }
 
 /// general::solve (shooting) on p: the typed instantiation of this unit, or the library's compiled
-/// one when L is the erased Lagrangian (general/compiled.hpp).
+/// one when L is the erased Lagrangian (kernels/manifold/compiled.hpp).
 template <class L>
 void solve_with(benchmark::State& state, const general::GeneralProblem<SO3Manifold, L>& p) {
   cartan::SolveOptions options;
@@ -124,7 +124,7 @@ void BM_Solve_LeviCivitaTypedOrErased(benchmark::State& state) {
 }
 
 /// One door, one solve (issue 44): the paper's free body through its model (argument 0: the
-/// library's compiled solve of mechanics::RigidBody, transported/compiled.hpp) and as the particle
+/// library's compiled solve of mechanics::RigidBody, kernels/lie_group/compiled.hpp) and as the particle
 /// on GroupManifold<SO3>::cartan_schouten (1: the compiled general::solve of the erased
 /// KineticPotential, which runs the Lie-group kernel with the Hessian structure the erased
 /// Lagrangian reports). Goal: 1 within 1.1 of 0.

@@ -15,10 +15,10 @@
 #include <type_traits>
 #include <vector>
 
+#include "cartan/kernels/lie_group/solve.hpp"
 #include "cartan/mechanics/free_body.hpp"
-#include "cartan/transported/solve.hpp"
 #include "reference_step.hpp"
-#include "transported/paper_cases.hpp"
+#include "kernels/lie_group/paper_cases.hpp"
 
 namespace {
 

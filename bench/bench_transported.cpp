@@ -6,10 +6,10 @@
 #include <fstream>
 #include <string>
 
-#include "cartan/transported/continuation.hpp"
-#include "cartan/transported/multiple_shooting.hpp"
-#include "cartan/transported/two_level.hpp"
-#include "transported/paper_cases.hpp"
+#include "cartan/kernels/lie_group/continuation.hpp"
+#include "cartan/kernels/lie_group/multiple_shooting.hpp"
+#include "cartan/kernels/lie_group/two_level.hpp"
+#include "kernels/lie_group/paper_cases.hpp"
 
 namespace {
 

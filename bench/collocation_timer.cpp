@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
+#include "cartan/kernels/lie_group/heisenberg_collocation.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
-#include "cartan/transported/heisenberg_collocation.hpp"
 
 namespace {
 

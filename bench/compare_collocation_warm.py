@@ -9,7 +9,7 @@ The set: --cases problems from a seeded generator (numpy default_rng(--seed)): g
 Both sides start from the same guess (cartan's geodesic guess, h3_scipy.geodesic_guess) on the same
 11 uniform nodes and control the relative RMS residual of the cubic interpolant to tol = 1e-8.
 SciPy solves the printed six-equation system with its finite-difference Jacobian (as in the paper);
-cartan the same system in its closed form (transported/heisenberg_collocation.hpp) with the
+cartan the same system in its closed form (kernels/lie_group/heisenberg_collocation.hpp) with the
 analytic Jacobian.
 
 Timing: cartan runs in a long-lived process (bench/collocation_timer, built with

@@ -10,11 +10,11 @@
 #include <string>
 
 #include "cartan/connections/cartan_schouten.hpp"
-#include "cartan/mechanics/euler_poincare.hpp"
 #include "cartan/groups/matrix_group.hpp"
+#include "cartan/kernels/lie_group/continuation.hpp"
+#include "cartan/mechanics/euler_poincare.hpp"
 #include "cartan/mechanics/natural_system.hpp"
 #include "cartan/transport/parallel_transport.hpp"
-#include "cartan/transported/continuation.hpp"
 
 // Elements are the coordinates (a, b) of the matrix [[a, b], [0, 1]]; the algebra basis is
 // E1 = [[1, 0], [0, 0]] (scaling), E2 = [[0, 1], [0, 0]] (translation), with [E1, E2] = E2.

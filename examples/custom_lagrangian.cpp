@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <string>
 
-#include "cartan/mechanics/lagrangian_hessian.hpp"
 #include "cartan/groups/so3.hpp"
-#include "cartan/transported/compiled.hpp"  // the library's solve for the erased Lagrangian
+#include "cartan/mechanics/lagrangian_hessian.hpp"
+#include "cartan/kernels/lie_group/compiled.hpp"  // the library's solve for the erased Lagrangian
 
 /// The four required members; no `hessian`, so the solvers differentiate momentum and
 /// group_gradient by central differences (lagrangian_hessian.hpp).

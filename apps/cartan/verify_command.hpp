@@ -1,11 +1,11 @@
 #pragma once
-// `cartan verify`: the library's checks and verdict (include/cartan/verify/report.hpp) run on a
+// `cartan verify`: the library's checks and verdict (include/cartan/kernels/lie_group/verify.hpp) run on a
 // result file (the library's reader, cartan/api/result_file.hpp). docs/verify.md explains each check and its threshold.
 
 #include <nlohmann/json.hpp>
 
-#include "cartan/verify/verdict.hpp"
 #include "cartan/api/result_file.hpp"
+#include "cartan/verify/verdict.hpp"
 
 namespace cartan::cli {
 

@@ -23,7 +23,7 @@ def straight_guess(gT, T, x):
 
 
 def geodesic_guess(gT, T, x):
-    """cartan's guess (transported/heisenberg_collocation.hpp, heisenberg_geodesic_guess):
+    """cartan's guess (kernels/lie_group/heisenberg_collocation.hpp, heisenberg_geodesic_guess):
     g(t) = exp(t w / T), v = w / T with w = log(gT) = (a, b, c - a b / 2) and
     exp(w) = (w1, w2, w3 + w1 w2 / 2) (groups/heisenberg.hpp)."""
     a, b, c = np.asarray(gT, dtype=float)

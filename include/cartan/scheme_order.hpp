@@ -1,6 +1,6 @@
 #pragma once
-// The orders of the discrete schemes and of results, the vocabulary of both stacks (transported/,
-// general/), the CLI and Python, defined and checked once: a scheme is of order 1 (the paper's
+// The orders of the discrete schemes and of results, the vocabulary of both stacks (kernels/lie_group/,
+// kernels/manifold/), the CLI and Python, defined and checked once: a scheme is of order 1 (the paper's
 // disc-* equations) or 2 (our symmetric composition of them); a result's order is its scheme's, or
 // 4 for collocation (the continuous system by fourth-order Lobatto IIIA collocation).
 

@@ -36,7 +36,7 @@ Manifolds with a connection (docs/general-connections.md)
     as a Python function of the coordinates), with ``christoffel, torsion, curvature, frame_bracket, step,
     difference, transport_along_step, tangent_basis, metric, torsion_components,
     curvature_components, has_parallel_torsion_and_curvature, validate``.
-The transported-velocity problem on any of them (general/solve.hpp)
+The transported-velocity problem on any of them (kernels/solve.hpp)
     :func:`solve` with a manifold as its first argument and l = 1/2 v.A v - V(q), or with a
     Lagrangian object of the manifold and ``space=manifold``; returns the same :class:`Result`.
 General two-point boundary-value problems
@@ -169,8 +169,8 @@ def solve(lagrangian=None, *, space=None, lam=None, T, N, gT=None, g0=None, meth
       connection "cartan-schouten" reaches the Lie-group kernel by itself.
 
     The keywords of the other kind raise ValueError naming them. With the discrete scheme of order 1
-    (the paper's) or 2. The library's solves (include/cartan/transported/compiled.hpp,
-    include/cartan/general/compiled.hpp) do the work; methods, options and behaviour are those of
+    (the paper's) or 2. The library's solves (include/cartan/kernels/lie_group/compiled.hpp,
+    include/cartan/kernels/manifold/compiled.hpp) do the work; methods, options and behaviour are those of
     `cartan solve`. What follows is the group model's problem; the manifold's is after it.
 
     `lagrangian` is a built-in left-reduced model (RigidBody, SO3Oscillator, H3Oscillator) or any
@@ -554,7 +554,7 @@ def check_lagrangian(model, group=None, *, samples=8, seed=20261122, scale=1.0, 
       and group_gradient (the solvers otherwise difference them; :func:`lagrangian_hessian`);
 
     on a manifold (`group` any of :data:`MANIFOLDS`; general::check_lagrangian,
-    include/cartan/general/check_lagrangian.hpp) the same with point_gradient in place of
+    include/cartan/kernels/manifold/check_lagrangian.hpp) the same with point_gradient in place of
     group_gradient: its components along tangent_basis(q) against central differences of value along
     step(q, e E_i). The manifold's Lagrangian is `model` (an object with value, momentum, velocity,
     point_gradient as :func:`solve` takes it on a manifold) or, with `model` None, the one `inertia`,

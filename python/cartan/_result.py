@@ -111,7 +111,7 @@ class Result:
     group_defect: collocation only (else None).
 
     Along the solution (computed by the library after the solve, from the samples:
-    include/cartan/transported/along.hpp, include/cartan/general/along.hpp): u (N+1, d): q' = frame @ v
+    include/cartan/kernels/lie_group/along.hpp, include/cartan/kernels/manifold/along.hpp): u (N+1, d): q' = frame @ v
     (on a group the body velocity u_k = P_k v_k, disc-body-v); energy (N+1,): E_k = mu(v_k).v_k - l(t_k,
     q_k, v_k), conserved for every connection when l does not depend on t; cumulative_action (N+1,):
     the discrete transported action over the first k steps (0 first), whose last entry is `action`
@@ -282,14 +282,14 @@ class Result:
         ValueError), a leading axis for an array `t`; at a node the sample itself. The interpolants
         are the library's.
 
-        A group model's problem (include/cartan/transported/dense.hpp), a State (g, v, mu, xi): on
+        A group model's problem (include/cartan/kernels/lie_group/dense.hpp), a State (g, v, mu, xi): on
         step k of a discrete scheme g(t) = g_k exp(s log(g_k^-1 g_k+1)), s = (t - t_k)/h, the translated
         one-parameter subgroup through both nodes (the curve the Lie-Euler and RKMK steps move along,
         O(h^2), on the group), v, mu, xi linear in s; collocation: g by the cubic Hermite interpolant
         in the chart g_k exp(X) with X' from the body velocities, xi by cubic Hermite with
         xi' = -ad*_v mu, v and mu by not-a-knot cubic splines.
 
-        A manifold's (include/cartan/general/dense.hpp), a GeneralState (q, frame, v, mu, Xi): on a
+        A manifold's (include/cartan/kernels/manifold/dense.hpp), a GeneralState (q, frame, v, mu, Xi): on a
         step q(t) = step(q_k, s difference(q_k, q_k+1)) with the frame transported along that piece,
         v, mu, Xi linear in s for the discrete schemes; collocation: v, mu by not-a-knot cubic splines
         and Xi by cubic Hermite with Xi' = -v mu^T. The measured orders: python/tests/test_results.py."""

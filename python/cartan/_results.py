@@ -250,7 +250,7 @@ class State(NamedTuple):
 
 
 def dense(r, t):
-    """`r.sol(t)`: the library's dense output (include/cartan/transported/dense.hpp) at the time or
+    """`r.sol(t)`: the library's dense output (include/cartan/kernels/lie_group/dense.hpp) at the time or
     times `t` (a leading axis for an array)."""
     times = np.asarray(t, dtype=float)
     group = _group_class(r.group, "Result.sol")
@@ -269,7 +269,7 @@ class GeneralState(NamedTuple):
 
 
 def general_dense(r, t):
-    """`r.sol(t)` of a manifold's Result: the library's dense output (include/cartan/general/dense.hpp)
+    """`r.sol(t)` of a manifold's Result: the library's dense output (include/cartan/kernels/manifold/dense.hpp)
     on the manifold `r.space`."""
     if r.space is None:
         raise ValueError("Result.sol: space = None: the manifold did not travel with the result (set "

@@ -1,10 +1,10 @@
-// The general transported-velocity solve (include/cartan/general/solve.hpp) and its verifier on
+// The general transported-velocity solve (include/cartan/kernels/solve.hpp) and its verifier on
 // the manifold classes of bind_manifolds.cpp, in their own translation unit.
 //
 // `_solve_general(manifold, ...)`: general::solve with the vocabulary of cartan.solve. Every
 // Lagrangian (a KineticPotential<M>, l = 1/2 v^T A v - V(q) with V built in (gravity) or a Python
 // callable, or a Lagrangian object written in Python) goes behind general::ErasedLagrangian<M>,
-// whose solve and verify the library compiles once per manifold (cartan/general/compiled.hpp);
+// whose solve and verify the library compiles once per manifold (cartan/kernels/manifold/compiled.hpp);
 // general_binding.hpp converts the arguments and the result. Solves without Python callbacks
 // release the GIL; with them, the GIL is held and the first callback error is re-raised after the
 // solver returns (python_models.hpp).

@@ -1,16 +1,16 @@
 #pragma once
-// `<Group>._solve(...)`: the library's solve (include/cartan/transported/solve.hpp) for the
+// `<Group>._solve(...)`: the library's solve (include/cartan/kernels/lie_group/solve.hpp) for the
 // listed built-in models and any Lagrangian written in Python (behind the erased Lagrangian, whose
-// solve and verify the library compiles: transported/compiled.hpp), with the CLI's method names and
+// solve and verify the library compiles: kernels/lie_group/compiled.hpp), with the CLI's method names and
 // options (SolveOptions). Nothing is decided here: the options are translated, the library runs,
 // and its result becomes a dict of SolveResult's fields (python/cartan/__init__.py).
 //
 // Ctrl-C: the monitor's stop request takes the GIL and runs PyErr_CheckSignals, so a long solve
 // of a built-in model (which runs without the GIL) raises KeyboardInterrupt within one iteration.
 // A `progress` callable receives (stage, iteration, residual) once per iteration.
-// `<Group>._verify(...)`: the library's checks and verdict (include/cartan/verify/report.hpp) on a
+// `<Group>._verify(...)`: the library's checks and verdict (include/cartan/kernels/lie_group/verify.hpp) on a
 // result of any model, as a dict of VerifyReport's fields. `<Group>._along(...)`: the transport
-// P_k, body velocity u_k, energy and cumulative action along a result (transported/along.hpp), for
+// P_k, body velocity u_k, energy and cumulative action along a result (kernels/lie_group/along.hpp), for
 // a loaded file; `_solve` returns them with the solution.
 
 #include <optional>
@@ -21,8 +21,8 @@
 
 #include "bind_models.hpp"
 #include "report_dict.hpp"
-#include "cartan/transported/compiled.hpp"
-#include "cartan/transported/dense.hpp"
+#include "cartan/kernels/lie_group/compiled.hpp"
+#include "cartan/kernels/lie_group/dense.hpp"
 
 namespace cartan::python {
 
@@ -225,7 +225,7 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
                         !model.is_none());
     return d;
   }, py::arg("lagrangian"), py::arg("result"), py::arg("lam"));
-  // `<Group>._dense(result, lam, method, times)`: the library's dense output (transported/dense.hpp)
+  // `<Group>._dense(result, lam, method, times)`: the library's dense output (kernels/lie_group/dense.hpp)
   // at the 1-d array `times`, as a dict of g, v, mu, xi with one row per time (SolveResult.sol).
   group.def_static("_dense", [a](const py::object& result, double lambda, const std::string& method, const py::object& times) {
     const transported::TransportedTrajectory<G> x = trajectory_of<G>(result, a, "sol", "result", true);

@@ -3,7 +3,7 @@
 // verify_on with their Lagrangians and arguments, and the manifold classes' holders, argument
 // helpers and geometry methods (bind_manifolds.cpp, bind_group_manifold.cpp). Every Lagrangian
 // goes behind the erased type, whose solve and verify the library compiles once per manifold
-// (cartan/general/compiled.hpp): this unit only converts the arguments and the result.
+// (cartan/kernels/manifold/compiled.hpp): this unit only converts the arguments and the result.
 
 #include <array>
 #include <limits>
@@ -17,8 +17,8 @@
 
 #include "bind_group.hpp"
 #include "bindings.hpp"
-#include "cartan/general/compiled.hpp"
-#include "cartan/general/dense.hpp"
+#include "cartan/kernels/manifold/compiled.hpp"
+#include "cartan/kernels/manifold/dense.hpp"
 #include "python_models.hpp"
 #include "report_dict.hpp"
 
@@ -224,7 +224,7 @@ void def_manifold_methods(py::class_<Holder>& cls, const std::string& name) {
       return to_numpy(m.transport_along_step(point_arg(m, q, w, "q"), finite_arg<VectorOf<M>>(x, w, "x")));
     });
   }, py::arg("q"), py::arg("x"), "The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1].");
-  // `_dense(result, method, times)`: the library's dense output (general/dense.hpp) of a result on
+  // `_dense(result, method, times)`: the library's dense output (kernels/manifold/dense.hpp) of a result on
   // this manifold at the 1-d array `times`, as a dict of q, frame, v, mu, Xi with one row per time.
   cls.def("_dense", [](const Holder& h, const py::object& result, const std::string& method, const py::object& times) {
     return visit_holder(h, [&](const auto& m) {
@@ -515,7 +515,7 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   const bool python = posed.python;
   const std::shared_ptr<CallbackState>& state = posed.state;
 
-  // The solve, then what the result carries along it (general/along.hpp) where the problem is at
+  // The solve, then what the result carries along it (kernels/manifold/along.hpp) where the problem is at
   // hand; a result stopped on request has its samples only (as a group model's SolveResult).
   struct Solved {
     general::GeneralSolution<M> solution;
@@ -563,7 +563,7 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   return d;
 }
 
-/// What a result file does not hold and the library computes along the samples (general/along.hpp:
+/// What a result file does not hold and the library computes along the samples (kernels/manifold/along.hpp:
 /// frame, u, energy, cumulative_action, action) of the fields of a loaded manifold result (t, q, v,
 /// T, q0, qT, frame0 as rows) for the request's Lagrangian; with `named_only` (a Lagrangian defined
 /// in Python, which the file only names) the frame and u, energy and the action None and NaN.
@@ -594,7 +594,7 @@ py::dict along_on(const M& manifold, const GeneralRequest& r, const py::dict& fi
   return d;
 }
 
-/// The library's general verifier (general/verify.hpp) on `result` (any object with T, q0, qT,
+/// The library's general verifier (kernels/manifold/verify.hpp) on `result` (any object with T, q0, qT,
 /// tol, order, status, t, q, frame, v, mu, Xi, e.g. a GeneralSolveResult) for the Lagrangian of
 /// the request (as solve_general takes it).
 template <class M>

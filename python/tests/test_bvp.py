@@ -16,7 +16,7 @@ Tolerances (theory; measured values are printed with pytest -s):
   (measured: 0, bit for bit).
 * Collocation vs shooting: collocation at tol 1e-10 is the continuous solution to ~1e-11; the
   order-2 scheme differs from it by C h^2, so the difference shrinks by 4 when N doubles: log2
-  ratio 2 within 0.25, as tests/transported/test_collocation_system.cpp.
+  ratio 2 within 0.25, as tests/kernels/lie_group/test_collocation_system.cpp.
 """
 import json
 import os

@@ -1,4 +1,4 @@
-"""Manifolds with a connection and cartan.solve_general (include/cartan/manifolds, general/) from Python:
+"""Manifolds with a connection and cartan.solve_general (include/cartan/manifolds, kernels/manifold/) from Python:
 geometry against closed forms, solutions against independent results, and errors.
 
 Tolerances (theory):
@@ -210,7 +210,7 @@ def aux_to_xi(manifold, Xi):
 @pytest.mark.parametrize("order", [1, 2])
 def test_so3_cartan_schouten_equals_the_lambda_solver(order):
     """solve_general on GroupManifold("so3", "cartan-schouten", lam) runs the Lie-group kernel
-    (include/cartan/general/lie_kernel.hpp): its frame is the lambda solver's P = Ad(h) and C(Xi) its
+    (include/cartan/kernels/lie_group_as_manifold.hpp): its frame is the lambda solver's P = Ad(h) and C(Xi) its
     xi, and verify_general passes the result."""
     kwargs = dict(T=5.0, N=200, order=order, tol=1e-12, method="shooting")
     manifold = GroupManifold("so3", "cartan-schouten", lam=0.3)
@@ -583,7 +583,7 @@ def test_endpoints_on_the_cut_locus_never_give_a_wrong_convergence(manifold, q0,
 # ---- verify_general -----------------------------------------------------------------------------
 
 def test_verify_general_passes_honest_results_and_fails_another_problem():
-    """The library's general verifier (include/cartan/general/verify.hpp) from Python: a sphere
+    """The library's general verifier (include/cartan/kernels/manifold/verify.hpp) from Python: a sphere
     result passes at both orders; the same data under another gravity fail; a Python-callable
     potential is checked like the built-in one; a failed solve fails."""
     sphere = cartan.Sphere()

@@ -1,4 +1,4 @@
-"""Results that travel (python/cartan/_results.py, include/cartan/transported/along.hpp): the
+"""Results that travel (python/cartan/_results.py, include/cartan/kernels/lie_group/along.hpp): the
 self-describing SolveResult, the CLI's JSON both ways (Python -> file -> `cartan verify`, `cartan
 solve` -> file -> cartan.load -> cartan.verify), dense output r.sol(t) and its measured order, the
 body velocity u_k and transport P_k against independent computations, energy and cumulative action,
@@ -394,7 +394,7 @@ def test_cumulative_action_is_the_sum_of_the_midpoint_terms():
     model = CASES["so3/oscillator"][0]
     r = solve("so3/oscillator", lam=0.3, N=40)
     assert r.cumulative_action[0] == 0 and r.cumulative_action[-1] == r.action  # the same sum, bit for bit
-    # Independently, in NumPy, transported/action.hpp's midpoint rule: S_h = sum h l(t_k + h/2,
+    # Independently, in NumPy, kernels/lie_group/action.hpp's midpoint rule: S_h = sum h l(t_k + h/2,
     # g_k exp(h u/2), Ad(exp(-lam h u/2) y_k)^-1 u), u = log(g_k^-1 g_k+1)/h, y_k+1 = exp(-lam h u) y_k.
     y, total, h = np.eye(3), 0.0, r.T / r.N
     for k in range(r.N):

@@ -1,4 +1,4 @@
-"""cartan.verify: the library's checks and verdict (include/cartan/verify/report.hpp) from Python,
+"""cartan.verify: the library's checks and verdict (include/cartan/kernels/lie_group/verify.hpp) from Python,
 on results of built-in and Python-defined Lagrangians; the same report as `cartan verify`.
 
 Tolerances (theory):

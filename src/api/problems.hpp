@@ -12,9 +12,9 @@
 #include "cartan/api/solve.hpp"
 #include "cartan/api/spaces.hpp"
 #include "cartan/errors.hpp"
-#include "cartan/general/compiled.hpp"
+#include "cartan/kernels/lie_group/compiled.hpp"
+#include "cartan/kernels/manifold/compiled.hpp"
 #include "cartan/models/catalogue.hpp"
-#include "cartan/transported/compiled.hpp"
 
 namespace cartan::api::detail {
 
@@ -67,7 +67,7 @@ manifolds::GroupManifold<G> group_manifold(const GroupProblem& problem, const Ch
 }
 
 /// The general problem of a checked group problem for the catalogue's Entry: the model behind the
-/// erased Lagrangian on GroupManifold<G> (general/compiled.hpp), with the given boundary elements.
+/// erased Lagrangian on GroupManifold<G> (kernels/manifold/compiled.hpp), with the given boundary elements.
 template <class Entry>
 general::ErasedProblem<manifolds::GroupManifold<typename Entry::Table::Group>> connection_problem(
     const GroupProblem& problem, const CheckedGroupProblem& checked, const groups::ElementOf<typename Entry::Table::Group>& g0,

@@ -1,6 +1,6 @@
 // api::solve: the catalogue's model on its group through the kernel the connection allows, or the
-// particle on a space of the catalogue (spaces.hpp) (solve.hpp); every solve is the library's compiled one (transported/ and
-// general/compiled.hpp), so this unit instantiates only the conversions to numbers.
+// particle on a space of the catalogue (spaces.hpp) (solve.hpp); every solve is the library's compiled one (kernels/lie_group/ and
+// kernels/manifold/compiled.hpp), so this unit instantiates only the conversions to numbers.
 #include "problems.hpp"
 
 namespace cartan::api {

@@ -73,7 +73,7 @@ verify::Report verify(const GroupProblem& problem, const Samples& samples, int o
     const groups::ElementOf<G> g0 = element<G>(checked.g0), gT = element<G>(problem.gT);
     if (lie_kernel(problem)) {
       // Behind the erased Lagrangian, whose verify the library compiles: the model's own members
-      // evaluated, so the figures of the typed verify (tests/transported/test_erased.cpp).
+      // evaluated, so the figures of the typed verify (tests/kernels/lie_group/test_erased.cpp).
       const transported::ErasedProblem<G> erased{mechanics::ErasedLagrangian<G>(models::make_lagrangian<Entry>(checked.inertia, where)),
                                                  problem.lambda, problem.T, problem.N, g0, gT};
       return verify::verify_trajectory(erased, lie_trajectory<G>(samples), order, tol, status);

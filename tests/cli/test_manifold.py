@@ -176,7 +176,7 @@ def test_manifold_options_are_refused_on_groups_and_unknown_manifolds():
 
 def test_verify_passes_sphere_results_and_fails_them_for_another_problem(tmp_path):
     """cartan verify rebuilds the problem from the echoed fields and runs the general checks
-    (include/cartan/general/verify.hpp); the same data under another gravity fail them."""
+    (include/cartan/kernels/manifold/verify.hpp); the same data under another gravity fail them."""
     for order in ("1", "2"):
         sphere(tmp_path, "--gravity", "3", "--mass", "1,2.5", "--T", "1.2", "--N", "300", "--order", order)
         r = run("verify", str(tmp_path / "s.json"))

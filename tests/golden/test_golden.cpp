@@ -1,6 +1,6 @@
 // Golden results (docs/design/one-core.md, S0): every solver path's result recorded once, so that a
 // refactor can show it changes none. Each case solves through a compiled entry point only
-// (api::solve; the erased solves of transported/compiled.hpp and general/compiled.hpp where the api
+// (api::solve; the erased solves of kernels/lie_group/compiled.hpp and kernels/manifold/compiled.hpp where the api
 // has no words for the problem), so that this unit instantiates no solver, and compares its record
 // with tests/golden/<case>.json.
 // CARTAN_WRITE_GOLDEN=1 writes the files instead (each test then reports itself skipped).
@@ -36,11 +36,11 @@
 #include <vector>
 
 #include "cartan/api/solve.hpp"
-#include "cartan/general/compiled.hpp"
+#include "cartan/kernels/lie_group/compiled.hpp"
+#include "cartan/kernels/manifold/compiled.hpp"
 #include "cartan/manifolds/chart.hpp"
 #include "cartan/models/catalogue.hpp"
-#include "cartan/transported/compiled.hpp"
-#include "transported/paper_cases.hpp"
+#include "kernels/lie_group/paper_cases.hpp"
 
 namespace cartan::testing {
 namespace {
@@ -248,7 +248,7 @@ json api_case(const Problem& problem, SolveOptions options) {
   return out;
 }
 
-/// The compiled erased solve of the Lie-group kernel (transported/compiled.hpp) and its verify.
+/// The compiled erased solve of the Lie-group kernel (kernels/lie_group/compiled.hpp) and its verify.
 template <groups::LieGroup G>
 json erased_case(const transported::ErasedProblem<G>& problem, SolveOptions options) {
   Progress progress;
@@ -268,7 +268,7 @@ json erased_case(const transported::ErasedProblem<G>& problem, SolveOptions opti
   return out;
 }
 
-/// The compiled general solve (general/compiled.hpp) and its verify.
+/// The compiled general solve (kernels/manifold/compiled.hpp) and its verify.
 template <class M>
 json general_case(const general::ErasedProblem<M>& problem, SolveOptions options) {
   Progress progress;
@@ -305,7 +305,7 @@ api::GroupProblem group(std::string name, std::string model, double lambda, doub
   return p;
 }
 
-/// The paper's problems (tests/transported/paper_cases.hpp) by names and numbers.
+/// The paper's problems (tests/kernels/lie_group/paper_cases.hpp) by names and numbers.
 api::GroupProblem free_body(double lambda, int N = 1000, double T = 50) {
   return group("so3", "free-rigid-body", lambda, T, N, models::element_numbers(paper_free_body(lambda, N, T).gT));
 }
@@ -339,7 +339,7 @@ api::ManifoldProblem quadric(std::string manifold, std::vector<double> q0, std::
 }
 
 /// The paper's oscillator (lambda = 1/2 unless given) as a general problem on SO(3) with the
-/// Cartan–Schouten connection: general::solve runs it on the Lie-group kernel (general/lie_kernel.hpp).
+/// Cartan–Schouten connection: general::solve runs it on the Lie-group kernel (kernels/lie_group_as_manifold.hpp).
 general::ErasedProblem<manifolds::GroupManifold<groups::SO3>> cartan_schouten_oscillator(int N, double T, double lambda = 0.5) {
   using M = manifolds::GroupManifold<groups::SO3>;
   const auto p = paper_oscillator(lambda, N, T);
@@ -372,7 +372,7 @@ std::vector<Case> cases() {
   const auto add = [&](std::string name, std::function<json()> record) { out.push_back({std::move(name), std::move(record)}); };
   const auto lambda_name = [](double lambda) { return lambda == 0 ? "0" : lambda == 1 ? "1" : "half"; };
 
-  // The paper's six (tests/transported/paper_cases.hpp) by the default strategy; the free body
+  // The paper's six (tests/kernels/lie_group/paper_cases.hpp) by the default strategy; the free body
   // also by the paper's two-level scheme.
   for (double lambda : {0.0, 0.5, 1.0}) {
     add(std::string("paper_free_body_auto_lambda_") + lambda_name(lambda), [=] { return api_case(free_body(lambda), {}); });
@@ -423,7 +423,7 @@ std::vector<Case> cases() {
   add("failure_h3_oscillator_auto_beyond_the_fold", [=] {
     return api_case(group("heisenberg", "oscillator", 0.7, 3, 300, {1, 0.5, 0.8}), tolerance(1e-8));
   });
-  // The same problem through the erased Lagrangian's compiled solve (transported/compiled.hpp).
+  // The same problem through the erased Lagrangian's compiled solve (kernels/lie_group/compiled.hpp).
   add("oscillator_T3_erased_auto", [] { return erased_case(transported::erased(paper_oscillator(0.5, 300, 3)), {}); });
 
   // The other groups: H3's closed-form collocation, the SE(2) and SE(3) free bodies.

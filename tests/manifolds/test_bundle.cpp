@@ -7,7 +7,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "general/hamilton_cases.hpp"
+#include "kernels/manifold/hamilton_cases.hpp"
 #include "mechanics/mechanics_support.hpp"
 
 namespace cartan::testing {

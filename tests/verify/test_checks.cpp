@@ -1,14 +1,14 @@
-// The checks of include/cartan/verify/checks.hpp and the verdict of verify/report.hpp on synthetic
+// The checks of include/cartan/kernels/lie_group/verify_checks.hpp and the verdict of kernels/lie_group/verify.hpp on synthetic
 // trajectories: an exact solution gives rounding-level figures, and each kind of non-solution
 // gives an O(1) figure in the check that should see it.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "cartan/kernels/lie_group/verify.hpp"
+#include "cartan/kernels/lie_group/verify_checks.hpp"
 #include "cartan/mechanics/rigid_body.hpp"
 #include "cartan/verify/assemble.hpp"
-#include "cartan/verify/checks.hpp"
-#include "cartan/verify/report.hpp"
 #include "test_support.hpp"
 
 namespace cartan::verify {

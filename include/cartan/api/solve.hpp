@@ -4,9 +4,9 @@
 // left-invariant connection, or a particle on the sphere or the hyperbolic plane. The library
 // decides what runs:
 //   - a Cartan–Schouten connection: the Lie-group kernel, the model's own compiled solve
-//     (transported/compiled.hpp: xi in g*, the paper's eq:reduced-system);
+//     (kernels/lie_group/compiled.hpp: xi in g*, the paper's eq:reduced-system);
 //   - Levi-Civita of a left-invariant metric, or any bilinear map alpha: the general solve on
-//     GroupManifold<G> (general/compiled.hpp: the frame and Xi of eq:int-diff-EL);
+//     GroupManifold<G> (kernels/manifold/compiled.hpp: the frame and Xi of eq:int-diff-EL);
 //   - the sphere, the hyperbolic plane: the general solve on the quadric with its Levi-Civita
 //     connection;
 // and returns one Result in numbers and words, whichever ran. The CLI translates its flags and
@@ -20,10 +20,10 @@
 #include <vector>
 
 #include "cartan/connections/connection_kind.hpp"
-#include "cartan/status.hpp"
 #include "cartan/principle/options.hpp"
 #include "cartan/principle/result.hpp"
 #include "cartan/principle/vocabulary.hpp"
+#include "cartan/status.hpp"
 #include "cartan/verify/verdict.hpp"
 
 namespace cartan::api {

@@ -4,9 +4,9 @@
 // whether the particle's uniform gravity applies. The api's ManifoldProblem (solve.hpp), the result
 // file (result_file.hpp), the CLI's --manifold and its help, and Python's cartan.SPACES read it;
 // the models of a group (the paper's systems) are models/catalogue.hpp's. Compiled once in
-// cartan::api (src/api/spaces.cpp).
+// the library cartan_io (src/api/spaces.cpp), which cartan_api links.
 //
-// Adding a space: its type's solve compiled (general/compiled.hpp, src/general/solve_<space>.cpp),
+// Adding a space: its type's solve compiled (kernels/manifold/compiled.hpp, src/kernels/solve_<space>.cpp),
 // its entry here, and its branch in src/api/problems.cpp (how its points and connection are read).
 
 #include <cstddef>

@@ -87,7 +87,7 @@ struct SO3 {
   /// Principal logarithm, |log R| in [0, pi]. Stable near 0 (series) and near pi (axis from
   /// the symmetric part of R). At exactly pi either of the two logarithms may be returned.
   /// R is not checked: the formula is a smooth extension to matrices near SO(3), on which
-  /// ambient-coordinate solvers rely (transported/collocation_system.hpp evaluates log(gT^{-1} g(T))
+  /// ambient-coordinate solvers rely (kernels/lie_group/collocation_system.hpp evaluates log(gT^{-1} g(T))
   /// during Newton iterations, off the group). Validate user input with validate/from_matrix.
   static Tangent log(const Element& r);
 

@@ -1,6 +1,6 @@
 #pragma once
 // First derivatives of an instance's pieces (manifold.hpp), for the tangent-linear sweep of the
-// general scheme (general/tangent.hpp). Points are perturbed along pieces, q_e = step(q, e dq)
+// general scheme (kernels/manifold/tangent.hpp). Points are perturbed along pieces, q_e = step(q, e dq)
 // with dq a represented tangent vector at q, so a point's variation is a `Vector` tangent at it.
 // An instance may give each derivative in closed form; otherwise it is a central difference of
 // the instance's own functions (step eps^(1/3): error ~ eps^(2/3) ~ 4e-11 relative), which is

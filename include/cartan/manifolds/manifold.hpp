@@ -68,7 +68,7 @@ concept ParallelTorsionCurvature = ManifoldWithConnection<M> && requires(const M
 /// Instances whose points and vectors are the coordinates of one chart (Euclidean<m>, Chart<m>):
 /// Point = Vector = R^m, constant fields are the coordinate fields (frame_bracket = 0) and
 /// `christoffel` gives the coordinate Christoffel symbols Gamma^k_ij x^i y^j. Coordinate-wise
-/// integrators (general/hamilton.hpp) and the bundles of manifolds/bundle.hpp need no more.
+/// integrators (kernels/manifold/hamilton.hpp) and the bundles of manifolds/bundle.hpp need no more.
 template <class M>
 concept ChartWithConnection =
     ManifoldWithConnection<M> && M::kAmbientDim == M::kDim && std::same_as<typename M::Point, typename M::Vector>;

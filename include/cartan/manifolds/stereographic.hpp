@@ -5,7 +5,7 @@
 // <., .> of the quadric pulls back to the conformal metric g = e^(2 phi) I with
 // e^phi = 2 / (1 + K |x|^2), whose Levi-Civita connection is
 //   Gamma^k_ij = delta^k_i phi_j + delta^k_j phi_i - delta_ij phi_k,  phi_j = -2 K x_j / (1 + K |x|^2).
-// For coordinate-wise methods (general/hamilton.hpp) on the quadrics; tests/general checks that
+// For coordinate-wise methods (kernels/manifold/hamilton.hpp) on the quadrics; tests/general checks that
 // these symbols are the quadric's connection (quadric.hpp) pulled back.
 
 #include <cmath>

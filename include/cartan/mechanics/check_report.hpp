@@ -12,7 +12,7 @@
 
 namespace cartan::mechanics {
 
-/// The seeded samples of a check (check_lagrangian.hpp on a group, general/check_lagrangian.hpp on
+/// The seeded samples of a check (check_lagrangian.hpp on a group, kernels/manifold/check_lagrangian.hpp on
 /// a manifold).
 struct CheckLagrangianOptions {
   int samples = 8;               ///< how many seeded samples

@@ -4,7 +4,7 @@
 // forwards value, momentum, group_gradient, velocity and the second derivatives (the wrapped
 // type's own `hessian` where it has one, central differences otherwise: lagrangian_hessian.hpp).
 // The transported solve and verify are compiled once for it on every shipped group
-// (transported/compiled.hpp, src/transported/), so that the Python module's Lagrangians and a
+// (kernels/lie_group/compiled.hpp, src/kernels/lie_group/), so that the Python module's Lagrangians and a
 // user's own reuse them; the cost is one indirect call per evaluation. A wrapped model's
 // HessianStructure is carried as data (hessian_structure(), which the schemes read at run time);
 // its other static traits (natural or purely kinetic) are not seen through the erased type: a

@@ -34,7 +34,7 @@ bool all_finite(const LagrangianHessian<G>& h) {
 ///   kGroupGradientIndependentOfVelocity  d zeta/dv = 0
 ///   kZeroGroupGradient                   zeta = 0 everywhere (so d zeta = 0)
 /// A declaration is a promise: the tangent-linear tests compare the sweeps that use it with
-/// differences of the scheme (tests/transported/test_scheme.cpp).
+/// differences of the scheme (tests/kernels/lie_group/test_scheme.cpp).
 template <class L>
 struct HessianStructure {
   static constexpr bool constant_momentum_hessian = requires { requires L::kConstantMomentumHessian; };
@@ -45,7 +45,7 @@ struct HessianStructure {
 
 /// A Hessian structure known at run time: what a Lagrangian behind an erased type declares
 /// (HessianStructure of the wrapped type, or what it reports), so that the schemes skip the same
-/// work for it (transported/scheme.hpp).
+/// work for it (kernels/lie_group/scheme.hpp).
 struct RuntimeHessianStructure {
   bool constant_momentum_hessian = false;
   bool gradient_independent_of_velocity = false;

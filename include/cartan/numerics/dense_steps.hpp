@@ -1,5 +1,5 @@
 #pragma once
-// What the dense outputs of both kernels' results share (transported/dense.hpp, general/dense.hpp):
+// What the dense outputs of both kernels' results share (kernels/lie_group/dense.hpp, kernels/manifold/dense.hpp):
 // checking the requested times against the nodes, finding a time's step, the cubic Hermite weights
 // and a list of vectors as the columns the splines take (numerics/cubic_spline.hpp).
 

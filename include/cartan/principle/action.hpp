@@ -4,8 +4,8 @@
 // made of the kernel's pieces through the nodes x_0..x_N at the times t_k,
 //   S_h = sum_k h_k l(t_k + h_k/2, x_k+1/2, v_k+1/2),   h_k = t_k+1 - t_k,
 // where the kernel's piece of step k gives its midpoint x_k+1/2, the transported velocity there
-// and the transport carried over the step (transported/action.hpp: the half-step exponential on a
-// Lie group; general/action.hpp: the manifold's step and transport_along_step). Its derivatives
+// and the transport carried over the step (kernels/lie_group/action.hpp: the half-step exponential on a
+// Lie group; kernels/manifold/action.hpp: the manifold's step and transport_along_step). Its derivatives
 // along endpoint-fixed variations vanish as h -> 0 at solutions, at the scheme's order.
 
 #include <cstddef>

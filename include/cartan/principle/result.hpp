@@ -1,8 +1,8 @@
 #pragma once
 // What results of every kernel share (DESIGN.md, layer "principle"): a status and diagnostics,
 // never a silent trajectory (DESIGN.md "Results, not exceptions, for numerics"). Each kernel's
-// solution adds its trajectory and its unknowns (transported/solution.hpp: v0, xi0;
-// general/solution.hpp: v0, Xi0); api::Result adds them as numbers.
+// solution adds its trajectory and its unknowns (kernels/lie_group/solution.hpp: v0, xi0;
+// kernels/manifold/solution.hpp: v0, Xi0); api::Result adds them as numbers.
 
 #include <limits>
 #include <optional>
@@ -37,7 +37,7 @@ struct ResultCore {
   int sweeps = 0;             ///< forward sweeps of the scheme (tangent sweeps count once)
   std::vector<double> residual_history;
   double solve_time_s = 0;
-  /// The discrete transported action S_h of the trajectory (transported/action.hpp), so that users
+  /// The discrete transported action S_h of the trajectory (kernels/lie_group/action.hpp), so that users
   /// can tell solution branches apart; NaN where the kernel computes none (the general kernel),
   /// when there is no trajectory, or when the solve was stopped on request (interrupted, time-limit).
   double action = std::numeric_limits<double>::quiet_NaN();

@@ -2,7 +2,7 @@
 // The words of the transported-velocity problem (DESIGN.md, layer "principle"): the methods and
 // continuation paths of every solve, its defaults, and the orders results report, one spelling
 // for C++, the CLI (--method, --continuation, JSON `method`) and Python (method=, continuation=),
-// whichever kernel runs (the Lie group's, transported/; the general manifold's, general/).
+// whichever kernel runs (the Lie group's, kernels/lie_group/; the general manifold's, kernels/manifold/).
 
 #include <array>
 #include <string_view>
@@ -36,8 +36,8 @@ inline constexpr int kDefaultMaxIterations = 200;
 /// fewer than 5000 at 1e-10).
 inline constexpr int kDefaultMaxNodes = 20000;
 
-/// The variational integrator's order (transported/variational.hpp; measured in
-/// tests/transported/test_variational.cpp). Collocation's is kCollocationOrder (scheme_order.hpp).
+/// The variational integrator's order (kernels/lie_group/variational.hpp; measured in
+/// tests/kernels/lie_group/test_variational.cpp). Collocation's is kCollocationOrder (scheme_order.hpp).
 inline constexpr int kVariationalOrder = 2;
 
 template <>

@@ -1,6 +1,6 @@
 #pragma once
 // The report on a solution assembled once, for every kernel (src/verify/assemble.cpp): the
-// kernel's checks measure the figures (verify/checks.hpp on a Lie group, general/verify.hpp on a
+// kernel's checks measure the figures (kernels/lie_group/verify_checks.hpp on a Lie group, kernels/manifold/verify.hpp on a
 // manifold: their arithmetic differs, docs/design/one-core.md D19), and this turns them into
 // checks with thresholds C a^q rho^p (verify/verdict.hpp) and words.
 
@@ -23,7 +23,7 @@ struct Figures {
   std::string legendre_note;
   double energy = 0;
   /// C of the energy threshold C a^(p+1) rho^p: kEnergyConstant where the drift is bounded in
-  /// time (Lie groups), a bound growing with the horizon elsewhere (general/verify.hpp).
+  /// time (Lie groups), a bound growing with the horizon elsewhere (kernels/manifold/verify.hpp).
   double energy_constant = kEnergyConstant;
   std::string energy_note;
   Residual residual;

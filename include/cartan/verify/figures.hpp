@@ -1,6 +1,6 @@
 #pragma once
-// The pieces both verifiers' checks share (verify/checks.hpp on the transported problem,
-// general/verify.hpp on a manifold): relative figures, the three-point derivative on any mesh, and
+// The pieces both verifiers' checks share (kernels/lie_group/verify_checks.hpp on the transported problem,
+// kernels/manifold/verify.hpp on a manifold): relative figures, the three-point derivative on any mesh, and
 // the discretisation threshold's form (verify/verdict.hpp chooses the constants).
 
 #include <cmath>

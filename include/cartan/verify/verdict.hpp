@@ -1,7 +1,7 @@
 #pragma once
 // The verdict on a solution: checks, each with its figure, its threshold and PASS / FAIL / N/A,
 // and the thresholds' constants (docs/verify.md). Both verifiers return it: verify_trajectory
-// (verify/report.hpp, on the transported problem) and verify_general (general/verify.hpp); the
+// (kernels/lie_group/verify.hpp, on the transported problem) and verify_general (kernels/manifold/verify.hpp); the
 // CLI and Python print it. Light: what a unit that only reads or prints a report needs.
 
 #include <algorithm>

@@ -1,0 +1,109 @@
+#pragma once
+// The general solver's entry points as declarations, and the list of what the library compiles of
+// them: what a unit needs to call the library without parsing a solver. Compiled in the library
+// (src/kernels/solve_<manifold>.cpp, one file per manifold, in unity groups: CMakeLists.txt) for the erased Lagrangian
+// (erased_lagrangian.hpp; `erased(problem)` wraps any problem's) on every shipped manifold: the
+// sphere, the hyperbolic plane, R^2 and R^3 with constant Christoffel symbols, charts of dimension
+// 2 and 3, and SO(3), H3, SE(2), SE(3) with any left-invariant connection. Including this header
+// costs a unit seconds; instantiating the solve costs it tens of seconds per manifold
+// (bench/README.md, "Build time"). A call with any other (manifold, Lagrangian) pair through this
+// header alone does not link: call it as `solve(erased(problem))`, or include the definitions
+// (solve.hpp, shooting.hpp, verify.hpp) for the fully typed instantiation. The definition headers
+// include this one, so the declarations (with the default arguments) are written once.
+
+#include "cartan/groups/heisenberg.hpp"
+#include "cartan/groups/se2.hpp"
+#include "cartan/groups/se3.hpp"
+#include "cartan/groups/so3.hpp"
+#include "cartan/kernels/manifold/erased_lagrangian.hpp"
+#include "cartan/kernels/manifold/problem.hpp"
+#include "cartan/kernels/manifold/solution.hpp"
+#include "cartan/manifolds/chart.hpp"
+#include "cartan/manifolds/euclidean.hpp"
+#include "cartan/manifolds/group_manifold.hpp"
+#include "cartan/manifolds/quadric.hpp"
+#include "cartan/mechanics/check_report.hpp"
+#include "cartan/principle/options.hpp"
+#include "cartan/status.hpp"
+#include "cartan/verify/verdict.hpp"
+
+namespace cartan::general {
+
+/// Solves the general problem as `options` say (solve.hpp). Throws std::invalid_argument for an
+/// invalid problem or options, or a method this problem family does not have; numerical failure is
+/// a status.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const SolveOptions& options = {},
+                         const GeneralGuess<M>& guess = {});
+
+/// Single shooting of the general scheme from (v0_guess, Xi0_guess), or from the geodesic guess
+/// (shooting.hpp).
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, const GeneralShootingOptions& options,
+                                          const manifolds::ComponentsOf<M>& v0_guess,
+                                          const manifolds::ComponentMatrixOf<M>& Xi0_guess);
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, const GeneralShootingOptions& options = {});
+
+/// Every check on `x` as a solution of `problem` to `tol` by a method of the given order
+/// (verify.hpp); a `status` other than converged adds a failing `converged` check.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+verify::Report verify_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x, int order, double tol,
+                              Status status = Status::Converged);
+
+/// The frames, u = E v, energy and cumulative discrete action along `x` (along.hpp).
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+GeneralAlong<M> along_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x);
+
+/// A Lagrangian's callbacks against each other at the samples, and seeded samples around `base`
+/// (check_lagrangian.hpp).
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+mechanics::CheckReport check_lagrangian(const M& manifold, const L& l, const std::vector<ManifoldLagrangianSample<M>>& samples);
+template <manifolds::ManifoldWithConnection M>
+std::vector<ManifoldLagrangianSample<M>> lagrangian_samples(const M& manifold, const manifolds::PointOf<M>& base,
+                                                            const mechanics::CheckLagrangianOptions& options);
+
+}  // namespace cartan::general
+
+/// The shipped manifolds, one X(M) each (the list of the header comment).
+#define CARTAN_GENERAL_SHIPPED_MANIFOLDS(X)                                                              \
+  X(::cartan::manifolds::Sphere)                                                                         \
+  X(::cartan::manifolds::HyperbolicPlane)                                                                \
+  X(::cartan::manifolds::Euclidean<2>)                                                                   \
+  X(::cartan::manifolds::Euclidean<3>)                                                                   \
+  X(::cartan::manifolds::Chart<2>)                                                                       \
+  X(::cartan::manifolds::Chart<3>)                                                                       \
+  X(::cartan::manifolds::GroupManifold<::cartan::groups::SO3>)                                           \
+  X(::cartan::manifolds::GroupManifold<::cartan::groups::Heisenberg>)                                    \
+  X(::cartan::manifolds::GroupManifold<::cartan::groups::SE2>)                                           \
+  X(::cartan::manifolds::GroupManifold<::cartan::groups::SE3>)
+
+/// `extern template` (declaration) or `template` (definition, in one src/kernels/solve_*.cpp per manifold) of the solve, the
+/// shooting it runs (both entry points), the verifier, the quantities along a solution and the check
+/// of a Lagrangian for the erased Lagrangian on M (and the check's seeded samples on M).
+#define CARTAN_GENERAL_COMPILED(prefix, M)                                                                     \
+  prefix ::cartan::general::GeneralSolution<M> cartan::general::solve(                                        \
+      const ::cartan::general::GeneralProblem<M, ::cartan::general::ErasedLagrangian<M>>&,                     \
+      const ::cartan::SolveOptions&, const ::cartan::general::GeneralGuess<M>&);                  \
+  prefix ::cartan::general::GeneralSolution<M> cartan::general::solve_general_shooting(                       \
+      const ::cartan::general::GeneralProblem<M, ::cartan::general::ErasedLagrangian<M>>&,                     \
+      const ::cartan::general::GeneralShootingOptions&, const ::cartan::manifolds::ComponentsOf<M>&,           \
+      const ::cartan::manifolds::ComponentMatrixOf<M>&);                                                       \
+  prefix ::cartan::general::GeneralSolution<M> cartan::general::solve_general_shooting(                       \
+      const ::cartan::general::GeneralProblem<M, ::cartan::general::ErasedLagrangian<M>>&,                     \
+      const ::cartan::general::GeneralShootingOptions&);                                                       \
+  prefix ::cartan::verify::Report cartan::general::verify_general(                                              \
+      const ::cartan::general::GeneralProblem<M, ::cartan::general::ErasedLagrangian<M>>&,                     \
+      const ::cartan::general::GeneralTrajectory<M>&, int, double, ::cartan::Status);                    \
+  prefix ::cartan::general::GeneralAlong<M> cartan::general::along_general(                                   \
+      const ::cartan::general::GeneralProblem<M, ::cartan::general::ErasedLagrangian<M>>&,                     \
+      const ::cartan::general::GeneralTrajectory<M>&);                                                         \
+  prefix ::cartan::mechanics::CheckReport cartan::general::check_lagrangian(                                   \
+      const M&, const ::cartan::general::ErasedLagrangian<M>&,                                                 \
+      const std::vector<::cartan::general::ManifoldLagrangianSample<M>>&);                                      \
+  prefix std::vector<::cartan::general::ManifoldLagrangianSample<M>> cartan::general::lagrangian_samples(      \
+      const M&, const ::cartan::manifolds::PointOf<M>&, const ::cartan::mechanics::CheckLagrangianOptions&);
+
+#define CARTAN_GENERAL_EXTERN(M) CARTAN_GENERAL_COMPILED(extern template, M)
+CARTAN_GENERAL_SHIPPED_MANIFOLDS(CARTAN_GENERAL_EXTERN)
+#undef CARTAN_GENERAL_EXTERN

@@ -1,9 +1,0 @@
-// The general solve and verify on a chart of dimension 3 for the erased Lagrangian, compiled once
-// (compiled.hpp).
-#include "cartan/general/along.hpp"
-#include "cartan/general/check_lagrangian.hpp"
-#include "cartan/general/shooting.hpp"
-#include "cartan/general/solve.hpp"
-#include "cartan/general/verify.hpp"
-
-CARTAN_GENERAL_COMPILED(template, ::cartan::manifolds::Chart<3>)

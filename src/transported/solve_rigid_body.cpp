@@ -1,4 +1,0 @@
-// solve and validate for the free rigid body on SO(3), compiled once (transported/compiled.hpp).
-#include "cartan/transported/solve.hpp"
-
-CARTAN_TRANSPORTED_COMPILED_MODEL(template, ::cartan::groups::SO3, ::cartan::mechanics::RigidBody)
