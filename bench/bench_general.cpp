@@ -11,11 +11,11 @@
 #include <benchmark/benchmark.h>
 
 #include "cartan/kernels/manifold/compiled.hpp"
-#include "cartan/kernels/manifold/shooting.hpp"
-#include "cartan/kernels/solve.hpp"  // the typed solve, against the erased one
+#include "cartan/methods/manifold/shooting.hpp"
+#include "cartan/methods/solve.hpp"  // the typed solve, against the erased one
 #include "cartan/kernels/lie_group/compiled.hpp"
-#include "cartan/kernels/lie_group/shooting.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
+#include "cartan/methods/lie_group/shooting.hpp"
 #include "kernels/manifold/general_cases.hpp"  // paper cases, WithoutFastPath
 
 namespace {

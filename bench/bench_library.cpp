@@ -1,14 +1,14 @@
 // The library's compiled solves (src/kernels/lie_group/, src/kernels/manifold/: the explicit instantiations that
 // CMakeLists.txt compiles in unity groups), as the CLI and Python reach them: transported::solve of
-// the paper's free body and oscillator (built-in models, extern templates in kernels/lie_group/solve.hpp)
+// the paper's free body and oscillator (built-in models, extern templates in methods/lie_group/solve.hpp)
 // and general::solve of the erased Lagrangian (kernels/manifold/compiled.hpp) on SO(3) with Levi-Civita and
 // with Cartan–Schouten (the Lie-group kernel), on S^2 and on R^3. This unit instantiates no solver:
 // linked against libraries compiled differently (unity groups or not, compiler flags), it measures
 // their code alone (bench/README.md "Build time": the large-unit inlining cap).
 #include <benchmark/benchmark.h>
 
-#include "cartan/kernels/lie_group/solve.hpp"
 #include "cartan/kernels/manifold/compiled.hpp"
+#include "cartan/methods/lie_group/solve.hpp"
 #include "kernels/lie_group/paper_cases.hpp"
 
 namespace {

@@ -15,8 +15,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "cartan/kernels/lie_group/solve.hpp"
 #include "cartan/mechanics/free_body.hpp"
+#include "cartan/methods/lie_group/solve.hpp"
 #include "reference_step.hpp"
 #include "kernels/lie_group/paper_cases.hpp"
 

@@ -6,9 +6,9 @@
 #include <fstream>
 #include <string>
 
-#include "cartan/kernels/lie_group/continuation.hpp"
-#include "cartan/kernels/lie_group/multiple_shooting.hpp"
-#include "cartan/kernels/lie_group/two_level.hpp"
+#include "cartan/methods/lie_group/continuation.hpp"
+#include "cartan/methods/lie_group/multiple_shooting.hpp"
+#include "cartan/methods/lie_group/two_level.hpp"
 #include "kernels/lie_group/paper_cases.hpp"
 
 namespace {

@@ -6,7 +6,7 @@ alternating the two so that both see the same machine load.
 For each case: the Python two-level scheme (for the oscillator at T = 12, where it does not
 converge from the paper's guess, the Python continuation in T that reaches it), cartan's two-level
 scheme (the same algorithm) and cartan's default method (`method="auto"`: augmented shooting
-with an analytic Jacobian, then continuation in T, ... as include/cartan/kernels/lie_group/solve.hpp).
+with an analytic Jacobian, then continuation in T, ... as include/cartan/methods/lie_group/solve.hpp).
 Times are CPU time of the solve alone (the baseline's time.process_time, which counts NumPy's
 threads; cartan's time.thread_time around `cartan.solve`, which runs in the calling thread), so
 that the figures do not depend on the load of the shared machine; each is the fastest of

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The default solver (`method="auto"`, include/cartan/kernels/lie_group/solve.hpp) on a varied set of
+"""The default solver (`method="auto"`, include/cartan/methods/lie_group/solve.hpp) on a varied set of
 transported-velocity problems: inertias, horizons from 1e-4 to 100, lambda from -1 to 2,
 near-antipodal endpoints, full inertias, SO(3), H3, SE(2) and SE(3) (built-in free bodies, and
 two kinetic energies written in Python). For every problem the default strategy is run and its

@@ -8,7 +8,7 @@ function(cartan_set_warnings target)
                          -Wno-sign-conversion $<$<BOOL:${CARTAN_WERROR}>:-Werror>)
   # UBSan's object-size check is left to ASan, which checks every load and store against the
   # object's bounds at run time (object-size checks only those whose size the optimiser can see):
-  # it cost a fifth of the instrumented compile (src/kernels/solve_sphere.cpp, clang 14 at -O1:
+  # it cost a fifth of the instrumented compile (src/methods/solve_sphere.cpp, clang 14 at -O1:
   # 41.7 s of CPU with it, 33.6 s without; bench/README.md "Build time"). So are, outside the code
   # that handles input (CARTAN_UBSAN_INPUT_CHECKS, below), UBSan's null, alignment and
   # pointer-overflow checks: the accesses they anticipate (through a null or misaligned pointer,

@@ -11,9 +11,9 @@
 
 #include "cartan/connections/cartan_schouten.hpp"
 #include "cartan/groups/matrix_group.hpp"
-#include "cartan/kernels/lie_group/continuation.hpp"
 #include "cartan/mechanics/euler_poincare.hpp"
 #include "cartan/mechanics/natural_system.hpp"
+#include "cartan/methods/lie_group/continuation.hpp"
 #include "cartan/transport/parallel_transport.hpp"
 
 // Elements are the coordinates (a, b) of the matrix [[a, b], [0, 1]]; the algebra basis is

@@ -284,7 +284,7 @@ void check_segment_count(const ProblemSpec& spec) {
                  "the dense multiple-shooting Jacobian");
 }
 
-/// The general solver's methods (kernels/manifold/solve.hpp): auto, shooting, collocation; continuation
+/// The general solver's methods (methods/manifold/solve.hpp): auto, shooting, collocation; continuation
 /// none or T, with shooting and collocation only. With `lie_methods` (a group with a
 /// Cartan-Schouten connection, which general::solve runs on the Lie-group kernel) also
 /// multiple-shooting (with --segments), two-level and continuation in lambda.

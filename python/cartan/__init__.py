@@ -36,7 +36,7 @@ Manifolds with a connection (docs/general-connections.md)
     as a Python function of the coordinates), with ``christoffel, torsion, curvature, frame_bracket, step,
     difference, transport_along_step, tangent_basis, metric, torsion_components,
     curvature_components, has_parallel_torsion_and_curvature, validate``.
-The transported-velocity problem on any of them (kernels/solve.hpp)
+The transported-velocity problem on any of them (methods/solve.hpp)
     :func:`solve` with a manifold as its first argument and l = 1/2 v.A v - V(q), or with a
     Lagrangian object of the manifold and ``space=manifold``; returns the same :class:`Result`.
 General two-point boundary-value problems

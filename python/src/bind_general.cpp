@@ -1,4 +1,4 @@
-// The general transported-velocity solve (include/cartan/kernels/solve.hpp) and its verifier on
+// The general transported-velocity solve (include/cartan/methods/solve.hpp) and its verifier on
 // the manifold classes of bind_manifolds.cpp, in their own translation unit.
 //
 // `_solve_general(manifold, ...)`: general::solve with the vocabulary of cartan.solve. Every

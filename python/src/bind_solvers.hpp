@@ -1,5 +1,5 @@
 #pragma once
-// `<Group>._solve(...)`: the library's solve (include/cartan/kernels/lie_group/solve.hpp) for the
+// `<Group>._solve(...)`: the library's solve (include/cartan/methods/lie_group/solve.hpp) for the
 // listed built-in models and any Lagrangian written in Python (behind the erased Lagrangian, whose
 // solve and verify the library compiles: kernels/lie_group/compiled.hpp), with the CLI's method names and
 // options (SolveOptions). Nothing is decided here: the options are translated, the library runs,

@@ -210,7 +210,7 @@ def aux_to_xi(manifold, Xi):
 @pytest.mark.parametrize("order", [1, 2])
 def test_so3_cartan_schouten_equals_the_lambda_solver(order):
     """solve_general on GroupManifold("so3", "cartan-schouten", lam) runs the Lie-group kernel
-    (include/cartan/kernels/lie_group_as_manifold.hpp): its frame is the lambda solver's P = Ad(h) and C(Xi) its
+    (include/cartan/methods/lie_group_as_manifold.hpp): its frame is the lambda solver's P = Ad(h) and C(Xi) its
     xi, and verify_general passes the result."""
     kwargs = dict(T=5.0, N=200, order=order, tol=1e-12, method="shooting")
     manifold = GroupManifold("so3", "cartan-schouten", lam=0.3)

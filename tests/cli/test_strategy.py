@@ -1,4 +1,4 @@
-"""`cartan solve`'s default method (the library's strategy, include/cartan/kernels/lie_group/solve.hpp):
+"""`cartan solve`'s default method (the library's strategy, include/cartan/methods/lie_group/solve.hpp):
 the failure cases the redesign issue lists, honest failures, guesses and the action (SIGINT:
 test_interrupt.py).
 

@@ -1,24 +1,27 @@
 """The headers keep the layers of DESIGN.md and docs/architecture.md ("Layout"): a layer includes
-only the layers below it, and the two kernels never include each other.
+only the layers below it, and no kernel includes the other or a driver.
 
 * principle/ (the vocabulary: methods, options, defaults, result parts) includes no kernel, no
-  driver (solvers/), no verifier and no api;
-* solvers/ (the drivers every kernel shares) includes the vocabulary and numerics, no kernel;
-* verify/ (the verdict, its figures and their assembly: every kernel's) includes no kernel and no
-  driver; each kernel's verifier (kernels/<kernel>/verify*.hpp) runs its kernel's arithmetic on
-  given samples and includes no driver and none of its kernel's solvers;
-* kernels/lie_group/ and kernels/manifold/ include neither each other nor kernels/*.hpp, the one
-  place a kernel is chosen (kernels/solve.hpp) and the Lie-group kernel presented in the manifold
-  kernel's vocabulary (kernels/lie_group_as_manifold.hpp), which include both;
-* api/ declares in the vocabulary's words, with no kernel and no driver;
-* no two folders include each other, directly or through others (kernels/<kernel> counts as a
-  folder);
+  method, no driver (solvers/), no verifier and no api;
+* solvers/ (the drivers every kernel's methods share, over the interfaces they declare) includes
+  the vocabulary and numerics, no kernel and no method;
+* kernels/lie_group/ and kernels/manifold/ (the arithmetic: problems, schemes, sweeps, tangent
+  maps, actions, dense output, verifiers) include neither each other, nor a driver, nor a method;
+* methods/lie_group/ and methods/manifold/ (each method on its kernel: the drivers' interfaces
+  implemented) include neither each other nor methods/*.hpp, where the two meet: the one place a
+  kernel is chosen (methods/solve.hpp) and the Lie-group kernel presented in the manifold kernel's
+  vocabulary (methods/lie_group_as_manifold.hpp);
+* verify/ (the verdict, its figures and their assembly: every kernel's) includes no kernel, no
+  method and no driver;
+* api/ declares in the vocabulary's words, with no kernel, method or driver;
+* no two folders include each other, directly or through others (kernels/<k> and methods/<k>
+  count as folders);
 * the edges (apps/, python/src/) include of a kernel only what the library compiles for them: its
-  compiled solves' declarations (compiled.hpp) and its dense output (dense.hpp), never a driver
-  (solvers/) nor the choice (kernels/*.hpp);
+  compiled solves' declarations (compiled.hpp) and its dense output (dense.hpp), never a method
+  nor a driver;
 * the forwarding headers of the old paths (transported/, general/, verify/report.hpp,
-  verify/checks.hpp), kept for one release, each include the one header that replaced them, and
-  nothing of the project includes them.
+  verify/checks.hpp), kept for one release, each include the one header of the same name that
+  replaced them, and nothing of the project includes them.
 """
 import re
 from pathlib import Path
@@ -27,9 +30,11 @@ ROOT = Path(__file__).resolve().parents[2]
 INCLUDE = ROOT / "include" / "cartan"
 DIRECTIVE = re.compile(r'^\s*#\s*include\s+"cartan/([^"]+)"', re.MULTILINE)
 KERNELS = ("kernels/lie_group", "kernels/manifold")
+METHODS = ("methods/lie_group", "methods/manifold")
 FORWARDING = ("transported", "general")
 FORWARDING_FILES = {"verify/report.hpp": "kernels/lie_group/verify.hpp",
-                    "verify/checks.hpp": "kernels/lie_group/verify_checks.hpp"}
+                    "verify/checks.hpp": "kernels/lie_group/verify_checks.hpp",
+                    "general/lie_kernel.hpp": "methods/lie_group_as_manifold.hpp"}
 
 
 def includes(header):
@@ -37,10 +42,10 @@ def includes(header):
 
 
 def folder_of(path):
-    """The layer of a header path relative to include/cartan: its folder, kernels/<kernel> for a
-    kernel's header, "kernels" for the choice, "." for a header at the top."""
+    """The layer of a header path relative to include/cartan: its folder, kernels/<k> or
+    methods/<k> for a kernel's or a method's header, "." for a header at the top."""
     parts = path.split("/")
-    if parts[0] == "kernels" and len(parts) > 2:
+    if parts[0] in ("kernels", "methods") and len(parts) > 2:
         return "/".join(parts[:2])
     return parts[0] if len(parts) > 1 else "."
 
@@ -65,51 +70,46 @@ def crossings(folder, forbidden):
             for target in includes(header) if folder_of(target) in forbidden]
 
 
+ABOVE_THE_KERNELS = {"methods", *METHODS, "solvers", "api"}
+
+
 def test_the_folders_exist():
-    for folder in ("principle", "solvers", "verify", "api", "kernels", *KERNELS):
+    for folder in ("principle", "solvers", "verify", "api", "methods", *KERNELS, *METHODS):
         assert list(headers(folder)), folder
 
 
-def test_the_vocabulary_includes_no_kernel_driver_verifier_or_api():
-    assert crossings("principle", {"kernels", *KERNELS, "solvers", "api", "verify"}) == []
+def test_the_vocabulary_includes_no_kernel_method_driver_verifier_or_api():
+    assert crossings("principle", {*KERNELS, *ABOVE_THE_KERNELS, "verify"}) == []
 
 
-def test_the_drivers_include_no_kernel():
-    assert crossings("solvers", {"kernels", *KERNELS, "api", "verify"}) == []
+def test_the_drivers_include_no_kernel_and_no_method():
+    assert crossings("solvers", {*KERNELS, "methods", *METHODS, "api", "verify"}) == []
 
 
-def test_the_kernels_include_neither_each_other_nor_the_choice():
+def test_the_kernels_include_neither_each_other_nor_a_driver_nor_a_method():
     for kernel in KERNELS:
-        others = {"kernels", *KERNELS} - {kernel}
-        assert crossings(kernel, others) == [], kernel
+        assert crossings(kernel, {*KERNELS, *ABOVE_THE_KERNELS} - {kernel}) == [], kernel
 
 
-def test_the_choice_includes_both_kernels():
-    # kernels/*.hpp is where the kernels meet: the check above would hold vacuously without it.
-    choice = {folder_of(t) for _, h in headers("kernels") for t in includes(h)}
-    assert set(KERNELS) <= choice
+def test_the_methods_of_one_kernel_include_neither_the_other_kernel_nor_where_they_meet():
+    for methods, kernel in zip(METHODS, KERNELS):
+        other_kernel = set(KERNELS) - {kernel}
+        other_methods = set(METHODS) - {methods}
+        assert crossings(methods, {*other_kernel, *other_methods, "methods", "api"}) == [], methods
+
+
+def test_where_the_kernels_meet_includes_both():
+    # methods/*.hpp is where the kernels meet: the checks above would hold vacuously without it.
+    met = {folder_of(t) for _, h in headers("methods") for t in includes(h)}
+    assert set(KERNELS) <= met and set(METHODS) <= met
 
 
 def test_the_verdict_is_every_kernels():
-    assert crossings("verify", {"kernels", *KERNELS, "solvers", "api"}) == []
-
-
-def test_each_kernels_verifier_runs_no_solver():
-    # A kernel's verifier runs the kernel's arithmetic (its scheme, transport and action) on given
-    # samples; it includes none of the drivers nor the kernel's solvers that produce them.
-    solvers = {"kernels/lie_group/" + name for name in ("shooting.hpp", "solve.hpp", "continuation.hpp",
-                                                          "multiple_shooting.hpp", "two_level.hpp",
-                                                          "variational.hpp", "collocation_solution.hpp")}
-    solvers |= {"kernels/manifold/" + name for name in ("shooting.hpp", "solve.hpp", "collocation.hpp")}
-    verifiers = [(p, h) for p, h in headers() if folder_of(p) in KERNELS and Path(p).name.startswith("verify")]
-    assert len(verifiers) >= 3  # the Lie-group kernel's two, the manifold kernel's one
-    found = [f"{p} -> {t}" for p, h in verifiers for t in includes(h)
-             if t in solvers or folder_of(t) in ("solvers", "kernels")]
-    assert found == []
+    assert crossings("verify", {*KERNELS, *ABOVE_THE_KERNELS}) == []
 
 
 def test_the_api_declares_without_a_solver():
-    assert crossings("api", {"kernels", *KERNELS, "solvers"}) == []
+    assert crossings("api", {*KERNELS, "methods", *METHODS, "solvers"}) == []
 
 
 def folder_graph():
@@ -139,7 +139,7 @@ def cycles(graph):
 
 def test_no_include_cycle_between_folders():
     graph = folder_graph()
-    assert "kernels/lie_group" in graph and "kernels/manifold" in graph  # the graph sees the kernels
+    assert {*KERNELS, *METHODS} <= set(graph)  # the graph sees the kernels and their methods
     assert cycles(graph) == []
 
 
@@ -158,7 +158,7 @@ def edge_includes():
 def test_the_edges_include_no_solver():
     compiled = {f"{kernel}/{name}" for kernel in KERNELS for name in ("compiled.hpp", "dense.hpp")}
     found = [line for line, target in edge_includes()
-             if folder_of(target) in ("solvers", "kernels") or is_forwarding(target)
+             if folder_of(target) in ("solvers", "methods", *METHODS) or is_forwarding(target)
              or (folder_of(target) in KERNELS and target not in compiled)]
     assert found == []
     assert any(target == "api/solve.hpp" for _, target in edge_includes())  # the check sees the edges' includes
@@ -178,13 +178,13 @@ def test_the_forwarding_headers_forward_and_nothing_uses_them():
         assert len(targets) == 1 and (INCLUDE / targets[0]).is_file(), path
         if path in FORWARDING_FILES:
             assert targets[0] == FORWARDING_FILES[path]
-        else:  # same name in its kernel, but for the two headers that left the manifold kernel
-            moved = {"general/solve.hpp": "kernels/solve.hpp",
-                     "general/lie_kernel.hpp": "kernels/lie_group_as_manifold.hpp"}
-            kernel = "kernels/lie_group" if path.startswith("transported/") else "kernels/manifold"
-            assert targets[0] == moved.get(path, f"{kernel}/{header.name}"), path
+        elif path == "general/solve.hpp":  # the general solve is where the kernels meet
+            assert targets[0] == "methods/solve.hpp"
+        else:  # the header of the same name in the kernel or in its methods
+            kernel = "lie_group" if path.startswith("transported/") else "manifold"
+            assert targets[0] in (f"kernels/{kernel}/{header.name}", f"methods/{kernel}/{header.name}"), path
     users = [f"{source.relative_to(ROOT)} -> {t}" for source in project_sources()
-             if not is_forwarding(source.relative_to(INCLUDE).as_posix() if source.is_relative_to(INCLUDE) else "")
+             if not (source.is_relative_to(INCLUDE) and is_forwarding(source.relative_to(INCLUDE).as_posix()))
              for t in includes(source) if is_forwarding(t)]
     assert users == []
 
@@ -193,6 +193,6 @@ def test_the_check_sees_a_crossing(tmp_path, monkeypatch):
     # The check itself can fail: a header of a fake tree that crosses is reported.
     fake = tmp_path / "cartan"
     (fake / "kernels" / "manifold").mkdir(parents=True)
-    (fake / "kernels" / "manifold" / "bad.hpp").write_text('#include "cartan/kernels/lie_group/solve.hpp"\n')
+    (fake / "kernels" / "manifold" / "bad.hpp").write_text('#include "cartan/solvers/shooting.hpp"\n')
     monkeypatch.setattr(__import__(__name__), "INCLUDE", fake)
-    assert crossings("kernels/manifold", {"kernels/lie_group"}) == ["kernels/manifold/bad.hpp -> kernels/lie_group/solve.hpp"]
+    assert crossings("kernels/manifold", {"solvers"}) == ["kernels/manifold/bad.hpp -> solvers/shooting.hpp"]

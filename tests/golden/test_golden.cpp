@@ -339,7 +339,7 @@ api::ManifoldProblem quadric(std::string manifold, std::vector<double> q0, std::
 }
 
 /// The paper's oscillator (lambda = 1/2 unless given) as a general problem on SO(3) with the
-/// Cartan–Schouten connection: general::solve runs it on the Lie-group kernel (kernels/lie_group_as_manifold.hpp).
+/// Cartan–Schouten connection: general::solve runs it on the Lie-group kernel (methods/lie_group_as_manifold.hpp).
 general::ErasedProblem<manifolds::GroupManifold<groups::SO3>> cartan_schouten_oscillator(int N, double T, double lambda = 0.5) {
   using M = manifolds::GroupManifold<groups::SO3>;
   const auto p = paper_oscillator(lambda, N, T);

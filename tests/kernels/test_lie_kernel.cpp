@@ -1,5 +1,5 @@
 // general::solve on a Lie group with the Cartan–Schouten connection runs the Lie-group kernel
-// (include/cartan/kernels/lie_group_as_manifold.hpp; docs/design/lie-kernel.md) and returns what the general
+// (include/cartan/methods/lie_group_as_manifold.hpp; docs/design/lie-kernel.md) and returns what the general
 // kernel (solve_general_shooting) returns at the same discrete solution: the two schemes are the
 // same discrete equations (E_k = Ad(h_k), xi = C(Xi)), so the results differ only by where
 // Levenberg–Marquardt stops within the tolerance and by rounding. Cases: the SO(3) free body and
@@ -35,12 +35,12 @@
 #include "cartan/groups/se3.hpp"
 #include "cartan/groups/so3.hpp"
 #include "cartan/kernels/lie_group/along.hpp"
-#include "cartan/kernels/lie_group_as_manifold.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/mechanics/free_body.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
 #include "cartan/mechanics/rigid_body.hpp"
-#include "cartan/kernels/lie_group/solve.hpp"  // the Lie-group solve, instantiated in the library
+#include "cartan/methods/lie_group_as_manifold.hpp"
+#include "cartan/methods/lie_group/solve.hpp"  // the Lie-group solve, instantiated in the library
 #include "manifold/general_cases.hpp"
 #include "test_support.hpp"
 

@@ -1,5 +1,5 @@
 // The free bodies on SE(2) and SE(3) (mechanics/free_body.hpp) through the library's solve
-// (compiled once in src/kernels/lie_group/solve_se*_free_body.cpp), against what does not depend on the
+// (compiled once in src/methods/lie_group/solve_se*_free_body.cpp), against what does not depend on the
 // solver: a relative equilibrium in closed form (g(t) = exp(t v) when ad*_v (I v) = 0), the left
 // Euler-Poincare equation at lambda = 0 (paper-notes "Classical limits"), energy conservation,
 // the Hamiltonians as Legendre transforms (with Lie-Poisson against Euler-Poincare), and the
@@ -9,11 +9,11 @@
 #include <limits>
 #include <string>
 
-#include "cartan/kernels/lie_group/solve.hpp"
 #include "cartan/kernels/lie_group/verify.hpp"
 #include "cartan/mechanics/euler_poincare.hpp"
 #include "cartan/mechanics/free_body.hpp"
 #include "cartan/mechanics/lie_poisson.hpp"
+#include "cartan/methods/lie_group/solve.hpp"
 #include "test_support.hpp"
 
 namespace cartan::testing {

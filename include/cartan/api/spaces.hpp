@@ -6,7 +6,7 @@
 // the models of a group (the paper's systems) are models/catalogue.hpp's. Compiled once in
 // the library cartan_io (src/api/spaces.cpp), which cartan_api links.
 //
-// Adding a space: its type's solve compiled (kernels/manifold/compiled.hpp, src/kernels/solve_<space>.cpp),
+// Adding a space: its type's solve compiled (kernels/manifold/compiled.hpp, src/methods/solve_<space>.cpp),
 // its entry here, and its branch in src/api/problems.cpp (how its points and connection are read).
 
 #include <cstddef>

@@ -1,4 +1,4 @@
 #pragma once
 // Forwarding header, kept for one release: the kernels moved to include/cartan/kernels/
-// (docs/architecture.md, "Layout"). Include "cartan/kernels/manifold/shooting.hpp" instead.
-#include "cartan/kernels/manifold/shooting.hpp"
+// (docs/architecture.md, "Layout"). Include "cartan/methods/manifold/shooting.hpp" instead.
+#include "cartan/methods/manifold/shooting.hpp"

@@ -1,4 +1,4 @@
 #pragma once
 // Forwarding header, kept for one release: the kernels moved to include/cartan/kernels/
-// (docs/architecture.md, "Layout"). Include "cartan/kernels/solve.hpp" instead.
-#include "cartan/kernels/solve.hpp"
+// (docs/architecture.md, "Layout"). Include "cartan/methods/solve.hpp" instead.
+#include "cartan/methods/solve.hpp"

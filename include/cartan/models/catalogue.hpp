@@ -8,7 +8,7 @@
 // library's solve and verify.
 //
 // Adding a model: a Lagrangian whose solve is compiled once in the library (its entry in
-// CARTAN_TRANSPORTED_BUILTIN_MODELS, kernels/lie_group/compiled.hpp, and src/kernels/lie_group/solve_*.cpp),
+// CARTAN_TRANSPORTED_BUILTIN_MODELS, kernels/lie_group/compiled.hpp, and src/methods/lie_group/solve_*.cpp),
 // its Python class (python/src/bind_<group>.cpp), and one entry in kModels below.
 
 #include <Eigen/Core>

@@ -1,6 +1,6 @@
 #pragma once
-// One shooting driver for every kernel: the Lie-group scheme (kernels/lie_group/shooting.hpp) and the
-// scheme of any manifold with a connection (kernels/manifold/shooting.hpp) sweep; the decisions are made
+// One shooting driver for every kernel: the Lie-group scheme (methods/lie_group/shooting.hpp) and the
+// scheme of any manifold with a connection (methods/manifold/shooting.hpp) sweep; the decisions are made
 // here, once, in compiled code (src/numerics/shooting_driver.cpp).
 //
 // The unknowns y = (v0, a0) are the initial velocity (n_v numbers) and the auxiliary's initial
@@ -8,7 +8,7 @@
 // r = (r_q, a_N): how far q_N is from qT, and the auxiliary at T, which must vanish. Levenberg–
 // Marquardt solves r(y) = 0 in dimensionless form, so that one tolerance means the same at every
 // horizon: unknowns x = (T v0, a0 / s) and residual (r_q, a_N / s), s the auxiliary's scale
-// (kernels/lie_group/shooting.hpp's header comment). The Jacobian comes from the kernel's
+// (methods/lie_group/shooting.hpp's header comment). The Jacobian comes from the kernel's
 // tangent-linear sweep (analytic) or from forward differences.
 //
 // Recording. With the analytic Jacobian every sweep records its nodes, into one of two buffers the

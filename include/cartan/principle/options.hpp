@@ -27,7 +27,7 @@ inline void check_samples(int samples, std::string_view where = "collocation") {
   }
 }
 
-/// The options of one shooting (kernels/lie_group/shooting.hpp, kernels/manifold/shooting.hpp).
+/// The options of one shooting (methods/lie_group/shooting.hpp, methods/manifold/shooting.hpp).
 struct ShootingOptions {
   SchemeOrder order = SchemeOrder::First;
   double tolerance = 1e-10;     ///< on |(log(gT^{-1} g_N), xi_N / xi_scale)| (dimensionless)
@@ -50,7 +50,7 @@ struct ShootingOptions {
   }
 };
 
-/// A continuation path's (kernels/lie_group/continuation.hpp, solvers/continuation.hpp).
+/// A continuation path's (methods/lie_group/continuation.hpp, solvers/continuation.hpp).
 struct ContinuationOptions {
   ShootingOptions shooting;
   int max_halvings = 8;         ///< of the horizon, looking for a start that converges

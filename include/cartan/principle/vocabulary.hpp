@@ -36,7 +36,7 @@ inline constexpr int kDefaultMaxIterations = 200;
 /// fewer than 5000 at 1e-10).
 inline constexpr int kDefaultMaxNodes = 20000;
 
-/// The variational integrator's order (kernels/lie_group/variational.hpp; measured in
+/// The variational integrator's order (methods/lie_group/variational.hpp; measured in
 /// tests/kernels/lie_group/test_variational.cpp). Collocation's is kCollocationOrder (scheme_order.hpp).
 inline constexpr int kVariationalOrder = 2;
 

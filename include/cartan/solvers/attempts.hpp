@@ -2,7 +2,7 @@
 // The default strategy's record of its attempts, compiled once (src/solvers/attempts.cpp): which
 // method ran with which status, the best failed attempt of the requested problem (the smallest
 // scaled residual), the work of all, and the words of the result (docs/design/one-core.md S7).
-// The strategy itself (kernels/lie_group/solve.hpp) decides what to try.
+// The strategy itself (methods/lie_group/solve.hpp) decides what to try.
 
 #include <functional>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // Collocation of the continuous transported-velocity problem, every kernel's (the Lie-group
-// kernel's kernels/lie_group/collocation_solution.hpp, the general kernels/manifold/collocation.hpp), compiled
+// kernel's methods/lie_group/collocation_solution.hpp, the general methods/manifold/collocation.hpp), compiled
 // once (src/solvers/collocation.cpp): where it starts, the start on a mesh then refinement, the
 // order-2 shooting fallback, the words of the path, and where a result is sampled. A kernel
 // gives its continuous system and starts (ContinuousProblem: its arithmetic) and reads the

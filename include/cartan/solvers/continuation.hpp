@@ -1,15 +1,15 @@
 #pragma once
 // Continuation paths, written once for every problem family with shooting and compiled once
 // (src/solvers/continuation.cpp): the Lie-group kernel's TransportedProblem
-// (kernels/lie_group/continuation.hpp), the general GeneralProblem (kernels/manifold/solve.hpp), the Lie-group
-// kernel inside the general solve (kernels/lie_group_as_manifold.hpp). ShootingFamily<Problem> says how to
+// (methods/lie_group/continuation.hpp), the general GeneralProblem (methods/manifold/solve.hpp), the Lie-group
+// kernel inside the general solve (methods/lie_group_as_manifold.hpp). ShootingFamily<Problem> says how to
 // shoot one problem of a family and where its unknowns (a velocity and an auxiliary: (v0, xi0)
 // or (v0, Xi0)) live in a solution; FamilyPath (below) hands a family to the compiled path as a
 // ShootingPath, its solutions as PathResults. The path itself (docs/paper-notes.md#erratum-4):
 //  * in T: halve the horizon until shooting from the guess converges, then lengthen it step by
 //    step (same step size h, so N scales with T), each solve starting from the previous
 //    unknowns; a failed stage halves the increment;
-//  * any scalar parameter (lambda: kernels/lie_group/continuation.hpp) by continue_parameter.
+//  * any scalar parameter (lambda: methods/lie_group/continuation.hpp) by continue_parameter.
 // A failed path returns the best iterate *of the requested problem*, never a stage's trajectory
 // at another T or lambda, and its message says where the path stopped.
 
@@ -220,8 +220,8 @@ auto horizon_family(const Problem& problem) {
   });
 }
 
-/// continue_in_T on a family (solve_continuation_in_T, kernels/lie_group/continuation.hpp;
-/// kernels/manifold/solve.hpp). `failed_direct`, when not null, is moved from.
+/// continue_in_T on a family (solve_continuation_in_T, methods/lie_group/continuation.hpp;
+/// methods/manifold/solve.hpp). `failed_direct`, when not null, is moved from.
 template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>
 Solution continue_in_T(const Problem& problem, const ContinuationOptions& options,
                        std::optional<typename ShootingFamily<Problem>::Velocity> v0_guess,
@@ -235,8 +235,8 @@ Solution continue_in_T(const Problem& problem, const ContinuationOptions& option
                                           failed_direct != nullptr ? path.wrap(std::move(*failed_direct)) : nullptr));
 }
 
-/// Continuation in lambda on a family (solve_continuation_in_lambda, kernels/lie_group/continuation.hpp;
-/// the Lie-group kernel inside the general solve, kernels/lie_group_as_manifold.hpp): from the solution at
+/// Continuation in lambda on a family (solve_continuation_in_lambda, methods/lie_group/continuation.hpp;
+/// the Lie-group kernel inside the general solve, methods/lie_group_as_manifold.hpp): from the solution at
 /// lambda = `start` (continue_in_T's, directly from the geodesic guess when that converges) to
 /// the problem's lambda.
 template <class Problem, class Solution = typename ShootingFamily<Problem>::Solution>

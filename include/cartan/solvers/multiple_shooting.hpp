@@ -3,7 +3,7 @@
 // Levenberg–Marquardt on a kernel's lifted system with the charts re-centred between them, the
 // tightening of the lifted tolerance until one plain sweep meets the requested one, the status
 // and the message. The lifted system (unknowns, residual, analytic Jacobian) is the kernel's
-// typed arithmetic (kernels/lie_group/multiple_shooting.hpp).
+// typed arithmetic (methods/lie_group/multiple_shooting.hpp).
 
 #include <Eigen/Core>
 #include <optional>
@@ -44,7 +44,7 @@ struct LiftedOptions {
   const SolveMonitor* monitor = nullptr;
 };
 
-/// Multiple shooting of `system` (kernels/lie_group/multiple_shooting.hpp, solve_multiple_shooting):
+/// Multiple shooting of `system` (methods/lie_group/multiple_shooting.hpp, solve_multiple_shooting):
 /// writes into `result` (the one `system` records into) the counters, the residual history, the
 /// status and the message, which begins with `header`.
 void solve_lifted(LiftedSystem& system, const LiftedOptions& options, const std::string& header, ResultCore& result);

@@ -1,5 +1,5 @@
 #pragma once
-// Single shooting of every kernel (kernels/lie_group/shooting.hpp, kernels/manifold/shooting.hpp), compiled once
+// Single shooting of every kernel (methods/lie_group/shooting.hpp, methods/manifold/shooting.hpp), compiled once
 // (src/solvers/shooting.cpp): the kernel's sweeps are a numerics::ShootingKernel, the driver
 // (numerics/shooting_driver.hpp) scales and solves, and this layer turns the outcome into a
 // result's counters, status and words. What a kernel adds is its own (the general kernel's rule

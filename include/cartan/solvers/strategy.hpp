@@ -1,8 +1,8 @@
 #pragma once
 // The default strategy (Method::Auto) of every kernel, compiled once (src/solvers/strategy.cpp):
 // what to try, in which order, on what condition, and the words of the result. A kernel (the
-// Lie-group one, kernels/lie_group/solve.hpp; the general one and the Lie-group kernel inside the
-// general solve, kernels/manifold/solve.hpp) says what it can do and runs each method; the strategy
+// Lie-group one, methods/lie_group/solve.hpp; the general one and the Lie-group kernel inside the
+// general solve, methods/manifold/solve.hpp) says what it can do and runs each method; the strategy
 // decides. The steps:
 //   1. shooting from the guess (the geodesic guess by default), abandoned once |r| stops halving
 //      (within the kernel's window);

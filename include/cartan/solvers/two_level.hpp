@@ -2,7 +2,7 @@
 // The paper's two-level scheme's driver (§7 "A two-level scheme"), compiled once
 // (src/solvers/two_level.cpp): the outer fixed-point loop on the auxiliary sequence around an
 // inner Levenberg–Marquardt shooting on v0, their statuses, counters and message. The sweeps are
-// the kernel's typed arithmetic (kernels/lie_group/two_level.hpp).
+// the kernel's typed arithmetic (methods/lie_group/two_level.hpp).
 
 #include <Eigen/Core>
 #include <optional>

@@ -4,7 +4,7 @@
 // test (Deuflhard), until the simplified correction is below the tolerance. A stop ends an
 // iteration where it is: the Hessian, its LU (numerics/dense_lu.hpp above a thousand unknowns)
 // and each damping trial poll the monitor. The path, its gradient and Hessian are the kernel's
-// typed arithmetic (kernels/lie_group/variational.hpp).
+// typed arithmetic (methods/lie_group/variational.hpp).
 
 #include <Eigen/Core>
 #include <string>

@@ -1,4 +1,4 @@
 #pragma once
 // Forwarding header, kept for one release: the kernels moved to include/cartan/kernels/
-// (docs/architecture.md, "Layout"). Include "cartan/kernels/lie_group/variational.hpp" instead.
-#include "cartan/kernels/lie_group/variational.hpp"
+// (docs/architecture.md, "Layout"). Include "cartan/methods/lie_group/variational.hpp" instead.
+#include "cartan/methods/lie_group/variational.hpp"

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "cartan/kernels/lie_group/collocation_system.hpp"
-#include "cartan/kernels/lie_group/continuation.hpp"
 #include "cartan/kernels/lie_group/heisenberg_collocation.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
+#include "cartan/methods/lie_group/continuation.hpp"
 #include "test_support.hpp"
 #include "kernels/lie_group/paper_cases.hpp"
 

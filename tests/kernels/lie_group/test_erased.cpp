@@ -1,5 +1,5 @@
 // The erased Lagrangian (mechanics/erased_lagrangian.hpp) and the library's solve and verify for it
-// (kernels/lie_group/compiled.hpp, compiled in src/kernels/lie_group/erased_*.cpp) against the typed
+// (kernels/lie_group/compiled.hpp, compiled in src/methods/lie_group/erased_*.cpp) against the typed
 // instantiations of the same models: every evaluation forwarded unchanged, the same solution on each
 // shipped group and by each method, and the same verification figures.
 

@@ -10,8 +10,8 @@
 
 #include "cartan/kernels/lie_group/action.hpp"
 #include "cartan/kernels/lie_group/heisenberg_collocation.hpp"
-#include "cartan/kernels/lie_group/shooting.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
+#include "cartan/methods/lie_group/shooting.hpp"
 #include "test_support.hpp"
 
 namespace cartan::transported {

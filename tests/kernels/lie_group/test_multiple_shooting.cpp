@@ -3,9 +3,9 @@
 // long-horizon oscillator (docs/paper-notes.md#erratum-4), and option validation.
 #include <iostream>
 
-#include "cartan/kernels/lie_group/continuation.hpp"
-#include "cartan/kernels/lie_group/multiple_shooting.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
+#include "cartan/methods/lie_group/continuation.hpp"
+#include "cartan/methods/lie_group/multiple_shooting.hpp"
 #include "test_support.hpp"
 #include "kernels/lie_group/paper_cases.hpp"
 

@@ -6,8 +6,8 @@
 #include "cartan/mechanics/free_body.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
 #include "cartan/kernels/lie_group/compiled.hpp"  // erased(problem)
-#include "cartan/kernels/lie_group/continuation.hpp"
-#include "cartan/kernels/lie_group/two_level.hpp"
+#include "cartan/methods/lie_group/continuation.hpp"
+#include "cartan/methods/lie_group/two_level.hpp"
 #include "test_support.hpp"
 #include "kernels/lie_group/paper_cases.hpp"
 

@@ -1,4 +1,4 @@
-// The discrete variational integrator (kernels/lie_group/variational.hpp): the exact gradient of S_h
+// The discrete variational integrator (methods/lie_group/variational.hpp): the exact gradient of S_h
 // against differences of transported_action, stationarity of its solutions, convergence to the
 // continuous solution, long-horizon energy, the dispatch through solve, and its failures.
 #include <gtest/gtest.h>
@@ -6,8 +6,8 @@
 #include <cmath>
 #include <random>
 
-#include "cartan/kernels/lie_group/solve.hpp"
 #include "cartan/mechanics/heisenberg_oscillator.hpp"
+#include "cartan/methods/lie_group/solve.hpp"
 #include "mechanics/mechanics_support.hpp"
 #include "kernels/lie_group/paper_cases.hpp"
 

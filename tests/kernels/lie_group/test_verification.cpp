@@ -7,9 +7,9 @@
 #include <string>
 
 #include "cartan/kernels/lie_group/action.hpp"
-#include "cartan/kernels/lie_group/continuation.hpp"
-#include "cartan/kernels/lie_group/solve.hpp"
-#include "cartan/kernels/lie_group/two_level.hpp"
+#include "cartan/methods/lie_group/continuation.hpp"
+#include "cartan/methods/lie_group/solve.hpp"
+#include "cartan/methods/lie_group/two_level.hpp"
 #include "test_support.hpp"
 #include "kernels/lie_group/paper_cases.hpp"
 

@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "cartan/kernels/manifold/problem.hpp"
-#include "cartan/kernels/manifold/shooting.hpp"
+#include "cartan/methods/manifold/shooting.hpp"
 #include "../lie_group/paper_cases.hpp"
 
 namespace cartan::testing {

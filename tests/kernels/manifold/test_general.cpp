@@ -11,12 +11,12 @@
 
 #include "cartan/kernels/manifold/action.hpp"
 #include "cartan/kernels/manifold/compiled.hpp"  // the erased Lagrangian's compiled instantiations
-#include "cartan/kernels/solve.hpp"     // solvers::detail::continue_in_T on the general family
+#include "cartan/methods/solve.hpp"     // solvers::detail::continue_in_T on the general family
 #include "cartan/manifolds/euclidean.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"
 #include "cartan/mechanics/rigid_body.hpp"
-#include "cartan/kernels/lie_group/solve.hpp"  // the Lie-group solve, instantiated in the library
+#include "cartan/methods/lie_group/solve.hpp"  // the Lie-group solve, instantiated in the library
 #include "general_cases.hpp"
 #include "test_support.hpp"
 

@@ -1,4 +1,4 @@
-// Collocation of the continuous general system (include/cartan/kernels/manifold/collocation.hpp) against
+// Collocation of the continuous general system (include/cartan/methods/manifold/collocation.hpp) against
 // independent results: the Lie-group collocation of the Cartan–Schouten problem, the classical
 // spherical pendulum (RK4), the limit of the order-2 discrete scheme where the frame components
 // vary (nabla R != 0), and energy conservation; and general::solve's use of it.
@@ -10,7 +10,7 @@
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"
 #include "cartan/mechanics/rigid_body.hpp"
-#include "cartan/kernels/lie_group/solve.hpp"  // the Lie-group solve, instantiated in the library
+#include "cartan/methods/lie_group/solve.hpp"  // the Lie-group solve, instantiated in the library
 #include "general_cases.hpp"
 #include "test_support.hpp"
 
@@ -23,7 +23,7 @@ using SO3Manifold = manifolds::GroupManifold<groups::SO3>;
 using cartan::Method;
 
 /// Collocation; with Continuation::T it starts from the order-2 shooting solution when Newton
-/// fails from the geodesic guess on the N-interval mesh (kernels/manifold/solve.hpp).
+/// fails from the geodesic guess on the N-interval mesh (methods/manifold/solve.hpp).
 cartan::SolveOptions collocation_options(double tol,
                                               cartan::Continuation fallback = cartan::Continuation::None) {
   cartan::SolveOptions options;

@@ -5,8 +5,8 @@
 
 #include <random>
 
-#include "cartan/kernels/manifold/shooting.hpp"
 #include "cartan/mechanics/rigid_body.hpp"
+#include "cartan/methods/manifold/shooting.hpp"
 #include "manifolds/manifold_instances.hpp"
 #include "general_cases.hpp"
 

@@ -29,7 +29,7 @@
 #include "cartan/verify/verdict.hpp"
 
 /// The groups on which the library compiles the erased Lagrangian's entry points, one X(G) each
-/// (src/kernels/lie_group/erased_*.cpp).
+/// (src/methods/lie_group/erased_*.cpp).
 #define CARTAN_TRANSPORTED_SHIPPED_GROUPS(X) \
   X(::cartan::groups::SO3)                   \
   X(::cartan::groups::Heisenberg)            \
@@ -37,7 +37,7 @@
   X(::cartan::groups::SE3)
 
 /// The built-in models whose own solve the library compiles, one X(G, L) each
-/// (src/kernels/lie_group/solve_*.cpp; declared `extern template` in solve.hpp, where their definition is
+/// (src/methods/lie_group/solve_*.cpp; declared `extern template` in solve.hpp, where their definition is
 /// visible: a unit that sees the declaration alone cannot instantiate them anyway).
 #define CARTAN_TRANSPORTED_BUILTIN_MODELS(X)                          \
   X(::cartan::groups::SO3, ::cartan::mechanics::RigidBody)            \

@@ -42,7 +42,7 @@ groups::TangentOf<G> geodesic_guess(const TransportedProblem<G, L>& problem) {
   return groups::log_between<G>(problem.g0, problem.gT) / problem.T;
 }
 
-/// The unit of xi on this problem (aux_scale; kernels/lie_group/shooting.hpp's header comment):
+/// The unit of xi on this problem (aux_scale; methods/lie_group/shooting.hpp's header comment):
 /// T |v_ref| |mu_ref|, v_ref the geodesic velocity (or 1/T along the first axis when g0 = gT).
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 double xi_scale(const TransportedProblem<G, L>& problem) {

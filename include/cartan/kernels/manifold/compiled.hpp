@@ -1,7 +1,7 @@
 #pragma once
 // The general solver's entry points as declarations, and the list of what the library compiles of
 // them: what a unit needs to call the library without parsing a solver. Compiled in the library
-// (src/kernels/solve_<manifold>.cpp, one file per manifold, in unity groups: CMakeLists.txt) for the erased Lagrangian
+// (src/methods/solve_<manifold>.cpp, one file per manifold, in unity groups: CMakeLists.txt) for the erased Lagrangian
 // (erased_lagrangian.hpp; `erased(problem)` wraps any problem's) on every shipped manifold: the
 // sphere, the hyperbolic plane, R^2 and R^3 with constant Christoffel symbols, charts of dimension
 // 2 and 3, and SO(3), H3, SE(2), SE(3) with any left-invariant connection. Including this header
@@ -78,7 +78,7 @@ std::vector<ManifoldLagrangianSample<M>> lagrangian_samples(const M& manifold, c
   X(::cartan::manifolds::GroupManifold<::cartan::groups::SE2>)                                           \
   X(::cartan::manifolds::GroupManifold<::cartan::groups::SE3>)
 
-/// `extern template` (declaration) or `template` (definition, in one src/kernels/solve_*.cpp per manifold) of the solve, the
+/// `extern template` (declaration) or `template` (definition, in one src/methods/solve_*.cpp per manifold) of the solve, the
 /// shooting it runs (both entry points), the verifier, the quantities along a solution and the check
 /// of a Lagrangian for the erased Lagrangian on M (and the check's seeded samples on M).
 #define CARTAN_GENERAL_COMPILED(prefix, M)                                                                     \

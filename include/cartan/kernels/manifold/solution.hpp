@@ -76,7 +76,7 @@ struct ManifoldLagrangianSample {
 
 /// The Lie-group shooting's options (order, tolerance, max_iterations, analytic_jacobian: the
 /// tangent-linear sweep of tangent.hpp, no_progress_window, monitor), so that the continuation
-/// path (kernels/lie_group/continuation.hpp) drives both problem families.
+/// path (methods/lie_group/continuation.hpp) drives both problem families.
 using GeneralShootingOptions = ShootingOptions;
 
 template <manifolds::ManifoldWithConnection M>

@@ -1,7 +1,0 @@
-// What the library compiles for the erased Lagrangian on SO(3) (kernels/lie_group/compiled.hpp).
-#include "cartan/kernels/lie_group/along.hpp"
-#include "cartan/kernels/lie_group/solve.hpp"
-#include "cartan/kernels/lie_group/verify.hpp"
-
-CARTAN_TRANSPORTED_COMPILED_ERASED(template, ::cartan::groups::SO3)
-CARTAN_TRANSPORTED_SHOOTING_ERASED(template, ::cartan::groups::SO3)

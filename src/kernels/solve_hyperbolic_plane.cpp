@@ -1,9 +1,0 @@
-// The general solve and verify on the hyperbolic plane for the erased Lagrangian, compiled once
-// (compiled.hpp).
-#include "cartan/kernels/manifold/along.hpp"
-#include "cartan/kernels/manifold/check_lagrangian.hpp"
-#include "cartan/kernels/manifold/shooting.hpp"
-#include "cartan/kernels/manifold/verify.hpp"
-#include "cartan/kernels/solve.hpp"
-
-CARTAN_GENERAL_COMPILED(template, ::cartan::manifolds::HyperbolicPlane)

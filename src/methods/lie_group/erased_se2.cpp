@@ -1,0 +1,7 @@
+// What the library compiles for the erased Lagrangian on SE(2) (kernels/lie_group/compiled.hpp).
+#include "cartan/kernels/lie_group/along.hpp"
+#include "cartan/kernels/lie_group/verify.hpp"
+#include "cartan/methods/lie_group/solve.hpp"
+
+CARTAN_TRANSPORTED_COMPILED_ERASED(template, ::cartan::groups::SE2)
+CARTAN_TRANSPORTED_SHOOTING_ERASED(template, ::cartan::groups::SE2)
