@@ -18,6 +18,7 @@
 #include "cartan/kernels/lie_group/action.hpp"
 #include "cartan/kernels/lie_group/compiled.hpp"
 #include "cartan/kernels/lie_group/scheme.hpp"
+#include "cartan/principle/samples.hpp"
 #include "cartan/mechanics/lagrangian.hpp"
 #include "cartan/transport/disc_exp.hpp"
 
@@ -43,16 +44,14 @@ namespace detail {
 /// true when every sample is finite.
 template <groups::LieGroup G>
 bool check_along(const TransportedTrajectory<G>& x, bool with_mu) {
-  const std::size_t m = x.g.size();
-  if (x.t.size() != m || x.v.size() != m || (with_mu && x.mu.size() != m)) {
-    throw_invalid("along_solution", "trajectory", "(" + std::to_string(x.t.size()) + " times)",
-                  with_mu ? "needs g, v and mu at every time" : "needs g and v at every time");
+  // The one check of samples (principle/samples.hpp): sizes only; non-finite samples make NaNs.
+  const SampleRules rules{.min_times = 0, .check_times = false, .require_finite = false};
+  if (with_mu) {
+    return require_samples(x.t, 0, {sample_column("g", x.g), sample_column("v", x.v), sample_column("mu", x.mu)}, rules,
+                           "along_solution", "trajectory");
   }
-  bool finite = true;
-  for (std::size_t k = 0; k < m; ++k) {
-    finite = finite && std::isfinite(x.t[k]) && x.g[k].allFinite() && x.v[k].allFinite() && (!with_mu || x.mu[k].allFinite());
-  }
-  return finite;
+  return require_samples(x.t, 0, {sample_column("g", x.g), sample_column("v", x.v)}, rules, "along_solution",
+                         "trajectory");
 }
 
 }  // namespace detail

@@ -11,6 +11,7 @@
 #include "cartan/errors.hpp"
 #include "cartan/groups/group.hpp"
 #include "cartan/principle/horizon.hpp"
+#include "cartan/principle/samples.hpp"
 
 namespace cartan::transported {
 
@@ -42,24 +43,19 @@ struct TransportedTrajectory {
     t.push_back(node.t), g.push_back(node.g), v.push_back(node.v), mu.push_back(node.mu), xi.push_back(node.xi);
   }
 
-  /// Throws std::invalid_argument ("<where>: trajectory... = <value> <problem>") unless there are
-  /// at least 2 samples with g, v and xi (and mu when `with_mu`) at every time, those vectors are
-  /// finite, and the times increase strictly from 0 to T (to `time_tolerance` T).
+  /// Throws std::invalid_argument (the one check of samples, principle/samples.hpp: "<where>:
+  /// trajectory... = <value> <problem>") unless there are at least 2 samples with g, v and xi (and
+  /// mu when `with_mu`) at every time, all finite, and the times increase strictly from 0 to T (to
+  /// `time_tolerance` T).
   void validate(double T, std::string_view where, bool with_mu, double time_tolerance) const {
-    const std::size_t m = t.size();
-    if (m < 2) throw_invalid(where, "trajectory.t.size()", std::to_string(m), "must be at least 2");
-    if (g.size() != m || v.size() != m || xi.size() != m || (with_mu && mu.size() != m)) {
-      // Appended, not "(" + std::string: GCC 12's -Wrestrict misreads that pattern once inlined.
-      throw_invalid(where, "trajectory", std::string("(").append(std::to_string(m)).append(" times)"),
-                    with_mu ? "needs g, v, mu and xi at every time" : "needs g, v and xi at every time");
+    const SampleRules rules{.time_tolerance = time_tolerance};
+    if (with_mu) {
+      require_samples(t, T, {sample_column("g", g), sample_column("v", v), sample_column("mu", mu), sample_column("xi", xi)},
+                      rules, where, "trajectory");
+    } else {
+      require_samples(t, T, {sample_column("g", g), sample_column("v", v), sample_column("xi", xi)}, rules, where,
+                      "trajectory");
     }
-    for (std::size_t k = 0; k < m; ++k) {
-      const std::string row = std::string(" (row ").append(std::to_string(k)).append(")");
-      require_finite(v[k], where, "trajectory.v" + row);
-      require_finite(xi[k], where, "trajectory.xi" + row);
-      if (with_mu) require_finite(mu[k], where, "trajectory.mu" + row);
-    }
-    require_sample_times(t, T, time_tolerance, where, "trajectory");
   }
 };
 

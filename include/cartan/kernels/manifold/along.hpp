@@ -18,6 +18,7 @@
 
 #include "cartan/kernels/manifold/action.hpp"
 #include "cartan/kernels/manifold/compiled.hpp"
+#include "cartan/principle/samples.hpp"
 
 namespace cartan::general {
 
@@ -40,10 +41,10 @@ std::vector<manifolds::FrameOf<M>> transported_frames(const GeneralProblem<M, L>
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 void check_along_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x) {
   const std::size_t n = x.t.size();
-  if (x.q.size() != n || x.v.size() != n) {
-    throw_invalid("along_general", "trajectory", "(" + std::to_string(n) + " times)", "needs q and v at every time");
-  }
-  if (n >= 2) require_sample_times(x.t, problem.T, 0.01 / static_cast<double>(n - 1), "along_general", "trajectory");
+  const SampleRules rules{.min_times = 0, .time_tolerance = n >= 2 ? 0.01 / static_cast<double>(n - 1) : 0.0,
+                          .require_finite = false};
+  require_samples(x.t, problem.T, {sample_column("q", x.q), sample_column("v", x.v)}, rules, "along_general",
+                  "trajectory");
 }
 
 /// The frames (x's own, or rebuilt: the header's comment), u, energy and cumulative S_h (0 at the

@@ -22,28 +22,22 @@
 #include "cartan/kernels/manifold/problem.hpp"
 #include "cartan/kernels/manifold/solution.hpp"
 #include "cartan/mechanics/lagrangian.hpp"
+#include "cartan/principle/samples.hpp"
 
 namespace cartan::general {
 
 using ::cartan::SchemeOrder;  // scheme_order.hpp: the vocabulary of both stacks
 
-/// Throws std::invalid_argument naming `what` unless x has times from 0 to the problem's T
-/// (strictly increasing), as many q, frame, v, mu and Xi as times, all finite.
+/// Throws std::invalid_argument naming `what` (the one check of samples, principle/samples.hpp)
+/// unless x has at least 2 times from 0 to the problem's T (strictly increasing), as many q,
+/// frame, v, mu and Xi as times, all finite.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 void validate_trajectory(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x, std::string_view where,
                          std::string_view what) {
-  const std::size_t n = x.t.size();
-  if (n < 2 || x.q.size() != n || x.frame.size() != n || x.v.size() != n || x.mu.size() != n || x.Xi.size() != n) {
-    throw_invalid(where, what, std::to_string(n) + " times",
-                  "needs at least 2 times and q, frame, v, mu, Xi at every time");
-  }
-  require_sample_times(x.t, problem.T, 1e-12, where, what);
-  for (std::size_t k = 0; k < n; ++k) {
-    if (!x.q[k].allFinite() || !x.frame[k].allFinite() || !x.v[k].allFinite() || !x.mu[k].allFinite() ||
-        !x.Xi[k].allFinite()) {
-      throw_invalid(where, what, "entry " + std::to_string(k), "must be finite");
-    }
-  }
+  require_samples(x.t, problem.T,
+                  {sample_column("q", x.q), sample_column("frame", x.frame), sample_column("v", x.v),
+                   sample_column("mu", x.mu), sample_column("Xi", x.Xi)},
+                  SampleRules{}, where, what);
 }
 
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
