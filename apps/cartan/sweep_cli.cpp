@@ -88,7 +88,7 @@ int run_sweep(const CLI::App& command, SweepFlags& flags) {
 }  // namespace
 
 Command add_sweep_command(CLI::App& tool) {
-  auto* sweep = tool.add_subcommand("sweep", "Solve a grid of problems (lambda and/or endpoints) in parallel into one table");
+  auto* sweep = tool.add_subcommand("sweep", "Solve a grid of problems (lambda and/or endpoints; a group model or any space) in parallel into one table");
   sweep->footer(
       "The base problem takes every option of `cartan solve`; each grid point replaces lambda and/or the\n"
       "endpoint (the Cartesian product of the lambda list and the endpoint list), or applies one object of\n"
@@ -97,6 +97,7 @@ Command add_sweep_command(CLI::App& tool) {
       "  cartan sweep --model free-rigid-body --T 50 --N 1000 --a0 -1,-1,-1 --aT 0.9,1,1 --tol 1e-8 --lambda-range 0:1:11\n"
       "  cartan sweep --model oscillator --T 3 --N 300 --a0=-1,-1,-1 --lambdas 0,0.5,1 --aT-list \"1,0,0;0,1,0\" --format csv\n"
       "  cartan sweep --group heisenberg --model oscillator --T 1 --N 200 --gT-list \"1,0.5,0.8;0,1,0\" --jobs 2\n"
+      "  cartan sweep --manifold sphere --q0 1,0,-0.3 --gravity 9.81 --T 1 --N 200 --qT-list \"0,1,-0.5;0,1,0.5\"\n"
       "  cartan sweep --problem base.json --grid points.json --output table.json   # points.json: [{\"lambda\": 0}, {\"T\": 2}]\n"
       "Across machines: each solves one shard, `cartan merge` joins the tables into the unsharded one:\n"
       "  cartan sweep ... --shard 1/3 --format csv --output part1.csv   # points 0, 3, 6, ...\n"
@@ -112,6 +113,8 @@ Command add_sweep_command(CLI::App& tool) {
   sweep->add_option("--aT-list", grid.aT_list, "grid (so3, with --a0): final directions \"x,y,z;x,y,z;...\"");
   sweep->add_option("--gT-list", grid.gT_list,
                     "grid: final elements separated by \";\", each written as --gT (heisenberg: \"a,b,c;a,b,c\"; so3, se2: 9 numbers row-major; se3: 16)");
+  sweep->add_option("--qT-list", grid.qT_list,
+                    "grid (--manifold): final points separated by \";\", each written as --qT (sphere: \"x,y,z;x,y,z\")");
   sweep->add_option("--grid", grid.grid_file,
                     "JSON file: an array of objects of problem keys, each overriding the base problem (instead of the "
                     "grid flags)");

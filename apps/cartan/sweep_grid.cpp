@@ -85,8 +85,21 @@ std::vector<GridPoint> file_points(const ProblemSpec& base, const std::string& p
 
 /// The Cartesian product of the lambda list and the endpoint list (either may be absent).
 std::vector<GridPoint> flag_points(const ProblemSpec& base, const GridFlags& flags) {
-  if (!flags.aT_list.empty() && !flags.gT_list.empty()) {
-    throw_invalid(kGridWhere, "--aT-list/--gT-list", flags.aT_list + " / " + flags.gT_list, "conflict: give one");
+  const int lists = int(!flags.aT_list.empty()) + int(!flags.gT_list.empty()) + int(!flags.qT_list.empty());
+  if (lists > 1) {
+    throw_invalid(kGridWhere, "--aT-list/--gT-list/--qT-list",
+                  flags.aT_list + " / " + flags.gT_list + " / " + flags.qT_list, "conflict: give one");
+  }
+  // Each problem's own endpoint: a group model's final element or direction, a manifold's point.
+  if (is_manifold_problem(base) && lists == 1 && flags.qT_list.empty()) {
+    const bool directions = !flags.aT_list.empty();
+    throw_invalid(kGridWhere, directions ? "--aT-list" : "--gT-list",
+                  quote_input(directions ? flags.aT_list : flags.gT_list),
+                  "is a group model's endpoint; a manifold's final point is --qT: give --qT-list");
+  }
+  if (!is_manifold_problem(base) && !flags.qT_list.empty()) {
+    throw_invalid(kGridWhere, "--qT-list", quote_input(flags.qT_list),
+                  "is a manifold's final point (with --manifold); a group model's is --gT-list or --aT-list");
   }
   std::vector<double> lambdas;
   if (!flags.lambdas.empty()) lambdas = io::parse_list(flags.lambdas, "lambdas");
@@ -94,13 +107,15 @@ std::vector<GridPoint> flag_points(const ProblemSpec& base, const GridFlags& fla
     const auto range = lambda_range(flags.lambda_range);
     lambdas.insert(lambdas.end(), range.begin(), range.end());
   }
-  const bool directions = !flags.aT_list.empty();
-  const auto endpoints = directions ? endpoint_list(flags.aT_list, "aT-list")
-                                    : !flags.gT_list.empty() ? endpoint_list(flags.gT_list, "gT-list")
-                                                             : std::vector<std::vector<double>>{};
+  const bool directions = !flags.aT_list.empty(), points_of_manifold = !flags.qT_list.empty();
+  const auto endpoints = directions           ? endpoint_list(flags.aT_list, "aT-list")
+                         : points_of_manifold ? endpoint_list(flags.qT_list, "qT-list")
+                         : !flags.gT_list.empty() ? endpoint_list(flags.gT_list, "gT-list")
+                                                  : std::vector<std::vector<double>>{};
   if (lambdas.empty() && endpoints.empty()) {
     throw std::invalid_argument(
-        "cartan sweep: no grid: give --lambdas, --lambda-range, --aT-list, --gT-list or --grid (see cartan sweep --help)");
+        "cartan sweep: no grid: give --lambdas, --lambda-range, --aT-list, --gT-list, --qT-list or --grid (see cartan "
+        "sweep --help)");
   }
   const std::size_t n_lambda = std::max<std::size_t>(lambdas.size(), 1);
   const std::size_t n_end = std::max<std::size_t>(endpoints.size(), 1);
@@ -116,7 +131,7 @@ std::vector<GridPoint> flag_points(const ProblemSpec& base, const GridFlags& fla
         point.spec.lambda = lambdas[i];
         point.spec.given.emplace_back("lambda");  // so that validate refuses it on another connection
       }
-      if (!endpoints.empty()) (directions ? point.spec.aT : point.spec.gT) = endpoints[j];
+      if (!endpoints.empty()) (directions ? point.spec.aT : points_of_manifold ? point.spec.qT : point.spec.gT) = endpoints[j];
       points.push_back(std::move(point));
     }
   }
@@ -155,10 +170,10 @@ std::invalid_argument retitled(const std::invalid_argument& error, const std::st
 
 std::vector<GridPoint> build_grid(const ProblemSpec& base, const GridFlags& flags) {
   const bool from_flags = !(flags.lambdas.empty() && flags.lambda_range.empty() && flags.aT_list.empty() &&
-                            flags.gT_list.empty());
+                            flags.gT_list.empty() && flags.qT_list.empty());
   if (from_flags && !flags.grid_file.empty()) {
     throw_invalid(kGridWhere, "--grid", flags.grid_file,
-                  "conflicts with --lambdas/--lambda-range/--aT-list/--gT-list (give the whole grid in the file)");
+                  "conflicts with --lambdas/--lambda-range/--aT-list/--gT-list/--qT-list (give the whole grid in the file)");
   }
   std::vector<GridPoint> points;
   try {
@@ -167,10 +182,6 @@ std::vector<GridPoint> build_grid(const ProblemSpec& base, const GridFlags& flag
     throw retitled(e, kGridWhere);
   }
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (is_manifold_problem(points[i].spec)) {
-      throw_invalid(kGridWhere, "manifold", quote_input(points[i].spec.manifold),
-                    "problems are solved one at a time (cartan solve --manifold); sweeps cover problems on a group");
-    }
     try {
       validate(points[i].spec);
     } catch (const std::invalid_argument& e) {

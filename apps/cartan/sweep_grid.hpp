@@ -17,6 +17,7 @@ struct GridFlags {
   std::string lambda_range;  ///< "START:STOP:COUNT", COUNT evenly spaced values including both ends
   std::string aT_list;       ///< so3 directions "x,y,z;x,y,z"
   std::string gT_list;       ///< final elements separated by ";", each as --gT (models/catalogue.hpp)
+  std::string qT_list;       ///< a manifold's final points separated by ";", each as --qT
   std::string grid_file;     ///< JSON array of objects of problem keys
 };
 

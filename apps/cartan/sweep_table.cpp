@@ -15,8 +15,14 @@ nlohmann::json row_head(std::size_t index, const GridPoint& point) {
   // lambda is Cartan–Schouten's parameter: null under another connection, which the row names.
   nlohmann::json row = {{"index", index}, {"lambda", is_general_connection(s) ? nlohmann::json() : nlohmann::json(s.lambda)}};
   if (is_general_connection(s)) row["connection"] = s.connection;
-  if (s.aT.empty()) row["gT"] = s.gT;
-  else row["aT"] = s.aT;
+  if (is_manifold_problem(s)) {
+    row["manifold"] = s.manifold;
+    row["qT"] = s.qT;
+  } else if (s.aT.empty()) {
+    row["gT"] = s.gT;
+  } else {
+    row["aT"] = s.aT;
+  }
   if (!point.overrides.empty()) row["overrides"] = point.overrides;
   return row;
 }
@@ -65,7 +71,7 @@ nlohmann::json result_row(std::size_t index, const GridPoint& point, const nlohm
   }
   row["v0"] = result.at("v").at(0);
   if (trajectories) {
-    for (const char* key : {"t", "g", "v"}) row[key] = result.at(key);
+    for (const char* key : {"t", result.contains("q") ? "q" : "g", "v"}) row[key] = result.at(key);
   }
   return row;
 }
@@ -107,7 +113,7 @@ std::string table_csv(const std::vector<nlohmann::json>& rows) {
   for (std::size_t i = 1; i <= width; ++i) out << ",v0_" << i;
   out << '\n';
   for (const auto& row : rows) {
-    const char* endpoint = row.contains("aT") ? "aT" : "gT";
+    const char* endpoint = row.contains("aT") ? "aT" : row.contains("qT") ? "qT" : "gT";
     const auto& iterations = row.at("iterations");
     const auto& v0 = row.at("v0");
     out << csv_field(row.at("index")) << ',' << csv_field(row.at("lambda")) << ',' << endpoint << ','

@@ -221,11 +221,6 @@ def test_every_space_of_the_catalogue_solves_and_verifies(tmp_path):
     assert r.returncode == 2 and "q0 = 0,0,0,0 must have 2 or 3 numbers" in r.stderr, r.stderr
 
 
-def test_sweep_says_it_does_not_take_manifold_problems():
-    r = run("sweep", "--manifold", "sphere", "--q0", Q0, "--qT", QT, "--lambdas", "0")
-    assert r.returncode == 2 and "manifold" in r.stderr
-
-
 # ---- --connection on groups: the general solver on a Lie group -----------------------------------
 
 FREE_BODY = ["--model", "free-rigid-body", "--a0", "-1,-1,-1", "--aT", "0.9,1,1", "--T", "5"]

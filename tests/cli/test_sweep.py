@@ -77,6 +77,53 @@ def test_rows_equal_cartan_solve_heisenberg_gT_list_with_trajectories():
         assert len(row["t"]) == 201
 
 
+# A manifold's problems sweep as a group model's do (the grid's endpoint is --qT): the spherical
+# pendulum at two final points, and SO(3) as a manifold with Cartan-Schouten connections.
+SPHERE_BASE = ["--manifold", "sphere", "--q0", "1,0,-0.3", "--gravity", "9.81", "--T", "1", "--N", "100"]
+SO3_MANIFOLD_BASE = ["--manifold", "so3", "--qT", "0.36,-0.48,0.8,0.8,0.6,0,-0.48,0.64,0.6", "--mass", "2,3,4",
+                     "--T", "1", "--N", "100"]
+
+
+def test_rows_equal_cartan_solve_on_a_manifold_qT_list_with_trajectories():
+    table = sweep(*SPHERE_BASE, "--qT-list", "0,1,-0.5;0,1,0.5", "--trajectories", "--jobs", "2", "--quiet")
+    assert table["points"] == 2 and table["converged"] == 2
+    for row, qT in zip(table["rows"], [[0, 1, -0.5], [0, 1, 0.5]]):
+        assert row["manifold"] == "sphere" and row["lambda"] is None and row["connection"] == "levi-civita"
+        unit = [x / sum(y * y for y in qT) ** 0.5 for x in qT]
+        assert row["qT"] == pytest.approx(unit, abs=1e-15)  # the point as the solve took it: on the sphere
+        solved = solve(*SPHERE_BASE, "--qT", numbers(qT))
+        assert_row_is_solve(row, solved)
+        for key in ["t", "q", "v"]:
+            assert row[key] == solved[key], key
+        assert "g" not in row and len(row["t"]) == 101
+
+
+def test_lambdas_sweep_a_cartan_schouten_manifold_like_the_group_model():
+    table = sweep(*SO3_MANIFOLD_BASE, "--connection", "cartan-schouten", "--lambdas", "0,0.5,1", "--quiet")
+    assert [row["lambda"] for row in table["rows"]] == [0, 0.5, 1] and table["converged"] == 3
+    for row in table["rows"]:
+        assert row["manifold"] == "so3" and "connection" not in row
+        assert_row_is_solve(row, solve(*SO3_MANIFOLD_BASE, "--connection", "cartan-schouten", "--lambda", repr(row["lambda"])))
+    csv_text = run("sweep", *SO3_MANIFOLD_BASE, "--lambdas", "0,1", "--quiet", "--format", "csv").stdout
+    lines = list(csv.DictReader(io.StringIO(csv_text)))
+    assert [line["endpoint_key"] for line in lines] == ["qT", "qT"]
+    assert [float(x) for x in lines[0]["endpoint"].split()] == pytest.approx([0.36, -0.48, 0.8, 0.8, 0.6, 0, -0.48, 0.64, 0.6], abs=1e-15)
+
+
+@pytest.mark.parametrize("args, message", [
+    ([*SPHERE_BASE, "--gT-list", "0,1,0"], "--gT-list = \"0,1,0\" is a group model's endpoint; a manifold's final point is --qT"),
+    ([*SPHERE_BASE, "--aT-list", "0,1,0"], "--aT-list = \"0,1,0\" is a group model's endpoint"),
+    ([*SO3_BASE, "--qT-list", "0,1,0"], "--qT-list = \"0,1,0\" is a manifold's final point (with --manifold)"),
+    ([*SPHERE_BASE, "--qT-list", "0,1,0", "--gT-list", "0,1,0"], "conflict: give one"),
+    ([*SPHERE_BASE, "--qT-list", "0,1,0;1,0,0,0"], "grid point 1: "),
+    ([*SPHERE_BASE, "--qT-list", "0,1,0", "--lambdas", "0.5"], "grid point 0: "),  # lambda is Cartan-Schouten's
+])
+def test_bad_manifold_grids_exit_2_naming_the_value(args, message):
+    result = run("sweep", *args)
+    assert result.returncode == 2 and result.stdout == "", result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1 and message in result.stderr, result.stderr
+
+
 @pytest.mark.parametrize("problem", [
     [*SO3_BASE, *GRID],
     [*SO3_BASE, "--method", "two-level", "--lambdas", "0,0.5,1", "--aT", "1,0.2,0.1"],
