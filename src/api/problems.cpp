@@ -33,18 +33,7 @@ void require_matrix_numbers(std::string_view where, const char* name, const std:
   require_numbers(where, name, x, x.size(), "");
 }
 
-/// A matrix of n numbers (its diagonal) or n^2 (row-major) as an n x n matrix.
-Eigen::MatrixXd square_matrix(const std::vector<double>& numbers, Eigen::Index n) {
-  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
-  const bool diagonal = numbers.size() == static_cast<std::size_t>(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    for (Eigen::Index j = 0; j < n; ++j) {
-      if (!diagonal) m(i, j) = numbers[static_cast<std::size_t>(i * n + j)];
-    }
-    if (diagonal) m(i, i) = numbers[static_cast<std::size_t>(i)];
-  }
-  return m;
-}
+using models::square_matrix;
 
 /// A metric or a mass, given as n or n^2 finite numbers (require_matrix_numbers): symmetric (to
 /// 1e-12 of its largest entry) and positive definite.

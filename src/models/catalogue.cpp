@@ -20,13 +20,6 @@ std::string rotation_problem(const Eigen::MatrixXd& r) {
          format_value(kElementTolerance) + ")";
 }
 
-/// The numbers as a size x size matrix, row-major.
-Eigen::MatrixXd square(const std::vector<double>& numbers, Eigen::Index size) {
-  Eigen::MatrixXd m(size, size);
-  for (Eigen::Index i = 0; i < size * size; ++i) m(i / size, i % size) = numbers[static_cast<std::size_t>(i)];
-  return m;
-}
-
 template <class Table>
 void check_element(const std::vector<double>& numbers, std::string_view where, const std::string& name) {
   using G = typename Table::Group;
@@ -35,7 +28,7 @@ void check_element(const std::vector<double>& numbers, std::string_view where, c
   }
   if constexpr (!std::is_same_v<G, groups::Heisenberg>) {
     const Eigen::Index size = G::Element::RowsAtCompileTime;
-    const Eigen::MatrixXd m = square(numbers, size);
+    const Eigen::MatrixXd m = square_matrix(numbers, size);  // size^2 numbers: row-major
     const bool motion = !std::is_same_v<G, groups::SO3>;  // se2, se3: [[R, t], [0, 1]]
     const Eigen::Index k = motion ? size - 1 : size;
     if (const std::string problem = rotation_problem(m.topLeftCorner(k, k)); !problem.empty()) {
@@ -77,6 +70,16 @@ std::string joined(const std::vector<std::string_view>& names) {
 }
 
 }  // namespace
+
+Eigen::MatrixXd square_matrix(const std::vector<double>& numbers, Eigen::Index n) {
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
+  if (numbers.size() == static_cast<std::size_t>(n)) {
+    for (Eigen::Index i = 0; i < n; ++i) m(i, i) = numbers[static_cast<std::size_t>(i)];
+    return m;
+  }
+  for (Eigen::Index i = 0; i < n * n; ++i) m(i / n, i % n) = numbers[static_cast<std::size_t>(i)];
+  return m;
+}
 
 const std::vector<ModelInfo>& model_infos() {
   static const std::vector<ModelInfo> infos =

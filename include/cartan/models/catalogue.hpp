@@ -138,20 +138,16 @@ std::vector<double> element_numbers(const Eigen::MatrixBase<Derived>& x) {
 template <groups::LieGroup G>
 groups::ElementOf<G> element_of(const std::vector<double>& numbers);
 
-/// The inertia as a matrix: n numbers are its diagonal, n^2 numbers the full matrix row-major.
-/// Sizes are checked by the CLI (validate, read_result: apps/cartan/problem_spec.hpp) and Python; the library's model checks
-/// symmetry, finiteness and definiteness when it is built.
+/// An n x n matrix written as n numbers (its diagonal) or n^2 (the matrix, row-major): an inertia,
+/// a mass, a metric. Sizes are checked by the CLI (validate, read_result: apps/cartan/problem_spec.hpp),
+/// the api and Python; the library's model checks symmetry, finiteness and definiteness when it is
+/// built.
+Eigen::MatrixXd square_matrix(const std::vector<double>& numbers, Eigen::Index n);
+
+/// The inertia as a matrix (square_matrix).
 template <int n>
 Eigen::Matrix<double, n, n> inertia_matrix(const std::vector<double>& numbers) {
-  Eigen::Matrix<double, n, n> m = Eigen::Matrix<double, n, n>::Zero();
-  const bool diagonal = numbers.size() == static_cast<std::size_t>(n);
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      if (!diagonal) m(i, j) = numbers[static_cast<std::size_t>(i * n + j)];
-    }
-    if (diagonal) m(i, i) = numbers[static_cast<std::size_t>(i)];
-  }
-  return m;
+  return square_matrix(numbers, n);
 }
 
 /// Rethrows the library's rejection `error` of the inertia `matrix` (given as `numbers`) as
