@@ -113,7 +113,10 @@ class GroupManifold {
   Vector difference(const Point& a, const Point& b) const { return groups::log_between<G>(a, b); }
   /// The derivative of the stored element along g exp(s x) at s = 0: d(L_g)_e x.
   Point point_velocity(const Point& g, const Vector& x) const { return G::left_translate(g, x); }
+  /// exp(-alpha(x, .)); for Cartan–Schouten's alpha = lambda ad, exp(-lambda ad_x) = Ad(exp(-lambda x)):
+  /// the group's closed forms (Rodrigues on SO(3)) instead of a matrix exponential.
   Operator transport_along_step(const Point&, const Vector& x) const {
+    if (lambda_) return G::Ad(G::exp(Vector(-*lambda_ * x)));
     return Operator(-connection_.nabla_operator(x)).exp();
   }
   /// (g exp(e a)) exp(x) = g exp(x) exp(e Ad(exp(-x)) a), exp(x + e b) = exp(x) exp(e J_r(x) b).
