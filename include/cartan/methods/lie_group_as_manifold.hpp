@@ -2,9 +2,10 @@
 // The Lie-group kernel (kernels/lie_group/) presented in the manifold kernel's vocabulary
 // (kernels/manifold/): general::solve's shooting kernel on a Lie group with the Cartan–Schouten
 // connection (docs/design/lie-kernel.md), chosen in methods/solve.hpp. Neither kernel includes
-// this header nor the other kernel; it includes both. The general problem on GroupManifold<G>::cartan_schouten(lambda),
-// with frame0 the identity (the default), is the paper's problem (kernels/lie_group/problem.hpp) with the
-// same lambda, T, N and endpoints, and the same Lagrangian of the transported velocity v
+// this header nor the other kernel; it includes both.
+// The general problem on GroupManifold<G>::cartan_schouten(lambda), with frame0 the identity (the
+// default), is the paper's problem (kernels/lie_group/problem.hpp) with the same lambda, T, N and
+// endpoints, and the same Lagrangian of the transported velocity v
 // (LieLagrangian below, the inverse of OnGroupManifold). The two schemes are then the same
 // discrete equations (docs/general-connections.md#reduction; design §2.1), with
 //   E_k = P_k = Ad(h_k)  and  xi = C(Xi),  C(Xi)_i = sum_{k,n} Xi(k, n) [e_k, e_i]^n,

@@ -32,7 +32,7 @@ GeneralSolution<M> solve(const GeneralProblem<M, L>& problem, const SolveOptions
   options.validate();
   bool group_methods = false;  // multiple shooting, two-level, continuation in lambda
   if constexpr (kIsGroupManifold<M>) {
-    group_methods = lie_kernel_available(problem) && transported::kCompiledGroup<typename M::Group>;
+    group_methods = lie_kernel_available(problem) && detail::LieKernel<typename M::Group, L>::kHasGroupMethods;
   }
   detail::check_request(problem, options, guess, group_methods);
   if constexpr (kIsGroupManifold<M>) {

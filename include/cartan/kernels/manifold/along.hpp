@@ -37,14 +37,15 @@ std::vector<manifolds::FrameOf<M>> transported_frames(const GeneralProblem<M, L>
 }
 
 /// Throws std::invalid_argument "along_general: ..." unless q and v have one entry per time and
-/// the times increase from 0 to T (require_sample_times, to a hundredth of a step).
+/// the times increase from 0 to T (require_sample_times, to a hundredth of a step); returns whether
+/// every time, q and v is finite.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-void check_along_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x) {
+bool check_along_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x) {
   const std::size_t n = x.t.size();
   const SampleRules rules{.min_times = 0, .time_tolerance = n >= 2 ? 0.01 / static_cast<double>(n - 1) : 0.0,
                           .require_finite = false};
-  require_samples(x.t, problem.T, {sample_column("q", x.q), sample_column("v", x.v)}, rules, "along_general",
-                  "trajectory");
+  return require_samples(x.t, problem.T, {sample_column("q", x.q), sample_column("v", x.v)}, rules,
+                         "along_general", "trajectory");
 }
 
 /// The frames (x's own, or rebuilt: the header's comment), u, energy and cumulative S_h (0 at the
@@ -53,12 +54,10 @@ void check_along_general(const GeneralProblem<M, L>& problem, const GeneralTraje
 /// and where a sample is not finite energy and action are NaN.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 GeneralAlong<M> along_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x) {
-  check_along_general(problem, x);
+  const bool finite = check_along_general(problem, x);
   GeneralAlong<M> out;
   const std::size_t n = x.t.size();
   if (n < 2) return out;
-  bool finite = true;
-  for (std::size_t k = 0; k < n; ++k) finite = finite && std::isfinite(x.t[k]) && x.q[k].allFinite() && x.v[k].allFinite();
   if (!finite) {
     out.energy.assign(n, std::numeric_limits<double>::quiet_NaN());
     out.action.assign(n, std::numeric_limits<double>::quiet_NaN());

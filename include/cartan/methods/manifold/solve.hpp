@@ -160,8 +160,7 @@ class StrategyKernel final : public solvers::StrategyKernel {
   bool has_collocation() const override { return true; }
   bool has_multiple_shooting() const override { return Kernel::kHasGroupMethods; }
   /// A kernel with the group methods says its own (the Lie-group solve's, so that Auto takes the
-  /// same path there). The
-  /// general kernel's Levenberg–Marquardt often stalls 6 iterations before it descends: on the
+  /// same path there). The general kernel's Levenberg–Marquardt often stalls 6 iterations before it descends: on the
   /// sphere (golden sphere_auto) a window of 6 sends it to continuation in T, 80 sweeps against
   /// 28 from the guess with 8.
   int first_shooting_window() const override {
@@ -242,7 +241,7 @@ class StrategyKernel final : public solvers::StrategyKernel {
 };
 
 /// The methods of solve (below) after its checks, under the options' deadline, on `kernel`
-/// (GeneralKernel above, or another kernel in this kernel's vocabulary) as StrategyKernel above offers them:
+/// (GeneralKernel above, or another kernel in this kernel's vocabulary) as StrategyKernel offers them:
 /// every method's choice is the compiled solvers::run_method's (Auto the default strategy,
 /// Shooting from the guess, a guess Xi0 entering as `auxiliary(Xi0)`, or continued in T or in
 /// lambda); `take` makes the returned solution a GeneralSolution<M>.
