@@ -370,8 +370,7 @@ general::ErasedLagrangian<M> request_lagrangian(const M&, const GeneralRequest& 
       if (!r.potential.is_none()) {
         throw_invalid(kWhere, "potential", repr_of(r.potential), "and gravity exclude each other");
       }
-      return general::ErasedLagrangian<M>(
-          general::KineticPotential<M>::with_linear_potential(inertia, Vector(G * Vector::Unit(Vector::RowsAtCompileTime - 1))));
+      return general::erased_particle_in_linear_potential<M>(inertia, Vector(G * Vector::Unit(Vector::RowsAtCompileTime - 1)));
     }
   }
   if (r.potential.is_none() != r.potential_gradient.is_none()) {
@@ -380,13 +379,13 @@ general::ErasedLagrangian<M> request_lagrangian(const M&, const GeneralRequest& 
                   has_v ? "must be given with potential (both or neither)"
                         : "must be given with potential_gradient (both or neither)");
   }
-  if (r.potential.is_none()) return general::ErasedLagrangian<M>(general::KineticPotential<M>(inertia));
+  if (r.potential.is_none()) return general::erased_particle<M>(inertia);
   for (const auto& [name, fn] : {std::pair<const char*, const py::object*>{"potential", &r.potential},
                                  {"potential_gradient", &r.potential_gradient}}) {
     if (!PyCallable_Check(fn->ptr())) throw_invalid(kWhere, name, repr_of(*fn), "is not callable");
   }
   python = true;
-  typename general::KineticPotential<M>::Potential potential = [state, fn = r.potential](const Point& q) {
+  general::ParticlePotential<M> potential = [state, fn = r.potential](const Point& q) {
     return guarded_callback(*state, "potential", [&] {
       const double value = FromPython<double>::convert(fn(to_numpy(q)), "potential");
       if (!std::isfinite(value) && q.allFinite()) {
@@ -395,7 +394,7 @@ general::ErasedLagrangian<M> request_lagrangian(const M&, const GeneralRequest& 
       return value;
     });
   };
-  typename general::KineticPotential<M>::PotentialGradient gradient = [state, fn = r.potential_gradient](const Point& q) {
+  general::ParticleGradient<M> gradient = [state, fn = r.potential_gradient](const Point& q) {
     return guarded_callback(*state, "potential_gradient", [&] {
       const Vector value = FromPython<Vector>::convert(fn(to_numpy(q)), "potential_gradient");
       if (!value.allFinite() && q.allFinite()) {
@@ -404,7 +403,7 @@ general::ErasedLagrangian<M> request_lagrangian(const M&, const GeneralRequest& 
       return value;
     });
   };
-  return general::ErasedLagrangian<M>(general::KineticPotential<M>(inertia, std::move(potential), std::move(gradient)));
+  return general::erased_particle<M>(inertia, std::move(potential), std::move(gradient));
 }
 
 /// Runs a solve or check f() on a manifold whose geometry may call Python (`chart` non-null, with

@@ -275,16 +275,14 @@ general::ErasedProblem<M> manifold_problem(const ManifoldProblem& p, const Guess
     throw_invalid(where, "xi0", excerpt(guess.xi0),
                   "is a guess of a group model's xi (a problem on a group), not of a manifold problem's (give v0)");
   }
-  using Particle = general::KineticPotential<M>;
   const ComponentMatrixOf<M> A = mass;
-  Particle particle(A);
+  general::ErasedLagrangian<M> particle = general::erased_particle<M>(A);
   if constexpr (!requires { typename M::Group; }) {
     PointOf<M> c = PointOf<M>::Zero();
     c[c.size() - 1] = p.gravity;
-    if (p.gravity != 0) particle = Particle::with_linear_potential(A, c);
+    if (p.gravity != 0) particle = general::erased_particle_in_linear_potential<M>(A, c);
   }
-  general::ErasedProblem<M> out{make_manifold<M>(p, connection, mass), general::ErasedLagrangian<M>(particle), p.T, p.N, q0, qT,
-                                frame0};
+  general::ErasedProblem<M> out{make_manifold<M>(p, connection, mass), std::move(particle), p.T, p.N, q0, qT, frame0};
   validate_for(out, where);
   return out;
 }

@@ -2,6 +2,7 @@
 // (compiled.hpp).
 #include "cartan/kernels/manifold/along.hpp"
 #include "cartan/kernels/manifold/check_lagrangian.hpp"
+#include "cartan/kernels/manifold/particle.hpp"
 #include "cartan/kernels/manifold/verify.hpp"
 #include "cartan/methods/manifold/shooting.hpp"
 #include "cartan/methods/solve.hpp"

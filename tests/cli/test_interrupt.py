@@ -165,9 +165,12 @@ def test_merge_interrupted_at_any_moment_leaves_whole_output_or_none(tmp_path):
 
 
 def test_time_limit_stops_the_solve_with_its_status(tmp_path):
+    # N = 4e5: about 11 s of solving, and a written iterate of 0.14 GB (LONG_SOLVE's 2e6 steps
+    # wrote 0.68 GB, 5 s of CPU spent on the file alone).
     out = tmp_path / "r.json"
     started = time.monotonic()
-    result = run("solve", *LONG_SOLVE, "--time-limit", "0.5", "--output", str(out))
+    timed = [*LONG_SOLVE[:LONG_SOLVE.index("--N") + 1], "400000", *LONG_SOLVE[LONG_SOLVE.index("--N") + 2:]]
+    result = run("solve", *timed, "--time-limit", "0.5", "--output", str(out))
     assert result.returncode == 1, result.stderr  # a failure, whose result is written
     d = json.loads(out.read_text())
     assert d["status"] == "time-limit" and "time limit of 0.5 s reached" in d["message"]

@@ -11,6 +11,8 @@
 // (solve.hpp, shooting.hpp, verify.hpp) for the fully typed instantiation. The definition headers
 // include this one, so the declarations (with the default arguments) are written once.
 
+#include <functional>
+
 #include "cartan/groups/heisenberg.hpp"
 #include "cartan/groups/se2.hpp"
 #include "cartan/groups/se3.hpp"
@@ -28,6 +30,23 @@
 #include "cartan/verify/verdict.hpp"
 
 namespace cartan::general {
+
+/// The potential of a particle, V(q), and its ambient gradient (KineticPotential, lagrangian.hpp).
+template <manifolds::ManifoldWithConnection M>
+using ParticlePotential = std::function<double(const manifolds::PointOf<M>&)>;
+template <manifolds::ManifoldWithConnection M>
+using ParticleGradient = std::function<manifolds::VectorOf<M>(const manifolds::PointOf<M>&)>;
+
+/// The particle l = 1/2 v^T A v - V(q) (KineticPotential: A symmetric positive definite in frame
+/// components, V and its gradient both or neither) behind the erased Lagrangian; with V = c . q for
+/// the second, where points are vectors (else it throws std::invalid_argument). Compiled in the library (particle.hpp), so that a caller does not compile the
+/// particle's callbacks. Throws std::invalid_argument as KineticPotential does.
+template <manifolds::ManifoldWithConnection M>
+ErasedLagrangian<M> erased_particle(const manifolds::ComponentMatrixOf<M>& inertia, ParticlePotential<M> potential = {},
+                                    ParticleGradient<M> gradient = {});
+template <manifolds::ManifoldWithConnection M>
+ErasedLagrangian<M> erased_particle_in_linear_potential(const manifolds::ComponentMatrixOf<M>& inertia,
+                                                        const manifolds::VectorOf<M>& c);
 
 /// Solves the general problem as `options` say (solve.hpp). Throws std::invalid_argument for an
 /// invalid problem or options, or a method this problem family does not have; numerical failure is
@@ -102,7 +121,12 @@ std::vector<ManifoldLagrangianSample<M>> lagrangian_samples(const M& manifold, c
       const M&, const ::cartan::general::ErasedLagrangian<M>&,                                                 \
       const std::vector<::cartan::general::ManifoldLagrangianSample<M>>&);                                      \
   prefix std::vector<::cartan::general::ManifoldLagrangianSample<M>> cartan::general::lagrangian_samples(      \
-      const M&, const ::cartan::manifolds::PointOf<M>&, const ::cartan::mechanics::CheckLagrangianOptions&);
+      const M&, const ::cartan::manifolds::PointOf<M>&, const ::cartan::mechanics::CheckLagrangianOptions&);      \
+  prefix ::cartan::general::ErasedLagrangian<M> cartan::general::erased_particle(                              \
+      const ::cartan::manifolds::ComponentMatrixOf<M>&, ::cartan::general::ParticlePotential<M>,               \
+      ::cartan::general::ParticleGradient<M>);                                                                 \
+  prefix ::cartan::general::ErasedLagrangian<M> cartan::general::erased_particle_in_linear_potential(          \
+      const ::cartan::manifolds::ComponentMatrixOf<M>&, const ::cartan::manifolds::VectorOf<M>&);
 
 #define CARTAN_GENERAL_EXTERN(M) CARTAN_GENERAL_COMPILED(extern template, M)
 CARTAN_GENERAL_SHIPPED_MANIFOLDS(CARTAN_GENERAL_EXTERN)
