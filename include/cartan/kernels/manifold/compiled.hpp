@@ -12,6 +12,8 @@
 // include this one, so the declarations (with the default arguments) are written once.
 
 #include <functional>
+#include <optional>
+#include <string>
 
 #include "cartan/groups/heisenberg.hpp"
 #include "cartan/groups/se2.hpp"
@@ -47,6 +49,21 @@ ErasedLagrangian<M> erased_particle(const manifolds::ComponentMatrixOf<M>& inert
 template <manifolds::ManifoldWithConnection M>
 ErasedLagrangian<M> erased_particle_in_linear_potential(const manifolds::ComponentMatrixOf<M>& inertia,
                                                         const manifolds::VectorOf<M>& c);
+
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+class GeneralScheme;
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+class GeneralSchemeTangent;
+
+/// The N steps of the scheme from (v0, Xi0) (methods/manifold/shooting.hpp, where it is
+/// documented): the last node, or nothing with `failure` set.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+std::optional<GeneralNode<M>> general_sweep(const GeneralScheme<M, L>& scheme, const manifolds::ComponentsOf<M>& v0,
+                                            const manifolds::ComponentMatrixOf<M>& Xi0, std::string& failure,
+                                            GeneralTrajectory<M>* trajectory = nullptr,
+                                            const GeneralSchemeTangent<M, L>* tangent = nullptr,
+                                            Eigen::MatrixXd* jacobian = nullptr, const SolveMonitor* monitor = nullptr,
+                                            double after_stop = -1);
 
 /// Solves the general problem as `options` say (solve.hpp). Throws std::invalid_argument for an
 /// invalid problem or options, or a method this problem family does not have; numerical failure is
@@ -122,6 +139,12 @@ std::vector<ManifoldLagrangianSample<M>> lagrangian_samples(const M& manifold, c
       const std::vector<::cartan::general::ManifoldLagrangianSample<M>>&);                                      \
   prefix std::vector<::cartan::general::ManifoldLagrangianSample<M>> cartan::general::lagrangian_samples(      \
       const M&, const ::cartan::manifolds::PointOf<M>&, const ::cartan::mechanics::CheckLagrangianOptions&);      \
+  prefix std::optional<::cartan::general::GeneralNode<M>> cartan::general::general_sweep(                       \
+      const ::cartan::general::GeneralScheme<M, ::cartan::general::ErasedLagrangian<M>>&,                      \
+      const ::cartan::manifolds::ComponentsOf<M>&, const ::cartan::manifolds::ComponentMatrixOf<M>&,           \
+      std::string&, ::cartan::general::GeneralTrajectory<M>*,                                                  \
+      const ::cartan::general::GeneralSchemeTangent<M, ::cartan::general::ErasedLagrangian<M>>*,               \
+      Eigen::MatrixXd*, const ::cartan::SolveMonitor*, double);                                                \
   prefix ::cartan::general::ErasedLagrangian<M> cartan::general::erased_particle(                              \
       const ::cartan::manifolds::ComponentMatrixOf<M>&, ::cartan::general::ParticlePotential<M>,               \
       ::cartan::general::ParticleGradient<M>);                                                                 \

@@ -35,10 +35,8 @@ namespace cartan::general {
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 std::optional<GeneralNode<M>> general_sweep(const GeneralScheme<M, L>& scheme, const manifolds::ComponentsOf<M>& v0,
                                             const manifolds::ComponentMatrixOf<M>& Xi0, std::string& failure,
-                                            GeneralTrajectory<M>* trajectory = nullptr,
-                                            const GeneralSchemeTangent<M, L>* tangent = nullptr,
-                                            Eigen::MatrixXd* jacobian = nullptr, const SolveMonitor* monitor = nullptr,
-                                            double after_stop = -1) {
+                                            GeneralTrajectory<M>* trajectory, const GeneralSchemeTangent<M, L>* tangent,
+                                            Eigen::MatrixXd* jacobian, const SolveMonitor* monitor, double after_stop) {
   constexpr int m = M::kDim;
   const auto begin = std::chrono::steady_clock::now();
   try {
