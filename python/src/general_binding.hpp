@@ -330,7 +330,7 @@ struct GeneralRequest : OptionWords {
   py::object guess = py::none();
 };
 
-inline constexpr const char* kWhere = "cartan.solve_general";
+inline constexpr const char* kWhere = "cartan.solve";
 
 /// The spaces whose points are vectors with a vertical last axis, where gravity V = G q[last]
 /// applies (api/spaces.hpp, SpaceInfo::gravity): the quadrics and Euclidean space.
