@@ -276,13 +276,17 @@ general::ErasedProblem<M> manifold_problem(const ManifoldProblem& p, const Guess
                   "is a guess of a group model's xi (a problem on a group), not of a manifold problem's (give v0)");
   }
   const ComponentMatrixOf<M> A = mass;
-  general::ErasedLagrangian<M> particle = general::erased_particle<M>(A);
-  if constexpr (!requires { typename M::Group; }) {
-    PointOf<M> c = PointOf<M>::Zero();
-    c[c.size() - 1] = p.gravity;
-    if (p.gravity != 0) particle = general::erased_particle_in_linear_potential<M>(A, c);
-  }
-  general::ErasedProblem<M> out{make_manifold<M>(p, connection, mass), std::move(particle), p.T, p.N, q0, qT, frame0};
+  const auto particle = [&] {  // V = G q[last] where points are vectors and G != 0, else none
+    if constexpr (!requires { typename M::Group; }) {
+      if (p.gravity != 0) {
+        PointOf<M> c = PointOf<M>::Zero();
+        c[c.size() - 1] = p.gravity;
+        return general::erased_particle_in_linear_potential<M>(A, c);
+      }
+    }
+    return general::erased_particle<M>(A);
+  };
+  general::ErasedProblem<M> out{make_manifold<M>(p, connection, mass), particle(), p.T, p.N, q0, qT, frame0};
   validate_for(out, where);
   return out;
 }
