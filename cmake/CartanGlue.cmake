@@ -21,7 +21,7 @@ function(cartan_compile_as_glue target)
 endfunction()
 
 function(cartan_link_library_first target)
-  if(NOT CARTAN_SANITIZE AND NOT APPLE AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+  if(NOT APPLE AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
     target_link_options(${target} PRIVATE "LINKER:--whole-archive" "$<TARGET_FILE:cartan>"
                         "LINKER:--no-whole-archive")
   endif()
