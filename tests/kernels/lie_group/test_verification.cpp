@@ -113,11 +113,11 @@ TEST(TransportedVerification, EnergyDriftShrinksAtTheSchemesOrder) {
 // integrator) from the v0 the solver found, with 64 substeps per step (error ~1e-12). The
 // difference falls at the scheme's order.
 TEST(TransportedVerification, ClassicalLimitsLambdaZeroAndOne) {
-  const Eigen::Matrix3d inertia = paper_inertia();
+  const Eigen::Matrix3d inertia = paper_inertia(), inverse = inertia.inverse();
   for (double lambda : {0.0, 1.0}) {
     const double sign = lambda == 0 ? -1 : 1;
     auto rhs = [&](const Eigen::Vector3d& v) -> Eigen::Vector3d {
-      return inertia.inverse() * (sign * v.cross(inertia * v));
+      return inverse * (sign * v.cross(inertia * v));
     };
     for (transported::SchemeOrder order : {transported::SchemeOrder::First, transported::SchemeOrder::Second}) {
       std::vector<double> error;
