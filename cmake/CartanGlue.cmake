@@ -11,9 +11,11 @@
 # objects on the link line): the library's -O3 copies are met first, and only code that the library
 # does not instantiate keeps the glue's copy.
 #   cartan_compile_as_glue(<target>)            -O1 for the target's own units
-#   cartan_link_library_first(<target>)         the library's -O3 copies win in this binary
+#   cartan_link_library_first(<target>)         the library's copies win in this binary
 # A target that links glue compiled this way (an executable or a module) calls the second. Both
-# only with GNU ld's --whole-archive (not on Apple's linker), and never in the sanitizer tree.
+# only with GNU ld's --whole-archive (not on Apple's linker). The first never in the sanitizer
+# tree; the second there too, for the test suites compiled at -O0 (tests/CMakeLists.txt), whose
+# own copies would otherwise replace the library's instrumented -O1 ones.
 function(cartan_compile_as_glue target)
   if(NOT CARTAN_SANITIZE AND NOT APPLE AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
     target_compile_options(${target} PRIVATE $<$<NOT:$<CONFIG:Debug>>:-O1>)
