@@ -50,14 +50,32 @@ class Model {
     ++evaluations_;
     s_.rhs(t, y, p, out);
   }
-  /// Column j of out (n x m, sized) = f(t[j], y.col(j), p): one call of rhs_batch when set.
-  void rhs(const VectorXd& t, const MatrixXd& y, const VectorXd& p, MatrixXd& out) {
+  /// Column j of out (n x m, sized) = f(t[j], y.col(j), p): one call of rhs_batch when set (a
+  /// user's vectorised f sees the whole mesh, as SciPy's does), else point by point with the
+  /// monitor polled every kPointsBetweenPolls points when `pollable`. False when it polled a stop
+  /// (out then holds NaN; stopped() is true).
+  bool rhs(const VectorXd& t, const MatrixXd& y, const VectorXd& p, MatrixXd& out, bool pollable = true) {
     evaluations_ += static_cast<int>(t.size());
     if (s_.rhs_batch) {
       s_.rhs_batch(t, y, p, out);
-      return;
+      return true;
     }
-    for (Index j = 0; j < t.size(); ++j) s_.rhs(t[j], y.col(j), p, out.col(j));
+    for (Index j = 0; j < t.size(); ++j) {
+      if (pollable && polled_stop(j)) {
+        out.setConstant(std::numeric_limits<double>::quiet_NaN());
+        return false;
+      }
+      s_.rhs(t[j], y.col(j), p, out.col(j));
+    }
+    return true;
+  }
+  /// Whether a poll inside a sweep (rhs, rhs_jacobian, polled_stop) found a stop requested.
+  bool stopped() const { return stopped_; }
+  /// At point j of a sweep, every kPointsBetweenPolls-th: whether the monitor asks to stop
+  /// (then remembered: stopped()).
+  bool polled_stop(Index j) {
+    if (j % kPointsBetweenPolls == kPointsBetweenPolls - 1 && SolveMonitor::poll(monitor_)) stopped_ = true;
+    return stopped_;
   }
   void bc(ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p, VectorRef out) const { s_.bc(ya, yb, p, out); }
 
@@ -75,7 +93,7 @@ class Model {
     }
     if (!s_.rhs_jacobian && s_.rhs_batch) return batched_differences(t, y, p, f0, dfdy, dfdp);
     for (Index j = 0; j < m; ++j) {
-      if (j % kPointsBetweenPolls == kPointsBetweenPolls - 1 && SolveMonitor::poll(monitor_)) return false;
+      if (polled_stop(j)) return false;
       rhs_jacobian(t[j], y.col(j), p, f0.col(j), dfdy.middleCols(n() * j, n()), dfdp.middleCols(k() * j, k()));
     }
     return true;
@@ -120,7 +138,7 @@ class Model {
     MatrixXd moved = y, f(n(), m);
     VectorXd step(m);
     for (Index i = 0; i < n(); ++i) {
-      if (SolveMonitor::poll(monitor_)) return false;
+      if (polled_stop(kPointsBetweenPolls - 1)) return false;
       for (Index j = 0; j < m; ++j) {
         moved(i, j) = moved_by_step(y(i, j));
         step[j] = moved(i, j) - y(i, j);
@@ -131,7 +149,7 @@ class Model {
     }
     VectorXd pp = p;
     for (Index i = 0; i < k(); ++i) {
-      if (SolveMonitor::poll(monitor_)) return false;
+      if (polled_stop(kPointsBetweenPolls - 1)) return false;
       pp[i] = moved_by_step(p[i]);
       const double dp = pp[i] - p[i];
       rhs(t, y, pp, f);
@@ -160,6 +178,7 @@ class Model {
   double fd_step_;
   const SolveMonitor* monitor_;
   int evaluations_ = 0;
+  bool stopped_ = false;
 };
 
 /// Column i of an n-row matrix, and the n x n block i of an n x n m one, with the compile-time
@@ -190,7 +209,8 @@ struct Iterate {
   }
 };
 
-/// Evaluates f, the midpoint values and the residual; false if anything is not finite.
+/// Evaluates f, the midpoint values and the residual; false if anything is not finite, or when
+/// a sweep of f polled a stop (model.stopped(): f or fmid then hold NaN, never a stale value).
 /// N: the state dimension at compile time (Eigen::Dynamic: model.n() at run time).
 template <int N>
 bool evaluate(Model& model, const VectorXd& t, const MatrixXd& y, const VectorXd& p, Iterate& it) {
@@ -205,13 +225,17 @@ bool evaluate(Model& model, const VectorXd& t, const MatrixXd& y, const VectorXd
   it.ymid.resize(n, m - 1);
   it.fmid.resize(n, m - 1);
   it.residual.resize(n * m + model.k());
-  model.rhs(it.t, it.y, it.p, it.f);
+  const auto stopped = [&it] {
+    it.residual.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return false;
+  };
+  if (!model.rhs(it.t, it.y, it.p, it.f)) return stopped();
   for (Index i = 0; i + 1 < m; ++i) {
     const double h = it.h[i];
     column<N>(it.ymid, i) =
         (column<N>(it.y, i) + column<N>(it.y, i + 1)) / 2 - h / 8 * (column<N>(it.f, i + 1) - column<N>(it.f, i));
   }
-  model.rhs(it.tmid, it.ymid, it.p, it.fmid);
+  if (!model.rhs(it.tmid, it.ymid, it.p, it.fmid)) return stopped();
   for (Index i = 0; i + 1 < m; ++i) {
     const double h = it.h[i];
     it.residual.template segment<N>(n * i, n) =
@@ -235,7 +259,8 @@ struct RateJacobians {
 };
 
 /// The Jacobian of the residual with respect to (y_0, ..., y_{m-1}, p), blockwise; false when the
-/// monitor polled a stop in the differences (Model::rhs_jacobian).
+/// monitor polled a stop in the differences (Model::rhs_jacobian) or in the blocks' assembly (its
+/// products cost about n^3 a block: 0.1 s at 8000 nodes of 24 states).
 template <int N>
 bool jacobian(Model& model, const Iterate& it, RateJacobians& rates, CollocationJacobian& jac) {
   using Square = Eigen::Matrix<double, N, N>;
@@ -248,6 +273,7 @@ bool jacobian(Model& model, const Iterate& it, RateJacobians& rates, Collocation
   }
   const Square eye = Square::Identity(n, n);
   for (Index i = 0; i + 1 < m; ++i) {
+    if (model.polled_stop(i)) return false;
     const auto jy_left = square<N>(rates.dy_nodes, i), jy_right = square<N>(rates.dy_nodes, i + 1);
     const auto jmy = square<N>(rates.dy_mid, i);
     const double h = it.h[i];
@@ -451,7 +477,9 @@ NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOption
     if (reuse) {
       reuse = false;
       const double norm = chord.norm();
-      if (evaluate<N>(model, it, VectorXd(z - chord), trial)) {
+      const bool evaluated = evaluate<N>(model, it, VectorXd(z - chord), trial);
+      if (model.stopped()) return stopped;
+      if (evaluated) {
         VectorXd next = solver.solve(trial.residual);
         const double simplified = next.norm();
         if (acceptable(simplified, norm, 1)) {
@@ -480,7 +508,10 @@ NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOption
     bool accepted = false;
     for (int backtrack = 0; backtrack < kMaxBacktracks && !accepted; ++backtrack, alpha /= 2) {
       if (poll()) return stopped;
-      if (!evaluate<N>(model, it, VectorXd(z - alpha * step), trial)) continue;
+      if (!evaluate<N>(model, it, VectorXd(z - alpha * step), trial)) {
+        if (model.stopped()) return stopped;
+        continue;
+      }
       chord = solver.solve(trial.residual);
       const double simplified = chord.norm();
       accepted = acceptable(simplified, norm, alpha);
@@ -531,7 +562,7 @@ VectorXd rms_residuals(Model& model, Workspace& workspace) {
       column<N>(slope, 2 * i + side) = (d00 * y0 + d01 * y1) / h + d10 * f0 + d11 * f1;
     }
   }
-  model.rhs(times, value, it.p, f);
+  model.rhs(times, value, it.p, f, /*pollable=*/false);  // also after a stop: the result's diagnostics
   auto relative = [](const auto& dS, const auto& rate) {
     return ((dS - rate).array() / (1 + rate.array().abs())).matrix().squaredNorm();
   };
@@ -630,8 +661,12 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
     result.refinements = round;
     const VectorXd params = round == 0 ? p : it.p;
     if (!evaluate<N>(model, t, y, params, it)) {
-      fill<N>(result, model, workspace, counters, Status::NotConverged,
-           "f or bc is not finite at the " + std::string(round == 0 ? "initial guess" : "refined mesh's start"));
+      const std::string where = round == 0 ? "initial guess" : "refined mesh's start";
+      if (model.stopped()) {
+        fill<N>(result, model, workspace, counters, Status::Interrupted, "stop requested while evaluating the " + where);
+      } else {
+        fill<N>(result, model, workspace, counters, Status::NotConverged, "f or bc is not finite at the " + where);
+      }
       return result;
     }
     const NewtonOutcome outcome = newton<N>(model, workspace, options, counters);

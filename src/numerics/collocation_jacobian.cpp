@@ -155,17 +155,22 @@ bool BlockLU::factorize_panels(const CollocationJacobian& J, const std::function
   const Index steps = steps_;
   const Index stride = Index{2} * n * width;  // doubles per panel before the last
   const Index size = stride * (steps - 1) + Index{n + q} * width;
-  panels_.resize(static_cast<std::size_t>(size));  // keeps its capacity when smaller
+  if (static_cast<std::size_t>(size) > panels_capacity_) {  // else keeps its storage
+    panels_.reset();
+    panels_ = std::make_unique_for_overwrite<double[]>(static_cast<std::size_t>(size));
+    panels_capacity_ = static_cast<std::size_t>(size);
+  }
   swaps_.resize(static_cast<std::size_t>(n * steps));
+  const Index between_polls = steps_between_polls(n, k);
   for (Index j = 0; j < steps; ++j) {
-    if (j % kStepsBetweenPolls == kStepsBetweenPolls - 1 && stop && stop()) {
+    if (j % between_polls == between_polls - 1 && stop && stop()) {
       stopped_ = true;
       error_ = "stopped at block " + std::to_string(j) + " (time limit or cancellation)";
       return false;
     }
     const bool last = j + 1 == steps;
     const Index fresh = last ? q : n;  // rows entering: r_{j+1}, or the boundary conditions
-    double* data = panels_.data() + stride * j;
+    double* data = panels_.get() + stride * j;
     int failed = -1;
     with_panel<N, Q>(data, last, n + fresh, width, [&](auto M) {
       // Rows carried from the previous step: their coefficients of the current block and of the
@@ -198,7 +203,7 @@ bool BlockLU::factorize_panels(const CollocationJacobian& J, const std::function
     }
   }
   // The q x q system for (y_0, p): the last panel's fresh rows in the border columns.
-  const Eigen::Map<const MatrixXd> last(panels_.data() + stride * (steps - 1), n + q, width);
+  const Eigen::Map<const MatrixXd> last(panels_.get() + stride * (steps - 1), n + q, width);
   border_.compute(last.bottomRightCorner(q, q));
   if (!border_.isInvertible()) {
     error_ = "the reduced boundary system for (y(a), p) is singular (rank " + std::to_string(border_.rank()) + " of " +
@@ -227,7 +232,7 @@ VectorXd BlockLU::solve_panels(const VectorXd& rhs) const {
     // The stored multipliers sit in their rows after all interchanges (as in LAPACK's getrf):
     // permute first, then eliminate.
     for (int c = 0; c < n; ++c) std::swap(b[c], b[swaps[c]]);
-    with_panel<N, Q>(panels_.data() + stride * j, last, rows, width, [&](auto M) {
+    with_panel<N, Q>(panels_.get() + stride * j, last, rows, width, [&](auto M) {
       forward<N>(M, n, rows, b);
     });
     pivot_rhs_.segment(n * j, n) = b.head(n);
@@ -239,7 +244,7 @@ VectorXd BlockLU::solve_panels(const VectorXd& rhs) const {
   x.tail(k_) = border.tail(k_);
   Vector next = Vector::Zero(n), right(n);
   for (Index j = steps - 1; j >= 0; --j) {
-    with_panel<N, Q>(panels_.data() + stride * j, j + 1 == steps, n + (j + 1 == steps ? q : n), width, [&](auto U) {
+    with_panel<N, Q>(panels_.get() + stride * j, j + 1 == steps, n + (j + 1 == steps ? q : n), width, [&](auto U) {
       right = pivot_rhs_.segment(n * j, n);
       right.noalias() -= U.template block<N, N>(0, n, n, n) * next;
       right.noalias() -= U.template block<N, Q>(0, 2 * n, n, q) * border;

@@ -3,12 +3,15 @@
 // every failure status, and bad input.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <memory>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "cartan/monitor.hpp"
 #include "cartan/numerics/collocation.hpp"
 #include "cartan/numerics/scipy_refinement.hpp"
 #include "cartan/solvers/collocation.hpp"
@@ -360,6 +363,33 @@ TEST(CollocationStatus, NotConvergedWhenRhsIsNotFinite) {
   const BvpResult r = solve_collocation(s, uniform(0, 1, 3), MatrixXd::Constant(1, 3, -1.0), VectorXd(0));
   EXPECT_EQ(r.status, Status::NotConverged) << r.message;
   EXPECT_NE(r.message.find("not finite"), std::string::npos) << r.message;
+}
+
+// A stop (here Ctrl-C's cancel flag, raised by f itself after 1000 evaluations) during a sweep
+// of f over a long mesh ends the sweep within the 256 points between two polls, and the result
+// says where it stopped, with no value of an evaluation it did not finish: before, the sweeps
+// over the nodes and the midpoints (40 000 points) ran to their end and Newton's first
+// Jacobian's differences after them, so a stop waited on up to three sweeps of the mesh.
+TEST(CollocationStatus, InterruptedWithinAFewHundredPointsOfASweep) {
+  constexpr int kNodes = 20'001;
+  constexpr int kRaisedAt = 1000;
+  const auto flag = std::make_shared<std::atomic<bool>>(false);
+  int evaluations = 0;
+  BvpSystem s = quadratic_problem(false);
+  const auto rhs = s.rhs;
+  s.rhs = [&, rhs](double t, ConstVectorRef y, ConstVectorRef p, VectorRef dy) {
+    if (++evaluations == kRaisedAt) flag->store(true);
+    rhs(t, y, p, dy);
+  };
+  const SolveMonitor monitor = SolveMonitor().with_cancel_flag(flag);
+  const VectorXd t = uniform(0, 1, kNodes);
+  const BvpResult r =
+      solve_collocation(s, t, perturbed_guess(t, quadratic_exact, 0.1), VectorXd(0), {.max_nodes = kNodes, .monitor = &monitor});
+  EXPECT_EQ(r.status, Status::Interrupted) << r.message;
+  EXPECT_NE(r.message.find("stop requested while evaluating the initial guess"), std::string::npos) << r.message;
+  EXPECT_LE(evaluations - kRaisedAt, 256);
+  EXPECT_TRUE(std::isnan(r.max_bc_residual)) << r.max_bc_residual;  // the boundary conditions were not evaluated
+  EXPECT_EQ(r.rms_residual.size(), 0);  // nor the residuals, which need f everywhere
 }
 
 // ---- Bad input: std::invalid_argument naming the value ----

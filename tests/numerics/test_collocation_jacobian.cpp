@@ -2,9 +2,12 @@
 // dense partial-pivoting LU of the same matrix, and its singularity detection.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <memory>
 #include <random>
+#include <string>
+#include <utility>
 
 #include "cartan/monitor.hpp"
 #include "cartan/numerics/collocation_jacobian.hpp"
@@ -55,21 +58,37 @@ TEST(BlockLU, DetectsSingularMatrices) {
   EXPECT_FALSE(lu.stopped());
 }
 
-// The factorisation polls its stop predicate every kStepsBetweenPolls steps: with a monitor's
-// cancel flag raised it stops at the first poll (the flag lowered: the same matrix factorises).
+// The factorisation polls its stop predicate every steps_between_polls(n, k) steps: with a
+// monitor's cancel flag raised it stops at the first poll (the flag lowered: the same matrix
+// factorises).
 TEST(BlockLU, StopsOnARaisedCancelFlag) {
   std::mt19937 rng(cartan::testing::kSeed);
-  const CollocationJacobian j = random_jacobian(6, 0, 2 * BlockLU::kStepsBetweenPolls + 10, rng);
+  const Eigen::Index between_polls = BlockLU::steps_between_polls(6, 0);
+  const CollocationJacobian j = random_jacobian(6, 0, 2 * between_polls + 10, rng);
   const auto flag = std::make_shared<std::atomic<bool>>(true);
   const SolveMonitor monitor = SolveMonitor().with_cancel_flag(flag);
   BlockLU lu;
   EXPECT_FALSE(lu.factorize(j, [&] { return monitor.poll(); }));
   EXPECT_TRUE(lu.stopped());
-  EXPECT_EQ(lu.error(), "stopped at block 255 (time limit or cancellation)");
+  EXPECT_EQ(lu.error(), "stopped at block " + std::to_string(between_polls - 1) + " (time limit or cancellation)");
   flag->store(false);
   const SolveMonitor fresh = SolveMonitor().with_cancel_flag(flag);
   EXPECT_TRUE(lu.factorize(j, [&] { return fresh.poll(); })) << lu.error();
   EXPECT_FALSE(lu.stopped());
+}
+
+// The polls are spaced by work, not by a count of steps: the same multiply-adds between two of
+// them whatever the block size, so that large blocks (24 states: 41 472 a step) poll every few
+// steps and small ones (2 states) do not pay a clock read a step.
+TEST(BlockLU, PollsAtAboutTheSameWorkForEveryBlockSize) {
+  for (const auto& [n, k] : {std::pair{2, 0}, {2, 1}, {6, 0}, {12, 0}, {24, 0}, {24, 3}, {60, 0}}) {
+    const Eigen::Index per_step = Eigen::Index{n} * n * (3 * n + k);
+    const Eigen::Index steps = BlockLU::steps_between_polls(n, k);
+    EXPECT_GE(steps, 1);
+    EXPECT_LE(steps * per_step, std::max(BlockLU::kMultiplyAddsBetweenPolls, per_step)) << n << " " << k;
+    EXPECT_GT((steps + 1) * per_step, BlockLU::kMultiplyAddsBetweenPolls) << n << " " << k;
+  }
+  EXPECT_LE(BlockLU::steps_between_polls(24, 0), 8);
 }
 
 }  // namespace

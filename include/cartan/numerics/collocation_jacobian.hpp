@@ -18,7 +18,9 @@
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,16 +44,24 @@ struct CollocationJacobian {
 class BlockLU {
  public:
   /// Returns false (and sets error()) when a pivot is zero or not finite, or when `stop` (may be
-  /// empty; called every kStepsBetweenPolls steps, about a millisecond) returns true (stopped()).
+  /// empty; called every steps_between_polls(n, k) steps) returns true (stopped()).
   bool factorize(const CollocationJacobian& jacobian, const std::function<bool()>& stop = {});
   bool stopped() const { return stopped_; }
-  static constexpr Eigen::Index kStepsBetweenPolls = 256;
+  /// The multiply-adds of elimination between two polls of `stop`: about a tenth of a millisecond.
+  static constexpr Eigen::Index kMultiplyAddsBetweenPolls = Eigen::Index{1} << 18;
+  /// The steps between two polls for n states and k parameters: a step eliminates n columns of a
+  /// 2n x (3n + k) panel, about n^2 (3n + k) multiply-adds (one step of 24 states: 0.05-0.1 ms,
+  /// so a count fixed for 2 states would poll every 25 ms there).
+  static Eigen::Index steps_between_polls(int n, int k) {
+    const Eigen::Index per_step = Eigen::Index{n} * n * (3 * Eigen::Index{n} + k);
+    return std::max<Eigen::Index>(1, kMultiplyAddsBetweenPolls / std::max<Eigen::Index>(1, per_step));
+  }
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
   const std::string& error() const { return error_; }
   /// Doubles held by the factors (their storage is kept when a smaller matrix is factorised next,
   /// so that a solver reusing this object does not allocate again).
   Eigen::Index storage() const {
-    return static_cast<Eigen::Index>(panels_.capacity() + swaps_.capacity() / 2) + pivot_rhs_.size();
+    return static_cast<Eigen::Index>(panels_capacity_ + swaps_.capacity() / 2) + pivot_rhs_.size();
   }
 
  private:
@@ -69,7 +79,11 @@ class BlockLU {
   /// The panels after elimination, one after the other (column-major; steps_ - 1 of 2n rows, the
   /// last n + q): multipliers (left n columns, below the diagonal), U (top n rows:
   /// current | next | border).
-  std::vector<double> panels_;
+  /// Allocated, never initialised: factorize writes every entry of a panel before it reads it,
+  /// so its memory is first touched by the elimination, which polls its stop (zeroing 440 MB of
+  /// panels for 16 000 steps of 24 states took 0.5 s before the first poll).
+  std::unique_ptr<double[]> panels_;
+  std::size_t panels_capacity_ = 0;  ///< doubles allocated (kept when a smaller matrix comes next)
   std::vector<int> swaps_;         ///< row interchanges, n per step, in order
   Eigen::FullPivLU<Eigen::MatrixXd> border_;
   mutable Eigen::VectorXd pivot_rhs_;  ///< solve's workspace
