@@ -82,6 +82,25 @@ def test_tampered_results_fail():
     assert "energy" in {c["name"] for c in as_free_body.checks if c["result"] == "FAIL"}
 
 
+def test_a_manifolds_collocation_mesh_is_verified_and_a_wrong_one_fails():
+    """Issue 44: cartan.verify refused every converged collocation result of the general solver on
+    its own mesh (non-uniform after refinement): "trajectory.t ... must be uniform". The residual
+    now takes the three-point derivative of any mesh (second order, as the thresholds assume);
+    the discrete action's stationarity needs a uniform grid and is N/A, as on a group."""
+    S = cartan.Sphere
+    r = cartan.solve(S(), T=1.3, N=300, q0=S.point([1, 0.2, -0.3]), qT=S.point([-0.2, 1, 0.5]), inertia=[1, 2],
+                     gravity=3.0, method="collocation", tol=1e-10)
+    assert r.success and np.ptp(np.diff(r.t)) > 1e-3 * r.T / (len(r.t) - 1), r.message  # a non-uniform mesh
+    report = cartan.verify(r)
+    by_name = {c["name"]: c for c in report.checks}
+    assert report.passed, str(report)
+    assert by_name["stationarity"]["result"] == "N/A" and "not uniform" in by_name["stationarity"]["note"]
+    # The same samples with mu off by 1e-4 (relative to |mu| ~ 1) break the mu equation: the
+    # residual's figure (1.2e-7 honest) grows by orders of magnitude past its threshold (4.8e-6).
+    wrong = cartan.verify(r.replace(mu=r.mu + 1e-4 * np.sin(7 * r.t)[:, None]))
+    assert not wrong.passed and "residual" in {c["name"] for c in wrong.checks if c["result"] == "FAIL"}, str(wrong)
+
+
 def test_a_failed_solve_never_passes():
     model = cartan.SO3Oscillator([2.0, 3.0, 4.0])
     gT = cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1])

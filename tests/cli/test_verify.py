@@ -102,6 +102,20 @@ def test_collocation_on_its_own_mesh_skips_the_action_check(tmp_path):
     assert checks["residual"]["result"] == "PASS"  # the three-point differences work on any mesh
 
 
+def test_a_manifolds_collocation_on_its_own_mesh_verifies(tmp_path):
+    # Issue 44: the general verifier refused a converged collocation result of the sphere on its
+    # refined (non-uniform) mesh ("must be uniform from 0 to T", exit 2, as for bad input); its
+    # residual now takes the three-point derivative of any mesh, the action check is N/A.
+    path = solve(tmp_path, "--manifold", "sphere", "--q0", "1,0.2,-0.3", "--qT", "-0.2,1,0.5", "--T", "1.3",
+                 "--N", "300", "--mass", "1,2", "--gravity", "3", "--method", "collocation", "--tol", "1e-10")
+    t = np.array(json.loads(open(path).read())["t"])
+    assert np.ptp(np.diff(t)) > 1e-3 * t[-1] / (len(t) - 1)  # the mesh is not uniform
+    code, _, checks = verify(path)
+    assert code == 0
+    assert checks["stationarity"]["result"] == "N/A" and "not uniform" in checks["stationarity"]["note"]
+    assert all(checks[name]["result"] == "PASS" for name in ("boundary", "legendre", "energy", "residual"))
+
+
 def test_text_report(tmp_path):
     path = solve(tmp_path, "--model", "oscillator", "--lambda", "0.5", *SO3_CASE)
     result = run("verify", str(path))

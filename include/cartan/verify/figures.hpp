@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace cartan::verify {
@@ -28,6 +29,11 @@ inline bool is_uniform(const std::vector<double>& t) {
   }
   return true;
 }
+
+/// Why action stationarity is not applicable to samples at non-uniform times (a collocation
+/// solution on its own mesh): the discrete action S_h is defined on a uniform grid.
+inline constexpr std::string_view kNonUniformStationarityNote =
+    "t is not uniform (collocation on its own mesh): sample it uniformly (samples = M)";
 
 /// Threshold of a discretisation error of order p at resolution rho = h omega (radians per step):
 /// constant * rho^p. The constants are chosen in verify/verdict.hpp from measured margins.

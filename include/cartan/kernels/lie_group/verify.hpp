@@ -51,7 +51,7 @@ Report verify_trajectory(const transported::TransportedProblem<G, L>& problem, t
   if (is_uniform(checks.trajectory().t)) {
     f.stationarity = checks.action_stationarity(kVariations, kVariationSeed);
   } else {
-    f.stationarity_note = "t is not uniform (collocation on its own mesh): sample it uniformly (samples = M)";
+    f.stationarity_note = kNonUniformStationarityNote;
   }
   return assemble(f, order, tol, status);
 }

@@ -15,6 +15,8 @@
 //   * stationarity of the discrete transported action (action.hpp) along smooth endpoint-fixed
 //     variations.
 
+#include <algorithm>
+#include <functional>
 #include <numbers>
 #include <random>
 
@@ -36,13 +38,21 @@ class GeneralChecks {
   using Components = manifolds::ComponentsOf<M>;
   using Vector = manifolds::VectorOf<M>;
 
-  /// `x` needs at least 2 samples at uniform times on [0, T] (validated by the caller).
+  /// `x` needs at least 2 samples at increasing times from 0 to T (validated by the caller):
+  /// uniform for action_stationarity (the discrete action's grid), any for the other checks (a
+  /// collocation solution on its own mesh).
   GeneralChecks(const GeneralProblem<M, L>& problem, GeneralTrajectory<M> x) : p_(problem), x_(std::move(x)) {
     x_.frame = transported_frames(p_, x_.q);
   }
 
   std::size_t size() const { return x_.t.size(); }
-  double step() const { return p_.T / static_cast<double>(size() - 1); }
+  /// The largest step: the resolution the thresholds are measured in (T / N on a uniform grid).
+  double max_step() const {
+    if (verify::is_uniform(x_.t)) return p_.T / static_cast<double>(size() - 1);
+    double h = 0;
+    for (std::size_t k = 0; k + 1 < size(); ++k) h = std::max(h, x_.t[k + 1] - x_.t[k]);
+    return h;
+  }
 
   double boundary_error(double xi_unit) const {
     return std::max({manifolds::separation(p_.manifold, p_.q0, x_.q.front()),
@@ -98,11 +108,14 @@ class GeneralChecks {
   /// the largest sum of its terms' magnitudes; the worst of the three.
   verify::Residual equation_residual() const {
     double worst[3] = {0, 0, 0}, scale[3] = {0, 0, 0}, where[3] = {0, 0, 0};
-    const double h = step();
     for (std::size_t k = 1; k + 1 < size(); ++k) {
-      const Vector dq = (difference(k, k + 1) - difference(k, k - 1)) / (2 * h);
-      const Components dmu = (x_.mu[k + 1] - x_.mu[k - 1]) / (2 * h);
-      const manifolds::ComponentMatrixOf<M> dXi = (x_.Xi[k + 1] - x_.Xi[k - 1]) / (2 * h);
+      // The three-point derivative at t_k for steps b = t_k - t_{k-1}, a = t_{k+1} - t_k, second
+      // order on any mesh: (b^2 (f_{k+1} - f_k) + a^2 (f_k - f_{k-1})) / (a b (a + b)); on a
+      // uniform one the central difference (f_{k+1} - f_{k-1}) / 2h.
+      const double a = x_.t[k + 1] - x_.t[k], b = x_.t[k] - x_.t[k - 1], d = a * b * (a + b);
+      const Vector dq = (b * b * difference(k, k + 1) - a * a * difference(k, k - 1)) / d;
+      const Components dmu = (b * b * (x_.mu[k + 1] - x_.mu[k]) + a * a * (x_.mu[k] - x_.mu[k - 1])) / d;
+      const manifolds::ComponentMatrixOf<M> dXi = (b * b * (x_.Xi[k + 1] - x_.Xi[k]) + a * a * (x_.Xi[k] - x_.Xi[k - 1])) / d;
       const auto& E = x_.frame[k];
       const Vector u = E * x_.v[k];
       const auto dual = manifolds::dual_frame<M>(E);
@@ -140,7 +153,7 @@ class GeneralChecks {
   double action_stationarity(int count, unsigned seed) const {
     std::mt19937 rng(seed);
     std::normal_distribution<double> normal;
-    const double h = step();
+    const double h = p_.T / static_cast<double>(size() - 1);  // uniform: verify_general checks
     double worst = 0;
     for (int j = 1; j <= count; ++j) {
       Components r;
@@ -169,11 +182,13 @@ class GeneralChecks {
   GeneralTrajectory<M> x_;
 };
 
-/// Runs every check on `x` (t uniform on [0, T], at least 3 samples; q, v, mu, Xi at every time),
-/// a solution of `problem` to tolerance `tol` by a scheme of order `order` (1 or 2, or 4 for
-/// collocation, whose samples are checked at second order). A status
-/// other than converged adds a failing `converged` check. Throws std::invalid_argument for
-/// mismatched sizes, too few or non-uniform samples, a bad order or tol.
+/// Runs every check on `x` (t increasing from 0 to T, at least 3 samples; q, v, mu, Xi at every
+/// time), a solution of `problem` to tolerance `tol` by a scheme of order `order` (1 or 2, or 4
+/// for collocation, whose samples are checked at second order). Action stationarity needs uniform
+/// times (the discrete action's grid): on a collocation mesh it is not applicable, and says so, as
+/// in the Lie-group verifier. A status other than converged adds a failing `converged` check.
+/// Throws std::invalid_argument for mismatched sizes, too few samples, times that do not increase
+/// from 0 to T, a bad order or tol.
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 verify::Report verify_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x, int order, double tol,
                               Status status) {
@@ -187,11 +202,12 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
     times += std::to_string(n) + " times)";
     throw_invalid(where, "trajectory", times, "needs q, v, mu and Xi at 3 or more times");
   }
-  if (!verify::is_uniform(x.t) || std::abs(x.t.front()) > 1e-9 * problem.T || std::abs(x.t.back() - problem.T) > 1e-9 * problem.T) {
+  const bool increasing = std::adjacent_find(x.t.begin(), x.t.end(), std::greater_equal<>()) == x.t.end();
+  if (!increasing || std::abs(x.t.front()) > 1e-9 * problem.T || std::abs(x.t.back() - problem.T) > 1e-9 * problem.T) {
     std::string span = "[";
     span += format_value(x.t.front()) + ", " + format_value(x.t.back()) + "]";
     throw_invalid(where, "trajectory.t", span,
-                  "must be uniform from 0 to T = " + format_value(problem.T));
+                  "must increase strictly from 0 to T = " + format_value(problem.T));
   }
   for (std::size_t k = 0; k < n; ++k) {
     problem.manifold.validate(x.q[k], "trajectory.q");
@@ -201,7 +217,7 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
   }
   const GeneralChecks<M, L> checks(problem, x);
   verify::Figures f;
-  f.resolution = checks.step() * checks.frequency();
+  f.resolution = checks.max_step() * checks.frequency();
   f.boundary = checks.boundary_error(std::max(1.0, xi_scale(problem)));
   f.boundary_note = "max(separation(q0, q_0), separation(qT, q_N), |Xi_N| / max(1, xi_scale)) against tol";
   f.legendre = checks.legendre_residual();
@@ -210,13 +226,17 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
   // bounded in time: each step's error O((h omega)^(p+1)) E accumulates over T / h steps, so the
   // bound is C (1 + T omega) rho^p. C = 5: the largest figure measured is 2.2 (1 + T omega) rho
   // (order 1, S^2, A = diag(1, 2.5), G = 3, T omega = 2).
-  const double horizon_factor = 1 + problem.T * f.resolution / checks.step();
+  const double horizon_factor = 1 + problem.T * f.resolution / checks.max_step();
   f.energy = checks.energy_drift();
   f.energy_constant = kGeneralEnergyConstant * horizon_factor;
   f.energy_note = "max |E - E(0)| / max |E|, E = mu.v - l (conserved for every connection when l does not depend on t)";
   f.residual = checks.equation_residual();
   f.residual_equations = "the local form";
-  f.stationarity = checks.action_stationarity(verify::kVariations, verify::kVariationSeed);
+  if (verify::is_uniform(x.t)) {
+    f.stationarity = checks.action_stationarity(verify::kVariations, verify::kVariationSeed);
+  } else {
+    f.stationarity_note = verify::kNonUniformStationarityNote;
+  }
   return verify::assemble(f, order, tol, status);
 }
 
