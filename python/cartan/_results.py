@@ -113,6 +113,12 @@ def _manifold_record(r):
             "metric": metric, "alpha": alpha, "q0": np.ravel(p.q0), "qT": np.ravel(p.qT), "frame0": frame0.T.ravel()}
 
 
+def _rows(x):
+    """`x` with one row per sample, its other axes flattened (also without samples: a failed
+    solve's empty trajectory)."""
+    return np.reshape(x, (len(x), int(np.prod(np.shape(x)[1:]))))
+
+
 def to_json(r, path):
     """Writes `r` to `path` with the library's writer of result files (the CLI's: one line)."""
     rows = len(r.t)
@@ -123,11 +129,11 @@ def to_json(r, path):
         aux = r.xi
     else:
         problem = _manifold_record(r)
-        aux = np.reshape(r.Xi, (rows, -1))
+        aux = _rows(r.Xi)
     fields = {
         **problem, "status": r.status, "message": r.message, "method": r.method, "order": r.order,
         "branch": r.branch, "T": r.T, "N": r.N, "tol": r.tol, "t": r.t,
-        "points": np.reshape(r.q, (rows, int(np.prod(np.shape(r.q)[1:])))), "v": r.v, "mu": r.mu, "aux": aux,
+        "points": _rows(r.q), "v": r.v, "mu": r.mu, "aux": aux,
         "terminal_error": r.terminal_error, "xi_terminal": r.xi_terminal, "outer_iterations": r.outer_iterations,
         "inner_iterations": r.inner_iterations, "sweeps": r.sweeps, "action": r.action, "solve_time": r.solve_time,
         "mesh_size": r.mesh_size, "max_residual": r.max_residual,
@@ -217,8 +223,7 @@ def manifold_fields(d, space):
     """(fields, problem terms) of a manifold's Result from the library's fields of a file: a manifold
     record, or a group record of a model whose Lagrangian is the particle's under another connection."""
     group_record = d["kind"] == "group"
-    m = np.shape(d["v"])[1] if len(d["t"]) else (space.group.dim if hasattr(space, "group") else len(d["q0"]))
-    shape = tuple(space.group.element_shape) if hasattr(space, "group") else (len(d["q0"]) if len(d["q0"]) else m,)
+    m, shape = space.dim, tuple(space.point_shape)  # also for a file without samples
     if group_record:
         if d["model"] not in _KINETIC_MODELS:
             raise ValueError(f"cartan.load: model = {d['model']!r} under connection {d['connection']!r}: only the "
@@ -286,29 +291,32 @@ def plot(r, path=None):
     from matplotlib.figure import Figure
     fig = Figure(figsize=(12, 4), layout="constrained")
     group = None if r.group is None else _group_class(r.group, "Result.plot")
-    points = np.reshape(r.q, (len(r.t), -1))
+    points = _rows(r.q)
     three_d = (group.name in ("so3", "se3")) if group is not None else points.shape[1] == 3
     path_axes = fig.add_subplot(1, 3, 1, projection="3d" if three_d else None)
     if group is not None:
         _plot_group_path(path_axes, group, r)
     elif points.shape[1] in (2, 3):
         path_axes.plot(*points.T, label="q")
-        path_axes.plot(*points[0], "ko")
-        path_axes.plot(*points[-1], "ks")
+        if len(points):  # a failed solve may have kept no sample
+            path_axes.plot(*points[0], "ko")
+            path_axes.plot(*points[-1], "ks")
         path_axes.set_title(f"path on {r.manifold}")
     else:
         for i in range(points.shape[1]):
             path_axes.plot(r.t, points[:, i], label=f"q[{i}]")
         path_axes.set_xlabel("t")
         path_axes.set_title(f"q(t) on {r.manifold}")
-    path_axes.legend()
+    if len(r.t):
+        path_axes.legend()
     for column, (name, values) in enumerate((("v", r.v), ("mu", r.mu)), start=2):
         axes = fig.add_subplot(1, 3, column)
         for i in range(values.shape[1]):
             axes.plot(r.t, values[:, i], label=f"{name}[{i}]")
         axes.set_xlabel("t")
         axes.set_title(f"{name}(t)")
-        axes.legend(fontsize="small")
+        if len(r.t):
+            axes.legend(fontsize="small")
     what = (f"{r.group} {r.model}, lambda = {r.lam:g}" if r.problem.kind == "group"
             else f"{r.manifold}" + (f" (lambda = {r.lam:g})" if r.lam is not None else ""))
     fig.suptitle(f"{what}, T = {r.T:g}, N = {r.N}, {r.method} (order {r.order}): {r.status}")

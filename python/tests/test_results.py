@@ -212,6 +212,28 @@ def test_a_result_without_rows_travels_and_has_no_dense_output(tmp_path):
         back.sol(0.5)
 
 
+def test_a_manifold_result_without_rows_travels_both_ways_and_plots(tmp_path):
+    """A failed solve of the general solver that kept no sample (non-finite at its first sweep):
+    its to_json and plot raised a NumPy reshape error, and cartan.load refused the CLI's file of
+    the same failure (the sphere's points have 3 numbers, its velocities 2). Found by a new-user
+    trial (issue 44: every tool on every result)."""
+    S = cartan.Sphere
+    args = dict(T=30, N=500, q0=S.point([1, 0, 0]), qT=S.point([-1, 0.01, 0.02]), gravity=9.81, inertia=[1, 3])
+    r = cartan.solve(S(), **args, method="shooting")
+    assert not r.success and len(r.t) == 0 and r.q.shape == (0, 3) and r.Xi.shape == (0, 2, 2), r.message
+    r.to_json(tmp_path / "python.json")
+    back = cartan.load(tmp_path / "python.json")
+    assert back.status == r.status and back.q.shape == (0, 3) and back.v.shape == (0, 2) and back.Xi.shape == (0, 2, 2)
+    np.testing.assert_array_equal(back.inertia, np.diag([1.0, 3.0]))
+    assert r.plot(tmp_path / "empty.png") is not None and (tmp_path / "empty.png").stat().st_size > 0
+    cli = subprocess.run([CARTAN_BIN, "solve", "--manifold", "sphere", "--q0", "1,0,0", "--qT", "-1,0.01,0.02",
+                          "--T", "30", "--N", "500", "--gravity", "9.81", "--mass", "1,3", "--method", "shooting",
+                          "--output", str(tmp_path / "cli.json")], capture_output=True, text=True)
+    assert cli.returncode == 1, cli.stderr  # a failed solve (README: exit 1), its file written
+    from_cli = cartan.load(tmp_path / "cli.json")
+    assert from_cli.status == r.status and from_cli.q.shape == (0, 3) and not cartan.verify(from_cli).passed
+
+
 def _bad(key, change):
     return pytest.param(change, key, id=key)
 
