@@ -928,6 +928,8 @@ class GroupManifold(metaclass=type):
     @property
     def alpha(self) -> NDArray[numpy.float64]:
         """The bilinear map as a (n, n, n) array: alpha(e_i, e_j) = sum_k alpha[i, j, k] e_k."""
+    def __getstate__(self) -> tuple: ...
+    def __setstate__(self, arg0: tuple) -> None: ...
     @property
     def connection(self) -> Any:
         """The connection as a <Group>.Connection object."""

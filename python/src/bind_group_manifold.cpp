@@ -83,6 +83,40 @@ manifolds::GroupManifold<G> make_group_manifold(const py::object& connection, co
   throw std::logic_error("make_group_manifold: unhandled ConnectionKind");
 }
 
+/// The bilinear map of `gm`'s connection as a (n, n, n) array: alpha(e_i, e_j) = sum_k alpha[i, j, k] e_k.
+template <groups::LieGroup G>
+py::array_t<double> alpha_array(const manifolds::GroupManifold<G>& gm) {
+  constexpr int n = G::kDim;
+  std::array<Square<n>, n> out;  // out[i](j, k) = alpha[i][j][k]
+  for (int i = 0; i < n; ++i) out[i] = gm.connection().coefficients()[i].transpose();
+  return tensor_numpy<n>(out);
+}
+
+/// A GroupManifold as the constructor's arguments (group name, connection word, its parameter:
+/// lam, the metric at the identity, or alpha), for pickling: a result and a sweep's problem on
+/// processes carry their space (as Sphere's and Euclidean's do).
+py::tuple constructor_arguments(const AnyGroupManifold& h) {
+  return visit_holder(h, [](const auto& gm) {
+    using G = typename std::decay_t<decltype(gm)>::Group;
+    const std::string name(gm.name());
+    if (const auto l = gm.cartan_schouten_lambda()) return py::make_tuple(name, "cartan-schouten", *l);
+    if (const auto g = gm.metric(G::identity())) return py::make_tuple(name, "levi-civita", to_numpy(*g));
+    return py::make_tuple(name, "coefficients", alpha_array(gm));
+  });
+}
+
+AnyGroupManifold from_constructor_arguments(const py::tuple& state) {
+  constexpr const char* where = "GroupManifold";
+  if (state.size() != 3) throw_invalid(where, "pickled state", std::to_string(state.size()) + " items", "must have 3");
+  const py::object connection = state[1], parameter = state[2], none = py::none();
+  const std::string kind = py::cast<std::string>(connection);
+  return visit_group(state[0], where, [&]<class G>(std::type_identity<G>) {
+    return AnyGroupManifold{make_group_manifold<G>(connection, kind == "cartan-schouten" ? parameter : none,
+                                                   kind == "levi-civita" ? parameter : none,
+                                                   kind == "coefficients" ? parameter : none)};
+  });
+}
+
 }  // namespace
 
 void bind_group_manifold(py::module_& m) {
@@ -117,14 +151,9 @@ void bind_group_manifold(py::module_& m) {
     });
   }, "lam for a Cartan-Schouten connection, else None.");
   cls.def_property_readonly("alpha", [](const AnyGroupManifold& h) {
-    return visit_holder(h, [](const auto& gm) {
-      using G = typename std::decay_t<decltype(gm)>::Group;
-      constexpr int n = G::kDim;
-      std::array<Square<n>, n> out;  // out[i](j, k) = alpha[i][j][k]
-      for (int i = 0; i < n; ++i) out[i] = gm.connection().coefficients()[i].transpose();
-      return tensor_numpy<n>(out);
-    });
+    return visit_holder(h, [](const auto& gm) { return alpha_array(gm); });
   }, "The bilinear map as a (n, n, n) array: alpha(e_i, e_j) = sum_k alpha[i, j, k] e_k.");
+  cls.def(py::pickle(&constructor_arguments, &from_constructor_arguments));
   cls.def_property_readonly("connection", [](const AnyGroupManifold& h) {
     return visit_holder(h, [](const auto& gm) { return py::cast(gm.connection()); });
   }, "The connection as a <Group>.Connection object.");

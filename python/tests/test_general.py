@@ -752,6 +752,30 @@ def test_sol_of_a_general_collocation_result_has_scipys_splines():
     assert np.allclose(np.linalg.norm(s.q, axis=1), 1, atol=1e-14)  # on the sphere
 
 
+def test_a_group_manifold_pickles_with_its_connection():
+    """Issue 44 (found by a new-user trial): GroupManifold did not pickle, so its results lost their
+    space (r.lam, r.connection, r.group None; cartan.verify refused them) and cartan.sweep on
+    processes refused its problems. It pickles as its constructor's arguments: the connection
+    comes back the same, bit for bit, with its kind (the kernel it chooses)."""
+    import pickle
+    rng = np.random.default_rng(7)
+    for group, connection, parameter in [("so3", "cartan-schouten", dict(lam=0.3)), ("se2", "levi-civita", dict(metric=[1, 2, 3])),
+                                         ("heisenberg", "coefficients", dict(alpha=rng.normal(size=(3, 3, 3)))),
+                                         ("se3", "cartan-schouten", dict(lam=0.0))]:
+        space = cartan.GroupManifold(group, connection, **parameter)
+        back = pickle.loads(pickle.dumps(space))
+        assert repr(back) == repr(space) and back.lam == space.lam and np.array_equal(back.alpha, space.alpha)
+        e = space.group.identity()
+        assert (back.metric(e) is None) == (space.metric(e) is None)
+    gT = cartan.SO3.exp([0.4, -0.9, 1.1])
+    r = cartan.solve(cartan.GroupManifold("so3", "cartan-schouten", lam=0.3), T=2, N=50, q0=np.eye(3), qT=gT,
+                     inertia=[1.5, 2.5, 5])
+    back = pickle.loads(pickle.dumps(r))
+    assert (back.lam, back.connection, back.group) == (0.3, "cartan-schouten", r.group) and cartan.verify(back).passed
+    with pytest.raises(ValueError, match="pickled state"):
+        cartan.GroupManifold.__new__(cartan.GroupManifold).__setstate__(("so3", "levi-civita"))
+
+
 def test_a_general_result_pickles_with_its_manifold_when_it_pickles():
     # A result travels (pickle, processes) with its arrays and its problem; a manifold that pickles
     # (the sphere) travels with it, one built from Python callbacks that do not (a Chart of a lambda)
