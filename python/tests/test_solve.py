@@ -454,6 +454,22 @@ def test_time_limit_ends_the_dense_methods_within_ten_percent_at_N_2000(method, 
     assert r.solve_time <= 1.1 * limit and spent <= 1.1 * limit + PYTHON_OVERHEAD_S, (r.solve_time, spent)
 
 
+@pytest.mark.parametrize("segments", [64, 128])
+def test_time_limit_ends_multiple_shooting_with_many_segments_within_ten_percent(segments):
+    """Issue 44 (found by a new-user trial): with 64 segments a 0.5 s limit ended after 9.3 s, with
+    128 after minutes. After the stop, the failure's diagnostic (the Jacobian's SVD, 7 s at 576
+    unknowns) ran; the normal matrix J^T J and its factorisation (0.1-0.3 s at 1152 unknowns)
+    polled nothing; and segments of 15 steps never reached their sweep's poll. At N = 2000."""
+    limit = 0.5
+    gT = cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1])
+    start = time.perf_counter()
+    r = cartan.solve(cartan.SO3Oscillator([2, 3, 4]), lam=0.5, T=40, N=2000, gT=gT, method="multiple-shooting",
+                     segments=segments, tol=3e-14, max_iterations=100_000, time_limit=limit)
+    spent = time.perf_counter() - start
+    assert r.status == "time-limit", (r.status, r.message)
+    assert r.solve_time <= 1.1 * limit and spent <= 1.1 * limit + PYTHON_OVERHEAD_S, (r.solve_time, spent)
+
+
 def test_ctrl_c_interrupts_the_variational_method_inside_an_iteration():
     """Issue 44: Ctrl-C raised KeyboardInterrupt 16.7 s after the signal at N = 2000 (the first
     iteration's Hessian and LU polled nothing); now within 2 s (measured: 0.02 s). The signal comes

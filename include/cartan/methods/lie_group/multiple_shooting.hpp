@@ -27,6 +27,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 
 #include "cartan/methods/lie_group/shooting.hpp"
 #include "cartan/solvers/multiple_shooting.hpp"
@@ -152,6 +153,14 @@ class MultipleShootingSystem {
       return false;
     }
     for (int j = 0; j < m; ++j) {
+      // Between segments as inside each (its sweep polls every SolveMonitor::kStepsBetweenPolls
+      // steps, more than a short segment has): a stop is a failed evaluation, which the solver's
+      // next stop_requested() ends (128 segments of 15 steps ran a whole Jacobian, 0.1-0.3 s, past
+      // a time limit).
+      if (monitor_ != nullptr && monitor_->stop_pending()) {
+        failure_ = "stopped before segment " + std::to_string(j) + " (time limit or cancellation)";
+        return false;
+      }
       SweepOutput<G, L> out;
       std::optional<NodeTangent> d;
       if (jac) d = std::move(dstart[static_cast<std::size_t>(j)]);
