@@ -9,6 +9,7 @@
 // however long its iterations are; the stop callback runs once per iteration, and every
 // kCallbackInterval inside the long steps of an iteration that poll() (a dense factorisation).
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <functional>
@@ -43,18 +44,34 @@ class SolveMonitor {
   /// clock read. Sweeps poll it every kStepsBetweenPolls steps and stop as a failed evaluation;
   /// the solver's next stop_requested() then ends the solve.
   bool stop_pending() const { return (cancel_ && cancel_->load(std::memory_order_relaxed)) || deadline_passed(); }
+  /// The most steps a sweep runs between two polls (where steps take microseconds).
   static constexpr int kStepsBetweenPolls = 1024;
-  /// What a sweep of `steps` steps, begun at `begin`, polls at its step k: stop_pending() at every
-  /// kStepsBetweenPolls-th step; false between them and without a monitor. Its message, when true:
-  /// stopped_message(k). Until the solver has timed a whole sweep (reserve_after_stop), the poll
-  /// also projects the reserve from this sweep's pace: `after_stop` times the whole sweep's
-  /// projected time (the work after a stop, in sweeps of this kind), so that a sweep longer than
-  /// the time limit itself stops in time for what follows.
+  /// What a sweep of `steps` steps, begun at `begin`, polls at its step k: stop_pending() every
+  /// so many steps, false between them and without a monitor. The interval is a power of two,
+  /// adapted to the measured pace so that polls are 0.25-1 ms apart: from 1 step, doubled while
+  /// two polls are less than kPollsApart / 4 apart (to kStepsBetweenPolls), halved while they are
+  /// more than kPollsApart apart (a step of Python callbacks takes milliseconds: every 1024 steps
+  /// was seconds). Its message, when true: stopped_message(k). Until the solver has timed a
+  /// whole sweep (reserve_after_stop), a poll from step kStepsBetweenPolls on also projects the
+  /// reserve from this sweep's pace:
+  /// `after_stop` times the whole sweep's projected time (the work after a stop, in sweeps of this
+  /// kind), so that a sweep longer than the time limit itself stops in time for what follows.
   static bool stop_pending_at(const SolveMonitor* monitor, int k, int steps,
                               std::chrono::steady_clock::time_point begin, double after_stop) {
-    if (monitor == nullptr || k % kStepsBetweenPolls != kStepsBetweenPolls - 1) return false;
-    if (monitor->deadline_ && !monitor->deadline_->timed.load(std::memory_order_relaxed)) {
-      const std::chrono::duration<double> pace = (std::chrono::steady_clock::now() - begin) / double(k + 1);
+    if (monitor == nullptr || ((k + 1) & (monitor->poll_interval_ - 1)) != 0) return false;
+    const auto now = std::chrono::steady_clock::now();
+    const auto apart = now - std::max(begin, monitor->last_poll_);
+    monitor->last_poll_ = now;
+    if (apart > kPollsApart && monitor->poll_interval_ > 1) {
+      monitor->poll_interval_ /= 2;
+    } else if (apart < kPollsApart / 4 && monitor->poll_interval_ < kStepsBetweenPolls) {
+      monitor->poll_interval_ *= 2;
+    }
+    // The pace is projected from kStepsBetweenPolls steps on (as before the interval adapted): the
+    // first steps' pace (cold caches, first pages) projected a reserve of seconds, and a 0.5 s
+    // limit stopped a solve at 0.12 s.
+    if (monitor->deadline_ && !monitor->deadline_->timed.load(std::memory_order_relaxed) && k + 1 >= kStepsBetweenPolls) {
+      const std::chrono::duration<double> pace = (now - begin) / double(k + 1);
       monitor->deadline_->reserve_ns.store(
           std::chrono::duration_cast<std::chrono::nanoseconds>(pace * (after_stop * steps)).count(),
           std::memory_order_relaxed);
@@ -79,6 +96,8 @@ class SolveMonitor {
   /// poll() of `monitor`, false without one.
   static bool poll(const SolveMonitor* monitor) { return monitor != nullptr && monitor->poll(); }
   static constexpr std::chrono::milliseconds kCallbackInterval{20};
+  /// The time a sweep's polls aim to be apart at most (stop_pending_at).
+  static constexpr std::chrono::microseconds kPollsApart{1000};
   /// A copy reporting under `name`, or nothing without a monitor (for an options' monitor pointer).
   static std::optional<SolveMonitor> staged(const SolveMonitor* monitor, std::string name) {
     return monitor == nullptr ? std::nullopt : std::optional<SolveMonitor>(monitor->stage(std::move(name)));
@@ -155,6 +174,8 @@ class SolveMonitor {
   std::shared_ptr<Deadline> deadline_;
   std::shared_ptr<const std::atomic<bool>> cancel_;
   mutable bool stopped_ = false;
+  mutable int poll_interval_ = 1;  ///< stop_pending_at's steps between polls (a power of two)
+  mutable std::chrono::steady_clock::time_point last_poll_{};  ///< its last poll
   mutable std::chrono::steady_clock::time_point next_callback_{};  ///< poll()'s next call of stop_
 };
 

@@ -3,6 +3,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -52,7 +53,7 @@ class Model {
   }
   /// Column j of out (n x m, sized) = f(t[j], y.col(j), p): one call of rhs_batch when set (a
   /// user's vectorised f sees the whole mesh, as SciPy's does), else point by point with the
-  /// monitor polled every kPointsBetweenPolls points when `pollable`. False when it polled a stop
+  /// monitor polled (polled_stop) when `pollable`. False when it polled a stop
   /// (out then holds NaN; stopped() is true).
   bool rhs(const VectorXd& t, const MatrixXd& y, const VectorXd& p, MatrixXd& out, bool pollable = true) {
     evaluations_ += static_cast<int>(t.size());
@@ -71,16 +72,29 @@ class Model {
   }
   /// Whether a poll inside a sweep (rhs, rhs_jacobian, polled_stop) found a stop requested.
   bool stopped() const { return stopped_; }
-  /// At point j of a sweep, every kPointsBetweenPolls-th: whether the monitor asks to stop
-  /// (then remembered: stopped()).
+  /// At point j of a sweep: whether the monitor asks to stop (then remembered: stopped()), polled
+  /// every poll_interval_ points, a power of two adapted as the sweeps' (SolveMonitor::
+  /// stop_pending_at): doubled while polls are less than kPollsApart / 4 apart, up to
+  /// kPointsBetweenPolls; halved while they are more than kPollsApart apart (f in Python: a
+  /// point can take a millisecond, and 256 of them were a quarter of a second past a limit).
   bool polled_stop(Index j) {
-    if (j % kPointsBetweenPolls == kPointsBetweenPolls - 1 && SolveMonitor::poll(monitor_)) stopped_ = true;
-    return stopped_;
+    if (stopped_ || ((j + 1) & (poll_interval_ - 1)) != 0) return stopped_;
+    const auto now = std::chrono::steady_clock::now();
+    const auto apart = now - last_poll_;
+    last_poll_ = now;
+    if (apart > SolveMonitor::kPollsApart && poll_interval_ > 1) {
+      poll_interval_ /= 2;
+    } else if (apart < SolveMonitor::kPollsApart / 4 && poll_interval_ < kPointsBetweenPolls) {
+      poll_interval_ *= 2;
+    }
+    return stopped_ = SolveMonitor::poll(monitor_);
   }
+  /// A poll now, between calls of a batched f (each a whole mesh).
+  bool poll_now() { return stopped_ = stopped_ || SolveMonitor::poll(monitor_); }
   void bc(ConstVectorRef ya, ConstVectorRef yb, ConstVectorRef p, VectorRef out) const { s_.bc(ya, yb, p, out); }
 
   /// df/dy (n x n m) and df/dp (n x k m) at the columns of y, where f0 = f(t, y, p) columnwise.
-  /// False when the monitor polled a stop: every kPointsBetweenPolls points (a millisecond or two
+  /// False when the monitor polled a stop: at most every kPointsBetweenPolls points (a millisecond or two
   /// of differences), or between the components of the batched differences.
   bool rhs_jacobian(const VectorXd& t, const MatrixXd& y, const VectorXd& p, const MatrixXd& f0, MatrixXd& dfdy,
                     MatrixXd& dfdp) {
@@ -138,7 +152,7 @@ class Model {
     MatrixXd moved = y, f(n(), m);
     VectorXd step(m);
     for (Index i = 0; i < n(); ++i) {
-      if (polled_stop(kPointsBetweenPolls - 1)) return false;
+      if (poll_now()) return false;
       for (Index j = 0; j < m; ++j) {
         moved(i, j) = moved_by_step(y(i, j));
         step[j] = moved(i, j) - y(i, j);
@@ -149,7 +163,7 @@ class Model {
     }
     VectorXd pp = p;
     for (Index i = 0; i < k(); ++i) {
-      if (polled_stop(kPointsBetweenPolls - 1)) return false;
+      if (poll_now()) return false;
       pp[i] = moved_by_step(p[i]);
       const double dp = pp[i] - p[i];
       rhs(t, y, pp, f);
@@ -179,6 +193,8 @@ class Model {
   const SolveMonitor* monitor_;
   int evaluations_ = 0;
   bool stopped_ = false;
+  Index poll_interval_ = 1;  ///< polled_stop's points between polls
+  std::chrono::steady_clock::time_point last_poll_ = std::chrono::steady_clock::now();
 };
 
 /// Column i of an n-row matrix, and the n x n block i of an n x n m one, with the compile-time
@@ -562,7 +578,7 @@ VectorXd rms_residuals(Model& model, Workspace& workspace) {
       column<N>(slope, 2 * i + side) = (d00 * y0 + d01 * y1) / h + d10 * f0 + d11 * f1;
     }
   }
-  model.rhs(times, value, it.p, f, /*pollable=*/false);  // also after a stop: the result's diagnostics
+  model.rhs(times, value, it.p, f, /*pollable=*/false);  // the result's diagnostics, once a Newton iteration ended
   auto relative = [](const auto& dS, const auto& rate) {
     return ((dS - rate).array() / (1 + rate.array().abs())).matrix().squaredNorm();
   };
@@ -609,9 +625,12 @@ void fill(BvpResult& result, Model& model, Workspace& workspace, const Counters&
   if (rms != nullptr) {
     result.rms_residual = *rms;
     result.max_rms_residual = result.rms_residual.maxCoeff();
-  } else if (it.f.allFinite() && it.fmid.allFinite()) {
+  } else if (status != Status::Interrupted && it.f.allFinite() && it.fmid.allFinite()) {
+    // Not after a stop: with f in Python, 2 evaluations an interval took 0.2 s past a time limit.
     result.rms_residual = rms_residuals<N>(model, workspace);
     result.max_rms_residual = result.rms_residual.maxCoeff();
+  } else {
+    result.max_rms_residual = std::numeric_limits<double>::quiet_NaN();  // not computed, never a 0
   }
   result.max_bc_residual = it.residual.tail(model.n() + model.k()).cwiseAbs().maxCoeff();
   result.rhs_evaluations = model.evaluations();

@@ -44,7 +44,7 @@ struct NonlinearSolveOptions {
   /// Progress reports (one per iteration) and stop requests (Status::Interrupted); may be null.
   const SolveMonitor* monitor = nullptr;
   /// True when f itself polls the monitor and fails promptly once a stop is pending (the shooting
-  /// sweeps poll it every SolveMonitor::kStepsBetweenPolls steps): an iteration is then begun up
+  /// sweeps poll it about every millisecond, SolveMonitor::stop_pending_at): an iteration is then begun up
   /// to the deadline, and a stop cuts it short with the last accepted point, so that the solve
   /// ends at its time limit rather than up to an iteration before it. False: an iteration is begun
   /// only if it can end in time (its length foreseen from the last one's).

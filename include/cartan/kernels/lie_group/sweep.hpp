@@ -22,7 +22,7 @@ struct SweepOutput {
   std::vector<groups::CovectorOf<G>>* xi_rates = nullptr;     ///< if set: xi rate of every step (N entries)
   TransportedTrajectory<G>* trajectory = nullptr;     ///< if set: every node (its storage reused)
   std::string failure;                                ///< why the sweep stopped early
-  /// If set, polled every SolveMonitor::kStepsBetweenPolls steps (stop_pending): a stop ends the
+  /// If set, polled about every millisecond (SolveMonitor::stop_pending_at): a stop ends the
   /// sweep as a failed one, and the solver's own poll then ends the solve.
   const SolveMonitor* monitor = nullptr;
   /// The work that follows a stop, in sweeps of this kind, projected from this sweep's pace until

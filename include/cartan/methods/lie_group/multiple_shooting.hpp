@@ -153,8 +153,8 @@ class MultipleShootingSystem {
       return false;
     }
     for (int j = 0; j < m; ++j) {
-      // Between segments as inside each (its sweep polls every SolveMonitor::kStepsBetweenPolls
-      // steps, more than a short segment has): a stop is a failed evaluation, which the solver's
+      // Between segments as inside each (where steps are fast its sweep polls every 1024 steps,
+      // SolveMonitor::stop_pending_at, more than a short segment has): a stop is a failed evaluation, which the solver's
       // next stop_requested() ends (128 segments of 15 steps ran a whole Jacobian, 0.1-0.3 s, past
       // a time limit).
       if (monitor_ != nullptr && monitor_->stop_pending()) {

@@ -27,8 +27,8 @@
 namespace cartan::general {
 
 /// Runs the N steps from (v0, Xi0); returns the last node, or nothing (with `failure` set) when
-/// the state became non-finite, a callback failed or `monitor` has a stop pending (polled every
-/// SolveMonitor::kStepsBetweenPolls steps). ModelError passes through. With `tangent`,
+/// the state became non-finite, a callback failed or `monitor` has a stop pending (polled about
+/// every millisecond: SolveMonitor::stop_pending_at). ModelError passes through. With `tangent`,
 /// the variations run along (tangent.hpp) and `jacobian` (m + m^2 square) receives
 /// d (terminal_residual, Xi_N reshaped) / d (v0, Xi0 reshaped). `after_stop`: the work after a stop
 /// in sweeps of this kind, projected by the polls until a sweep is timed (negative: by kind).
