@@ -308,16 +308,31 @@ std::vector<groups::ElementOf<G>> moved_interior(const std::vector<groups::Eleme
   return out;
 }
 
-/// v at the nodes from the steps' (constant) transported velocities: the mean of the two
-/// adjacent steps inside, linear extrapolation of the first (last) two at the ends; second order
-/// like the steps' midpoint values.
+/// v at the nodes from the steps' (constant) transported velocities, which are second-order values
+/// at the steps' midpoints t_k + h/2: at node k the cubic through the four nearest midpoints (all
+/// of them where N < 4), whose own error is O(h^4). Every node then carries the midpoint values'
+/// smooth O(h^2) error and nothing else: the mean of two adjacent steps inside and a linear
+/// extrapolation at the ends (before) added errors h^2 v''/8 and -3 h^2 v''/8, a jump that a
+/// verifier's difference quotients turned into an O(h) residual at the first interior node (the
+/// H3 oscillator, lambda = 1/2: 2.5e-4 against a threshold of 9.9e-5 at N = 400, falling only 2x
+/// per halving of h).
 template <groups::LieGroup G>
 std::vector<groups::TangentOf<G>> node_velocities(const std::vector<groups::TangentOf<G>>& step_v) {
-  const std::size_t N = step_v.size();
-  std::vector<groups::TangentOf<G>> v(N + 1);
-  for (std::size_t k = 1; k < N; ++k) v[k] = (step_v[k - 1] + step_v[k]) / 2;
-  v.front() = N == 1 ? step_v.front() : groups::TangentOf<G>((3 * step_v[0] - step_v[1]) / 2);
-  v.back() = N == 1 ? step_v.back() : groups::TangentOf<G>((3 * step_v[N - 1] - step_v[N - 2]) / 2);
+  const auto N = static_cast<std::ptrdiff_t>(step_v.size());
+  const std::ptrdiff_t used = std::min<std::ptrdiff_t>(4, N);
+  std::vector<groups::TangentOf<G>> v(step_v.size() + 1);
+  for (std::ptrdiff_t k = 0; k <= N; ++k) {
+    const std::ptrdiff_t first = std::clamp<std::ptrdiff_t>(k - used / 2, 0, N - used);  // midpoints first + 1/2 ..
+    groups::TangentOf<G> value = groups::TangentOf<G>::Zero();
+    for (std::ptrdiff_t i = first; i < first + used; ++i) {
+      double weight = 1;  // Lagrange's basis polynomial of midpoint i at the node k
+      for (std::ptrdiff_t j = first; j < first + used; ++j) {
+        if (j != i) weight *= (static_cast<double>(k - j) - 0.5) / static_cast<double>(i - j);
+      }
+      value += weight * step_v[static_cast<std::size_t>(i)];
+    }
+    v[static_cast<std::size_t>(k)] = value;
+  }
   return v;
 }
 
