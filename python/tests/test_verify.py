@@ -130,3 +130,38 @@ def test_bad_input_raises_value_error():
         cartan.verify(dataclasses.replace(r, T=3.0), model)
     with pytest.raises(ValueError, match="group"):
         cartan.verify(r, object())
+
+
+def test_an_isometry_of_the_hyperbolic_plane_does_not_change_the_verdict():
+    """A boost of H^2 moves a geodesic problem onto another of the same geometry: the solution, its
+    resolution h omega and the verdict are the same (omega from the metric speed). With the
+    representation's norm, which grows like cosh of the distance from the vertex, h omega went
+    from 0.012 at b = 0 to 1.4 at b = 6, and the exact geodesic failed as unresolved."""
+    H = cartan.HyperbolicPlane
+    resolutions = []
+    # b <= 6: further out the hyperboloid's coordinates (~cosh b) round the endpoint residual above
+    # the default tol (at b = 7 shooting stalls at |r| = 5e-10 and says so).
+    for b in (0.0, 3.0, 6.0):
+        boost = np.array([[np.cosh(b), 0, np.sinh(b)], [0, 1, 0], [np.sinh(b), 0, np.cosh(b)]])
+        r = cartan.solve(H(), T=1.0, N=100, q0=boost @ H.point(-0.4, 0.2), qT=boost @ H.point(0.5, -0.1))
+        report = cartan.verify(r)
+        assert r.success and report.passed, (b, str(report))
+        resolutions.append(report.resolution)
+    # The same problem up to rounding in coordinates of size cosh(6) ~ 2e2: equal to 1e-9.
+    assert max(resolutions) - min(resolutions) < 1e-9 * max(resolutions), resolutions
+
+
+def test_a_failed_result_off_the_manifold_is_a_failing_report_and_a_converged_one_bad_input():
+    """A diverged iterate's points may leave the manifold (collocation's Newton on the sphere: q up
+    to 1.5 off it): verify reports FAIL, saying why nothing else was checked, as `cartan verify`
+    does; it raised ValueError. The same samples in a result that says "converged" are bad input."""
+    S = cartan.Sphere
+    r = cartan.solve(S(), T=1.0, N=50, q0=S.point([1, 0, -0.3]), qT=S.point([0, 1, -0.5]), gravity=9.81)
+    assert r.success, r.message
+    q = r.q.copy()
+    q[1] *= 1.5
+    report = cartan.verify(r.replace(q=q, status="max-iterations", success=False))
+    assert not report.passed and report.verdict == "FAIL", str(report)
+    assert "not checked" in str(report) and "not on the unit sphere" in str(report)
+    with pytest.raises(ValueError, match="not on the unit sphere"):
+        cartan.verify(r.replace(q=q))

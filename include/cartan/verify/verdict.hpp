@@ -105,11 +105,13 @@ inline Check convergence_check(Status status) {
                                              "solution")};
 }
 
-/// The report on a failed result that kept no trajectory: the failing `converged` check alone.
-inline Report unchecked_failure(Status status) {
+/// The report on a failed result whose data cannot be checked (it kept no trajectory, or its
+/// samples are none: a diverged iterate's points off the manifold, non-finite values): the failing
+/// `converged` check, and `why` nothing else was checked.
+inline Report unchecked_failure(Status status, const std::string& why = "the result has no trajectory") {
   Report report;
   report.checks.push_back(convergence_check(status));
-  report.checks.push_back({"data", 0, 0, false, "not checked: the result has no trajectory"});
+  report.checks.push_back({"data", 0, 0, false, "not checked: " + why});
   return report;
 }
 

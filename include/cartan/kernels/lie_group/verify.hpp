@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -26,13 +27,19 @@ namespace cartan::verify {
 /// used: x may have any number of samples) computed to tolerance `tol` by a method of the given
 /// order (1, 2, or 4 for collocation). A `status` other than converged adds a failing
 /// `converged` check (the data are then a best iterate). Throws std::invalid_argument for an
-/// invalid trajectory (TransportedTrajectory::validate, with mu), order or tol.
+/// invalid order or tol, and an invalid trajectory (TransportedTrajectory::validate, with mu) of a
+/// converged result (a failed one's is a diverged iterate: its report fails, saying so).
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 Report verify_trajectory(const transported::TransportedProblem<G, L>& problem, transported::TransportedTrajectory<G> x, int order, double tol,
                          Status status) {
   require_result_order(order, "verify");
   require_tolerance(tol, "verify");
-  x.validate(problem.T, "verify", true, 1e-9);
+  try {
+    x.validate(problem.T, "verify", true, 1e-9);
+  } catch (const std::invalid_argument& e) {
+    if (status == Status::Converged) throw;
+    return unchecked_failure(status, e.what());  // a diverged iterate: FAIL, saying why
+  }
   const TrajectoryChecks<G, L> checks(problem.lagrangian, problem.lambda, problem.T, std::move(x));
   Figures f;
   f.resolution = checks.max_step() * checks.frequency();

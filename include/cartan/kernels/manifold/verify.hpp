@@ -19,6 +19,7 @@
 #include <functional>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 
 #include "cartan/kernels/manifold/action.hpp"
 #include "cartan/kernels/manifold/along.hpp"
@@ -79,15 +80,20 @@ class GeneralChecks {
     return verify::relative_to(drift, scale);
   }
 
-  /// max_k |E_k v_k| (the speed in the representation) + sqrt(stiffness), the stiffness
-  /// |d grad l / dq| / lambda_min(dmu/dv) by central differences along the frame: h omega is the
-  /// angle one step sweeps, the resolution the thresholds are measured in.
+  /// max_k |E_k v_k| + sqrt(stiffness), the stiffness |d grad l / dq| / lambda_min(dmu/dv) by
+  /// central differences along the frame: h omega is the angle one step sweeps, the resolution the
+  /// thresholds are measured in. The speed is the metric's where the manifold has one (so that an
+  /// isometry changes nothing: on H^2 the representation's norm of a tangent vector grows like
+  /// cosh of the distance from the vertex, and exact geodesics moved far out failed as unresolved),
+  /// else the representation's.
   double frequency() const {
     double speed = 0, stiffness = 0;
     const double s = 1e-5;
     for (std::size_t k = 0; k < size(); ++k) {
       const Vector u = x_.frame[k] * x_.v[k];
-      speed = std::max(speed, u.norm());
+      const auto metric = manifolds::metric_at(p_.manifold, x_.q[k]);
+      const double squared = metric ? u.dot(*metric * u) : -1.0;
+      speed = std::max(speed, squared > 0 ? std::sqrt(squared) : u.norm());
       manifolds::ComponentMatrixOf<M> force, mass;
       for (int i = 0; i < M::kDim; ++i) {
         const Vector e = x_.frame[k].col(i) * s;
@@ -188,7 +194,8 @@ class GeneralChecks {
 /// times (the discrete action's grid): on a collocation mesh it is not applicable, and says so, as
 /// in the Lie-group verifier. A status other than converged adds a failing `converged` check.
 /// Throws std::invalid_argument for mismatched sizes, too few samples, times that do not increase
-/// from 0 to T, a bad order or tol.
+/// from 0 to T, a bad order or tol, and for samples off the manifold or not finite in a converged
+/// result (in a failed one they are a diverged iterate's: its report fails, saying so).
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 verify::Report verify_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x, int order, double tol,
                               Status status) {
@@ -209,11 +216,16 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
     throw_invalid(where, "trajectory.t", span,
                   "must increase strictly from 0 to T = " + format_value(problem.T));
   }
-  for (std::size_t k = 0; k < n; ++k) {
-    problem.manifold.validate(x.q[k], "trajectory.q");
-    require_finite(x.v[k], where, "trajectory.v");
-    require_finite(x.mu[k], where, "trajectory.mu");
-    require_finite(x.Xi[k], where, "trajectory.Xi");
+  try {
+    for (std::size_t k = 0; k < n; ++k) {
+      problem.manifold.validate(x.q[k], "trajectory.q");
+      require_finite(x.v[k], where, "trajectory.v");
+      require_finite(x.mu[k], where, "trajectory.mu");
+      require_finite(x.Xi[k], where, "trajectory.Xi");
+    }
+  } catch (const std::invalid_argument& e) {
+    if (status == Status::Converged) throw;
+    return verify::unchecked_failure(status, e.what());  // a diverged iterate: FAIL, saying why
   }
   const GeneralChecks<M, L> checks(problem, x);
   verify::Figures f;
