@@ -14,6 +14,7 @@ import textwrap
 import time
 
 import cartan
+import numpy as np
 
 INERTIA = [2.0, 3.0, 4.0]
 GT = cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1])
@@ -29,6 +30,20 @@ CASES = [
 ]
 SPHERE = dict(T=1.0, N=2_000_000, q0=cartan.Sphere.point([1, 0, -0.3]), qT=cartan.Sphere.point([0, 1, -0.5]),
               gravity=9.81, tol=1e-13)
+
+
+def half_plane_christoffel(q):
+    """The Poincare half-plane's Levi-Civita symbols, christoffel[k, i, j] = Gamma^k_ij."""
+    g = np.zeros((2, 2, 2))
+    g[0, 0, 1] = g[0, 1, 0] = g[1, 1, 1] = -1 / q[1]
+    g[1, 0, 0] = 1 / q[1]
+    return g
+
+
+# A space and a potential of Python callbacks (a step takes milliseconds, not microseconds): polls
+# between steps must adapt to that pace (issue 44).
+CHART = dict(T=50.0, N=2000, q0=[-0.5, 0.8], qT=[1.2, 1.6], frame0=0.8 * np.eye(2), tol=1e-13,
+             potential=lambda q: 0.5 * q[0] ** 2, potential_gradient=lambda q: np.array([q[0], 0.0]))
 
 
 def timed(solve, **kwargs):
@@ -52,6 +67,11 @@ def time_limits(limits):
         assert r.status == "time-limit", r.status
         print(f"| solve_general (sphere, auto) | {SPHERE['N']} | {limit:g} | {r.solve_time:.3f} | {call:.3f} | "
               f"{call / limit - 1:+.1%} |")
+        chart = cartan.Chart(half_plane_christoffel, dim=2, name="half-plane")
+        for method in ("shooting", "collocation", "auto"):
+            r, call = timed(cartan.solve, space=chart, method=method, time_limit=limit, **CHART)
+            print(f"| Chart of Python callbacks, {method} | {CHART['N']} | {limit:g} | {r.solve_time:.3f} "
+                  f"({r.status}) | {call:.3f} | {call / limit - 1:+.1%} |")
 
 
 SWEEP_CHILD = textwrap.dedent("""

@@ -12,18 +12,25 @@ std::string format_value(double x) {
   return std::string(buffer, end.ptr);
 }
 
+namespace {
+/// A matrix of more entries than a group's 4 x 4 element is cut after this many characters, "...]"
+/// (about 8 numbers): a message names a value, and 10^4 entries of a collocation guess flooded it
+/// (18 KB).
+constexpr Eigen::Index kWholeEntries = 16;
+constexpr std::size_t kMaxValueCharacters = 160;
+}  // namespace
+
 std::string format_value(const Eigen::Ref<const Eigen::MatrixXd>& x) {
-  std::ostringstream out;
-  out << '[';
+  std::string out = "[";
   for (Eigen::Index i = 0; i < x.rows(); ++i) {
-    if (i > 0) out << "; ";
+    if (i > 0) out += "; ";
     for (Eigen::Index j = 0; j < x.cols(); ++j) {
-      if (j > 0) out << ", ";
-      out << format_value(x(i, j));
+      if (x.size() > kWholeEntries && out.size() > kMaxValueCharacters) return out + "...]";
+      if (j > 0) out += ", ";
+      out += format_value(x(i, j));
     }
   }
-  out << ']';
-  return out.str();
+  return out + ']';
 }
 
 std::string quote_input(std::string_view text) {

@@ -70,6 +70,8 @@ nlohmann::json result_row(std::size_t index, const GridPoint& point, const nlohm
     row[key] = result.at(key);
   }
   row["v0"] = result.at("v").at(0);
+  row["action"] = result.contains("action") ? result.at("action") : nlohmann::json(nullptr);
+  if (result.contains("frame0")) row["frame0"] = result.at("frame0");  // the frame v0 is in (a manifold's)
   if (trajectories) {
     for (const char* key : {"t", result.contains("q") ? "q" : "g", "v"}) row[key] = result.at(key);
   }
@@ -81,7 +83,7 @@ nlohmann::json error_row(std::size_t index, const GridPoint& point, const std::s
   row["status"] = "error";
   row["message"] = message;
   row["method"] = point.spec.method;
-  for (const char* key : {"branch", "terminal_error", "iterations", "solve_time_s", "v0"}) row[key] = nullptr;
+  for (const char* key : {"branch", "terminal_error", "iterations", "solve_time_s", "action", "v0"}) row[key] = nullptr;
   return row;
 }
 
@@ -101,15 +103,15 @@ nlohmann::json shard_json(const Shard& shard, std::size_t grid_points) {
 }
 
 std::string table_csv(const std::vector<nlohmann::json>& rows) {
-  // v0 has the algebra's dimension (6 on se3): as many columns as the longest v0 of the rows, the
-  // shorter ones (other groups of a --grid, error rows) padded with empty fields.
-  std::size_t width = 3;
+  // v0 has the space's dimension (2 on the sphere, 6 on se3): as many columns as the longest v0 of
+  // the rows, the shorter ones (other groups of a --grid, error rows) padded with empty fields.
+  std::size_t width = 0;
   for (const auto& row : rows) {
     if (row.at("v0").is_array()) width = std::max(width, row.at("v0").size());
   }
   std::ostringstream out;
   out << "index,lambda,endpoint_key,endpoint,status,message,method,branch,terminal_error,iterations_outer,"
-         "iterations_inner,iterations_sweeps,solve_time_s";
+         "iterations_inner,iterations_sweeps,solve_time_s,action";
   for (std::size_t i = 1; i <= width; ++i) out << ",v0_" << i;
   out << '\n';
   for (const auto& row : rows) {
@@ -121,7 +123,8 @@ std::string table_csv(const std::vector<nlohmann::json>& rows) {
         << ',' << csv_field(row.at("method")) << ',' << csv_field(row.at("branch")) << ','
         << csv_field(row.at("terminal_error")) << ',' << csv_member(iterations, "outer") << ','
         << csv_member(iterations, "inner") << ',' << csv_member(iterations, "sweeps") << ','
-        << csv_field(row.at("solve_time_s"));
+        << csv_field(row.at("solve_time_s")) << ','
+        << csv_field(row.contains("action") ? row.at("action") : nlohmann::json(nullptr));  // tables before the column
     for (std::size_t i = 0; i < width; ++i) out << ',' << (i < v0.size() ? csv_element(v0, i) : std::string());
     out << '\n';
   }

@@ -27,6 +27,40 @@ struct Progress {
   double residual = 0;
 };
 
+/// The steps between a loop's polls, a power of two adapted to the loop's pace so that polls are
+/// 0.25-1 ms apart: from 1, doubled while two polls are less than kPollsApart / 4 apart (up to
+/// `most`), halved while they are more than kPollsApart apart (a step of Python callbacks takes
+/// milliseconds, one of C++ arithmetic microseconds). The sweeps' (SolveMonitor::stop_pending_at)
+/// and collocation's sweeps of f.
+class PollPacer {
+ public:
+  using Clock = std::chrono::steady_clock;
+  /// The time the polls aim to be apart at most.
+  static constexpr std::chrono::microseconds kPollsApart{1000};
+
+  explicit PollPacer(long most) : most_(most) {}
+  /// Whether the loop polls at its step k (k + 1 a multiple of the interval).
+  bool due(long k) const { return ((k + 1) & (interval_ - 1)) == 0; }
+  /// At a poll: the time now, the interval adapted to the time since the previous poll (or since
+  /// `since`, a loop's beginning, when that is later).
+  Clock::time_point polled(Clock::time_point since = {}) {
+    const Clock::time_point now = Clock::now();
+    const auto apart = now - std::max(since, last_);
+    last_ = now;
+    if (apart > kPollsApart && interval_ > 1) {
+      interval_ /= 2;
+    } else if (apart < kPollsApart / 4 && interval_ < most_) {
+      interval_ *= 2;
+    }
+    return now;
+  }
+
+ private:
+  long most_;
+  long interval_ = 1;
+  Clock::time_point last_ = Clock::now();
+};
+
 class SolveMonitor {
  public:
   using ProgressCallback = std::function<void(const Progress&)>;
@@ -47,26 +81,16 @@ class SolveMonitor {
   /// The most steps a sweep runs between two polls (where steps take microseconds).
   static constexpr int kStepsBetweenPolls = 1024;
   /// What a sweep of `steps` steps, begun at `begin`, polls at its step k: stop_pending() every
-  /// so many steps, false between them and without a monitor. The interval is a power of two,
-  /// adapted to the measured pace so that polls are 0.25-1 ms apart: from 1 step, doubled while
-  /// two polls are less than kPollsApart / 4 apart (to kStepsBetweenPolls), halved while they are
-  /// more than kPollsApart apart (a step of Python callbacks takes milliseconds: every 1024 steps
-  /// was seconds). Its message, when true: stopped_message(k). Until the solver has timed a
+  /// so many steps (a PollPacer's, at most kStepsBetweenPolls: every 1024 steps of Python callbacks
+  /// was seconds), false between them and without a monitor. Its message, when true: stopped_message(k). Until the solver has timed a
   /// whole sweep (reserve_after_stop), a poll from step kStepsBetweenPolls on also projects the
   /// reserve from this sweep's pace:
   /// `after_stop` times the whole sweep's projected time (the work after a stop, in sweeps of this
   /// kind), so that a sweep longer than the time limit itself stops in time for what follows.
   static bool stop_pending_at(const SolveMonitor* monitor, int k, int steps,
                               std::chrono::steady_clock::time_point begin, double after_stop) {
-    if (monitor == nullptr || ((k + 1) & (monitor->poll_interval_ - 1)) != 0) return false;
-    const auto now = std::chrono::steady_clock::now();
-    const auto apart = now - std::max(begin, monitor->last_poll_);
-    monitor->last_poll_ = now;
-    if (apart > kPollsApart && monitor->poll_interval_ > 1) {
-      monitor->poll_interval_ /= 2;
-    } else if (apart < kPollsApart / 4 && monitor->poll_interval_ < kStepsBetweenPolls) {
-      monitor->poll_interval_ *= 2;
-    }
+    if (monitor == nullptr || !monitor->pacer_.due(k)) return false;
+    const auto now = monitor->pacer_.polled(begin);
     // The pace is projected from kStepsBetweenPolls steps on (as before the interval adapted): the
     // first steps' pace (cold caches, first pages) projected a reserve of seconds, and a 0.5 s
     // limit stopped a solve at 0.12 s.
@@ -96,8 +120,6 @@ class SolveMonitor {
   /// poll() of `monitor`, false without one.
   static bool poll(const SolveMonitor* monitor) { return monitor != nullptr && monitor->poll(); }
   static constexpr std::chrono::milliseconds kCallbackInterval{20};
-  /// The time a sweep's polls aim to be apart at most (stop_pending_at).
-  static constexpr std::chrono::microseconds kPollsApart{1000};
   /// A copy reporting under `name`, or nothing without a monitor (for an options' monitor pointer).
   static std::optional<SolveMonitor> staged(const SolveMonitor* monitor, std::string name) {
     return monitor == nullptr ? std::nullopt : std::optional<SolveMonitor>(monitor->stage(std::move(name)));
@@ -174,8 +196,7 @@ class SolveMonitor {
   std::shared_ptr<Deadline> deadline_;
   std::shared_ptr<const std::atomic<bool>> cancel_;
   mutable bool stopped_ = false;
-  mutable int poll_interval_ = 1;  ///< stop_pending_at's steps between polls (a power of two)
-  mutable std::chrono::steady_clock::time_point last_poll_{};  ///< its last poll
+  mutable PollPacer pacer_{kStepsBetweenPolls};  ///< stop_pending_at's steps between polls
   mutable std::chrono::steady_clock::time_point next_callback_{};  ///< poll()'s next call of stop_
 };
 

@@ -219,12 +219,13 @@ def solve(lagrangian=None, *, space=None, lam=None, T, N, gT=None, g0=None, meth
 
     On a manifold (docs/general-connections.md; the library's general::solve): on [0, T] with N steps,
     q(0) = q0, q(T) = qT, for l(q, v) with v the components of the transported velocity in the frame
-    `frame0` of T_{q0}Q ((d, m); default manifold.tangent_basis(q0), orthonormal in a Chart's
-    metric). Points q0, qT have the manifold's `point_shape` and must be valid points. The
+    `frame0` of T_{q0}Q ((d, m); default manifold.default_frame(q0, qT): on the sphere and the
+    hyperbolic plane e1 towards qT along the minimal geodesic, elsewhere tangent_basis(q0),
+    orthonormal in a Chart's metric). Points q0, qT have the manifold's `point_shape` and must be valid points. The
     Lagrangian, either l = 1/2 v.A v - V(q): inertia A, a symmetric positive-definite (m, m) matrix or
     its (m,) diagonal (default identity); potential V(q) -> float with potential_gradient(q) -> an
     ambient (d,) covector zeta with zeta . x = d/de V(step(q, e x)) for tangent x (both or neither; on
-    a group, the left-trivialised gradient); or gravity G, on the Sphere only: V = G q[2]; or an
+    a group, the left-trivialised gradient); or gravity G, on the sphere, the hyperbolic plane and Euclidean space: V = G q[last]; or an
     object (the first argument, with `space` the manifold) with methods value(t, q, v), momentum(t, q,
     v) (= dl/dv, (m,)), velocity(t, q, mu) (the inverse Legendre map) and point_gradient(t, q, v) (an
     ambient (d,) covector with zeta . x = d/de l(t, step(q, e x), v)), taking and returning NumPy

@@ -714,7 +714,9 @@ class Sphere(metaclass=type):
         """The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1]."""
     def _dense(self, result: Any, method: str, times: Any) -> dict: ...
     def tangent_basis(self, q: Any) -> NDArray[numpy.float64]:
-        """A (d, m) basis of T_qQ (orthonormal where there is a metric): the default frame0."""
+        """A (d, m) basis of T_qQ (orthonormal where there is a metric)."""
+    def default_frame(self, q0: Any, qT: Any) -> NDArray[numpy.float64]:
+        """The default frame0 of a problem from q0 to qT, (d, m): on the sphere and the hyperbolic plane e1 the unit tangent along the minimal geodesic towards qT and e2 = J (q0 x e1) (where that is undefined, equal or antipodal endpoints, tangent_basis(q0), and a Lagrangian that depends on the frame needs frame0); elsewhere tangent_basis(q0)."""
     def metric(self, q: Any) -> Any:
         """The (d, d) matrix of the metric the connection preserves, or None."""
     def torsion_components(self, q: Any, frame: Any = ...) -> NDArray[numpy.float64]:
@@ -763,7 +765,9 @@ class HyperbolicPlane(metaclass=type):
         """The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1]."""
     def _dense(self, result: Any, method: str, times: Any) -> dict: ...
     def tangent_basis(self, q: Any) -> NDArray[numpy.float64]:
-        """A (d, m) basis of T_qQ (orthonormal where there is a metric): the default frame0."""
+        """A (d, m) basis of T_qQ (orthonormal where there is a metric)."""
+    def default_frame(self, q0: Any, qT: Any) -> NDArray[numpy.float64]:
+        """The default frame0 of a problem from q0 to qT, (d, m): on the sphere and the hyperbolic plane e1 the unit tangent along the minimal geodesic towards qT and e2 = J (q0 x e1) (where that is undefined, equal or antipodal endpoints, tangent_basis(q0), and a Lagrangian that depends on the frame needs frame0); elsewhere tangent_basis(q0)."""
     def metric(self, q: Any) -> Any:
         """The (d, d) matrix of the metric the connection preserves, or None."""
     def torsion_components(self, q: Any, frame: Any = ...) -> NDArray[numpy.float64]:
@@ -813,7 +817,9 @@ class Euclidean(metaclass=type):
         """The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1]."""
     def _dense(self, result: Any, method: str, times: Any) -> dict: ...
     def tangent_basis(self, q: Any) -> NDArray[numpy.float64]:
-        """A (d, m) basis of T_qQ (orthonormal where there is a metric): the default frame0."""
+        """A (d, m) basis of T_qQ (orthonormal where there is a metric)."""
+    def default_frame(self, q0: Any, qT: Any) -> NDArray[numpy.float64]:
+        """The default frame0 of a problem from q0 to qT, (d, m): on the sphere and the hyperbolic plane e1 the unit tangent along the minimal geodesic towards qT and e2 = J (q0 x e1) (where that is undefined, equal or antipodal endpoints, tangent_basis(q0), and a Lagrangian that depends on the frame needs frame0); elsewhere tangent_basis(q0)."""
     def metric(self, q: Any) -> Any:
         """The (d, d) matrix of the metric the connection preserves, or None."""
     def torsion_components(self, q: Any, frame: Any = ...) -> NDArray[numpy.float64]:
@@ -863,7 +869,9 @@ class Chart(metaclass=type):
         """The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1]."""
     def _dense(self, result: Any, method: str, times: Any) -> dict: ...
     def tangent_basis(self, q: Any) -> NDArray[numpy.float64]:
-        """A (d, m) basis of T_qQ (orthonormal where there is a metric): the default frame0."""
+        """A (d, m) basis of T_qQ (orthonormal where there is a metric)."""
+    def default_frame(self, q0: Any, qT: Any) -> NDArray[numpy.float64]:
+        """The default frame0 of a problem from q0 to qT, (d, m): on the sphere and the hyperbolic plane e1 the unit tangent along the minimal geodesic towards qT and e2 = J (q0 x e1) (where that is undefined, equal or antipodal endpoints, tangent_basis(q0), and a Lagrangian that depends on the frame needs frame0); elsewhere tangent_basis(q0)."""
     def metric(self, q: Any) -> Any:
         """The (d, d) matrix of the metric the connection preserves, or None."""
     def torsion_components(self, q: Any, frame: Any = ...) -> NDArray[numpy.float64]:
@@ -908,7 +916,9 @@ class GroupManifold(metaclass=type):
         """The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1]."""
     def _dense(self, result: Any, method: str, times: Any) -> dict: ...
     def tangent_basis(self, q: Any) -> NDArray[numpy.float64]:
-        """A (d, m) basis of T_qQ (orthonormal where there is a metric): the default frame0."""
+        """A (d, m) basis of T_qQ (orthonormal where there is a metric)."""
+    def default_frame(self, q0: Any, qT: Any) -> NDArray[numpy.float64]:
+        """The default frame0 of a problem from q0 to qT, (d, m): on the sphere and the hyperbolic plane e1 the unit tangent along the minimal geodesic towards qT and e2 = J (q0 x e1) (where that is undefined, equal or antipodal endpoints, tangent_basis(q0), and a Lagrangian that depends on the frame needs frame0); elsewhere tangent_basis(q0)."""
     def metric(self, q: Any) -> Any:
         """The (d, d) matrix of the metric the connection preserves, or None."""
     def torsion_components(self, q: Any, frame: Any = ...) -> NDArray[numpy.float64]:

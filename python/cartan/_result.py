@@ -28,7 +28,7 @@ class Problem:
     manifold (any of cartan.MANIFOLDS). lagrangian: the group model (built in or defined in Python),
     a manifold's Lagrangian object, or None where l = 1/2 v.A v - V(q) is given by the terms
     `inertia`, `potential`, `potential_gradient`, `gravity`. q0, qT: the boundary points (a group's
-    elements). frame0: the frame of T_q0 Q the components are taken in (None: tangent_basis(q0)).
+    elements). frame0: the frame of T_q0 Q the components are taken in (None: space.default_frame(q0, qT)).
     model: how a result file names the Lagrangian ("free-rigid-body", ... for a built-in model,
     "python:<type name>" for one defined in Python; on a manifold "" for the particle given by its
     terms, "python:<type name>" for a Lagrangian object and "python:potential" for a potential
@@ -278,8 +278,8 @@ class Result:
         return state
 
     def sol(self, t):
-        """Dense output: the solution at the time or times `t` in [t_0, t_N] = [0, T] (outside:
-        ValueError), a leading axis for an array `t`; at a node the sample itself. The interpolants
+        """Dense output: the solution at the time or times `t` in [t_0, t_N] = [0, T] (a time past an
+        end by a few roundings, 16 machine epsilons relative, is that end; further: ValueError), a leading axis for an array `t`; at a node the sample itself. The interpolants
         are the library's.
 
         A group model's problem (include/cartan/kernels/lie_group/dense.hpp), a State (g, v, mu, xi): on

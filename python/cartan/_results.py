@@ -105,7 +105,7 @@ def _manifold_record(r):
     else:
         model = "particle" if p.potential is None else PYTHON_MODEL + "potential"
     m = np.shape(r.v)[1]
-    frame0 = np.asarray(p.frame0 if p.frame0 is not None else space.tangent_basis(p.q0), dtype=float)
+    frame0 = np.asarray(p.frame0 if p.frame0 is not None else space.default_frame(p.q0, p.qT), dtype=float)
     connection, lam, metric, alpha = (None, math.nan, np.zeros(0), np.zeros(0)) if chart else _connection_record(space)
     return {"kind": "manifold", "manifold": PYTHON_MODEL + space.name if chart else space.name, "model": model,
             "mass": _inertia_numbers(np.eye(m) if p.inertia is None else p.inertia),

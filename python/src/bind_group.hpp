@@ -5,8 +5,10 @@
 // (a, b, c) for the Heisenberg group; algebra vectors and covectors are 1-D of length dim.
 
 #include <string>
+#include <vector>
 
 #include "cartan/groups/group.hpp"
+#include "cartan/models/catalogue.hpp"
 #include "convert.hpp"
 
 namespace cartan::python {
@@ -24,6 +26,15 @@ struct Args {
   std::string group;
   groups::ElementOf<G> element(const py::handle& x, std::string_view method, std::string_view name) const {
     return to_eigen<groups::ElementOf<G>>(x, group + "." + std::string(method), name);
+  }
+  /// A problem's endpoint as every door reads one (models::check_element, the CLI's and a result
+  /// file's rule): an element within kElementTolerance, projected onto the group, so that input
+  /// rounded to a few digits (a CLI file's gT, off by 4e-8) is the exact element the CLI solves.
+  groups::ElementOf<G> endpoint(const py::handle& x, std::string_view method, std::string_view name) const {
+    const std::string where = group + "." + std::string(method);
+    const std::vector<double> numbers = models::element_numbers(element(x, method, name));
+    models::find_model(G::name(), {}, where).check_element(numbers, where, std::string(name));
+    return models::element_of<G>(numbers);
   }
   groups::TangentOf<G> tangent(const py::handle& x, std::string_view method, std::string_view name) const {
     return to_eigen<groups::TangentOf<G>>(x, group + "." + std::string(method), name);

@@ -104,7 +104,6 @@ template <groups::LieGroup G>
 std::vector<mechanics::LagrangianSample<G>> check_samples(const py::object& samples, mechanics::CheckLagrangianOptions options,
                                                           const Args<G>& a) {
   const std::string where = "check_lagrangian";
-  const auto repr_of = [](const py::handle& x) { return quote_input(py::repr(x).cast<std::string>()); };
   if (py::isinstance<py::int_>(samples) && !py::isinstance<py::bool_>(samples)) {
     options.samples = samples.cast<int>();
     return mechanics::lagrangian_samples<G>(options);

@@ -149,8 +149,8 @@ struct SolveCall {
   SolveCall(const Args<G>& a, const py::object& g0_, const py::object& gT_, const SolveRequest& request,
             const py::object& v0, const py::object& xi0, const py::object& start, const py::object& progress)
       : options(solve_options(request, "cartan.solve")),
-        g0(g0_.is_none() ? G::identity() : a.element(g0_, "solve", "g0")),
-        gT(a.element(gT_, "solve", "gT")) {
+        g0(g0_.is_none() ? G::identity() : a.endpoint(g0_, "solve", "g0")),
+        gT(a.endpoint(gT_, "solve", "gT")) {
     options.monitor = python_monitor(progress);
     if (!v0.is_none()) guess.v0 = a.tangent(v0, "solve", "v0");
     if (!xi0.is_none()) guess.xi0 = a.tangent(xi0, "solve", "xi0");
@@ -200,7 +200,7 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
                                   const py::object& g0, const py::object& gT, int order, double tol,
                                   const std::string& status) {
     const transported::TransportedTrajectory<G> x = trajectory_of<G>(result, a, "verify", "result", true);
-    const groups::ElementOf<G> first = a.element(g0, "verify", "g0"), last = a.element(gT, "verify", "gT");
+    const groups::ElementOf<G> first = a.endpoint(g0, "verify", "g0"), last = a.endpoint(gT, "verify", "gT");
     const Status outcome = parse_enum<Status>(status, "cartan.verify");
     if (x.t.empty() && outcome != Status::Converged) return report_dict(verify::unchecked_failure(outcome));
     const int steps = std::max<int>(1, static_cast<int>(x.t.size()) - 1);
@@ -231,8 +231,8 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
     const transported::TransportedTrajectory<G> x = trajectory_of<G>(result, a, "sol", "result", true);
     const Array t = as_array(times, a.group + ".sol", "t");
     transported::DenseSamples<G> d = transported::dense_output<G>(
-        x, lambda, parse_enum<cartan::Method>(method, "SolveResult.sol"), std::vector<double>(t.data(), t.data() + t.size()),
-        "SolveResult.sol");
+        x, lambda, parse_enum<cartan::Method>(method, "Result.sol"), std::vector<double>(t.data(), t.data() + t.size()),
+        "Result.sol");
     py::dict out;
     out["g"] = to_numpy(std::move(d.g));
     out["v"] = to_numpy(std::move(d.v));

@@ -27,6 +27,9 @@ using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 /// "(3,)" or "(3, 3)".
 std::string shape_text(const py::array& a);
+/// x in Python's notation for a message: ascii(x) (a string keeps its own quotes, non-ASCII and
+/// control characters escaped) on one line, cut after 60 characters.
+std::string repr_of(const py::handle& x);
 /// The shape an Eigen type is read from and written to: (rows,) for vectors, (rows, cols) else.
 std::string shape_text(Eigen::Index rows, Eigen::Index cols, bool vector);
 

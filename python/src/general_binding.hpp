@@ -79,14 +79,17 @@ decltype(auto) visit_holder(const Holder& holder, F&& f) {
 
 // ---- arguments --------------------------------------------------------------------------------
 
-/// repr(x) for a message (quoted and cut, as user input).
-inline std::string repr_of(const py::handle& x) { return quote_input(py::repr(x).cast<std::string>()); }
-
 template <class M>
 PointOf<M> point_arg(const M& manifold, const py::handle& q, const std::string& where, const char* name) {
   const PointOf<M> p = to_eigen<PointOf<M>>(q, where, name);
-  manifold.validate(p, name);
-  return p;
+  if constexpr (requires { typename M::Group; }) {  // a group's element as a group model's endpoint
+    const std::vector<double> numbers = models::element_numbers(p);
+    models::find_model(M::Group::name(), {}, where).check_element(numbers, where, name);
+    return models::element_of<typename M::Group>(numbers);
+  } else {
+    manifold.validate(p, name);
+    return p;
+  }
 }
 
 /// A Python number as T (double or int); throws std::invalid_argument naming it otherwise.
@@ -228,7 +231,7 @@ void def_manifold_methods(py::class_<Holder>& cls, const std::string& name) {
   // this manifold at the 1-d array `times`, as a dict of q, frame, v, mu, Xi with one row per time.
   cls.def("_dense", [](const Holder& h, const py::object& result, const std::string& method, const py::object& times) {
     return visit_holder(h, [&](const auto& m) {
-      constexpr const char* where = "GeneralSolveResult.sol";
+      constexpr const char* where = "Result.sol";
       auto x = trajectory_of(m, result, where, "result");
       const Array t = as_array(times, where, "t");
       auto d = general::dense_output(m, x, parse_enum<cartan::Method>(method, where),
@@ -244,7 +247,17 @@ void def_manifold_methods(py::class_<Holder>& cls, const std::string& name) {
   }, py::arg("result"), py::arg("method"), py::arg("times"));
   cls.def("tangent_basis", [name](const Holder& h, const py::object& q) {
     return visit_holder(h, [&](const auto& m) { return to_numpy(m.tangent_basis(point_arg(m, q, name + ".tangent_basis", "q"))); });
-  }, py::arg("q"), "A (d, m) basis of T_qQ (orthonormal where there is a metric): the default frame0.");
+  }, py::arg("q"), "A (d, m) basis of T_qQ (orthonormal where there is a metric).");
+  cls.def("default_frame", [name](const Holder& h, const py::object& q0, const py::object& qT) {
+    return visit_holder(h, [&](const auto& m) {
+      const std::string where = name + ".default_frame";
+      return to_numpy(manifolds::default_frame(m, point_arg(m, q0, where, "q0"), point_arg(m, qT, where, "qT")));
+    });
+  }, py::arg("q0"), py::arg("qT"),
+     "The default frame0 of a problem from q0 to qT, (d, m): on the sphere and the hyperbolic plane e1 the unit "
+     "tangent along the minimal geodesic towards qT and e2 = J (q0 x e1) (where that is undefined, equal or "
+     "antipodal endpoints, tangent_basis(q0), and a Lagrangian that depends on the frame needs frame0); "
+     "elsewhere tangent_basis(q0).");
   cls.def("metric", [name](const Holder& h, const py::object& q) {
     return visit_holder(h, [&](const auto& m) -> py::object {
       const auto g = manifolds::metric_at(m, point_arg(m, q, name + ".metric", "q"));
@@ -406,6 +419,16 @@ general::ErasedLagrangian<M> request_lagrangian(const M&, const GeneralRequest& 
   return general::erased_particle<M>(inertia, std::move(potential), std::move(gradient));
 }
 
+/// Whether the request's Lagrangian depends on the frame at q0 (manifolds::require_frame_towards):
+/// an object of the user's, or an inertia that is not a multiple of the identity.
+template <int m>
+bool depends_on_frame(const GeneralRequest& r) {
+  if (!r.lagrangian.is_none()) return true;
+  if (r.inertia.is_none()) return false;
+  const Square<m> inertia = matrix_or_diagonal<m>(r.inertia, kWhere, "inertia");
+  return (inertia - inertia(0, 0) * Square<m>::Identity()).cwiseAbs().maxCoeff() != 0;
+}
+
 /// Runs a solve or check f() on a manifold whose geometry may call Python (`chart` non-null, with
 /// the GIL held): the chart's first callback error is re-raised after it, in place of whatever
 /// the solver made of it.
@@ -425,12 +448,12 @@ auto run_on_chart(ChartCallbacks* chart, F&& f) {
 /// `name` of `object` (an attribute), or an error naming what `object` should be.
 inline py::object field_of(const py::object& object, const char* name, const char* where, const char* what) {
   if (!py::hasattr(object, name)) {
-    throw_invalid(where, what, repr_of(object), std::string("has no field ") + name + " (give a GeneralSolveResult)");
+    throw_invalid(where, what, repr_of(object), std::string("has no field ") + name + " (give a cartan.Result)");
   }
   return object.attr(name);
 }
 
-/// The trajectory (t, q, frame, v, mu, Xi) of a GeneralSolveResult-like object, each field read as
+/// The trajectory (t, q, frame, v, mu, Xi) of a cartan.Result-like object, each field read as
 /// a whole array (to_eigen_list: one shape check, no Python object per row) and each point checked
 /// on the manifold, with errors naming `what`.
 template <class M>
@@ -485,7 +508,11 @@ struct PosedRequest {
       : problem{manifold, request_lagrangian(manifold, r, state, python_object, python), r.T, r.N,
                 point_arg(manifold, r.q0, kWhere, "q0"), point_arg(manifold, r.qT, kWhere, "qT"), std::nullopt},
         options(solve_options(r, kWhere)) {
-    if (!r.frame0.is_none()) problem.frame0 = to_eigen<FrameOf<M>>(r.frame0, kWhere, "frame0");
+    if (!r.frame0.is_none()) {
+      problem.frame0 = to_eigen<FrameOf<M>>(r.frame0, kWhere, "frame0");
+    } else if (depends_on_frame<M::kDim>(r)) {
+      manifolds::require_frame_towards(manifold, problem.q0, problem.qT, kWhere);
+    }
     if (!r.v0.is_none()) guess.v0 = finite_arg<ComponentsOf<M>>(r.v0, kWhere, "v0");
     if (!r.Xi0.is_none()) guess.Xi0 = finite_arg<ComponentMatrixOf<M>>(r.Xi0, kWhere, "Xi0");
     if (!r.guess.is_none()) guess.trajectory = trajectory_of(manifold, r.guess, kWhere, "guess");
@@ -594,7 +621,7 @@ py::dict along_on(const M& manifold, const GeneralRequest& r, const py::dict& fi
 }
 
 /// The library's general verifier (kernels/manifold/verify.hpp) on `result` (any object with T, q0, qT,
-/// tol, order, status, t, q, frame, v, mu, Xi, e.g. a GeneralSolveResult) for the Lagrangian of
+/// tol, order, status, t, q, frame, v, mu, Xi, e.g. a cartan.Result) for the Lagrangian of
 /// the request (as solve_general takes it).
 template <class M>
 py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object& result, ChartCallbacks* chart) {
@@ -602,7 +629,13 @@ py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object&
   const auto field = [&](const char* name) { return field_of(result, name, where, "result"); };
   const Status status = parse_enum<Status>(py::cast<std::string>(field("status")), where);
   if (py::len(field("t")) == 0 && status != Status::Converged) return report_dict(verify::unchecked_failure(status));
-  const general::GeneralTrajectory<M> x = trajectory_of(manifold, result, where, "result");
+  general::GeneralTrajectory<M> x;
+  try {
+    x = trajectory_of(manifold, result, where, "result");
+  } catch (const std::invalid_argument& e) {
+    if (status == Status::Converged) throw;
+    return report_dict(verify::unchecked_failure(status, e.what()));  // a diverged iterate (verify_general)
+  }
   if (x.t.empty()) throw_invalid(where, "result.t", "(empty)", "needs the samples of a solution");
   auto state = std::make_shared<CallbackState>();
   std::optional<PythonManifoldLagrangian<M>> python_object;

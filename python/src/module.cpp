@@ -5,6 +5,7 @@
 #include <atomic>
 #include <memory>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "bind_all.hpp"
@@ -20,6 +21,18 @@ std::string shape_text(const py::array& a) {
   for (py::ssize_t i = 0; i < a.ndim(); ++i) out << (i ? ", " : "") << a.shape(i);
   out << (a.ndim() == 1 ? ",)" : ")");
   return out.str();
+}
+
+std::string repr_of(const py::handle& x) {
+  constexpr std::size_t kMaxShown = 60;
+  const std::string ascii = py::str(py::module_::import("builtins").attr("ascii")(x)).cast<std::string>();
+  std::string text;  // one line: a run of white space (an array's rows) as one space
+  for (const char c : ascii) {
+    const bool space = c == ' ' || c == '\n' || c == '\t' || c == '\r';
+    if (!space || (!text.empty() && text.back() != ' ')) text += space ? ' ' : c;
+  }
+  if (text.size() > kMaxShown) text = text.substr(0, kMaxShown) + "...";
+  return text;
 }
 
 std::string shape_text(Eigen::Index rows, Eigen::Index cols, bool vector) {

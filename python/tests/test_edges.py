@@ -9,6 +9,9 @@ failed before its fix.
 * An exception a chart's field raises during a solve marks the point outside the chart, as NaN does
   (it aborted the solve).
 * A manifold result carries its energy and cumulative action, as a group model's does.
+* Integers beyond 32 bits and more steps than memory holds are a ValueError naming them; a value in
+  a message is written once, in Python's notation; an endpoint is read as the CLI reads it (within
+  1e-6 of the group, projected); sol at an end up to a few roundings is that end.
 """
 import numpy as np
 import pytest
@@ -31,6 +34,11 @@ def test_the_last_sample_is_at_T_and_sol_reaches_it(N):
     assert g.converged, g.message
     assert g.t[-1] == 1.0
     np.testing.assert_array_equal(g.sol(1.0).g, g.g[-1])
+    # A time past an end by a few roundings is that end (it was "outside [0, T]"); further is not.
+    np.testing.assert_array_equal(r.sol(1.0 + 1e-15).q, r.q[-1])
+    np.testing.assert_array_equal(g.sol([-1e-16, 1.0 + 1e-15]).g, g.g[[0, -1]])
+    with pytest.raises(ValueError, match="is outside"):
+        r.sol(1.0 + 1e-12)
 
 
 # ---- a chart's metric gives its default frame ----------------------------------------------------
@@ -149,3 +157,74 @@ def test_a_manifold_result_carries_its_energy_and_action():
     assert r.cumulative_action[0] == 0 and r.cumulative_action[-1] == r.action
     assert r.action == pytest.approx(0.5 * d**2 / T, rel=1e-3)
     np.testing.assert_allclose(r.u, np.einsum("kij,kj->ki", r.frame, r.v), atol=1e-14)
+
+
+# ---- integers beyond the library's range ---------------------------------------------------------
+
+
+@pytest.mark.parametrize("problem", ["group", "manifold"])
+@pytest.mark.parametrize("key, value", [("N", 2**31), ("max_iterations", -2**31 - 1), ("samples", 2**40)])
+def test_integers_beyond_32_bits_are_a_value_error_naming_them(problem, key, value):
+    """2**31 steps was pybind11's TypeError "incompatible function arguments" for an integer."""
+    if problem == "group":
+        args = dict(lagrangian=cartan.RigidBody([1.0, 2.0, 3.0]), lam=0.5, gT=cartan.SO3.exp(np.array([0.1, 0.2, 0.3])))
+    else:
+        args = dict(lagrangian=cartan.Sphere(), q0=np.array([1.0, 0, 0]), qT=np.array([0.0, 1, 0]))
+    args.update(T=1.0, N=10)
+    args[key] = value
+    with pytest.raises(ValueError, match=f"cartan.solve: {key} = {value} is out of range"):
+        cartan.solve(**args)
+    if key == "N":  # within 32 bits, but more steps than memory holds: refused at once, naming N
+        args["N"] = 2**31 - 1
+        with pytest.raises(ValueError, match=r"N = 2147483647 needs at least 2\.05e\+03 GiB"):
+            cartan.solve(**args)
+
+
+# ---- a value in a message is written once, in Python's notation ----------------------------------
+
+
+def test_a_value_in_a_message_is_quoted_once():
+    """A string was quoted twice (lam = "'x'"); a long value is cut, control characters escaped."""
+    with pytest.raises(ValueError, match=r"^GroupManifold: lam = 'x' is not a number$"):
+        cartan.GroupManifold("so3", "cartan-schouten", lam="x")
+    with pytest.raises(ValueError, match=r"^GroupManifold: group = 'so5' is not one of"):
+        cartan.GroupManifold("so5", "cartan-schouten", lam=0.5)
+    with pytest.raises(ValueError, match=r"lam = 'a\\nb' is not a number"):
+        cartan.GroupManifold("so3", "cartan-schouten", lam="a\nb")
+    with pytest.raises(ValueError, match=r"lam = 'y{59}\.\.\. is not a number"):
+        cartan.GroupManifold("so3", "cartan-schouten", lam="y" * 100)
+
+
+# ---- an endpoint is read as every door reads it ---------------------------------------------------
+
+
+def test_an_endpoint_rounded_to_seven_digits_is_read_as_the_cli_reads_it():
+    """The CLI and a result file take an element within 1e-6 of the group and project it onto it
+    (models::check_element); Python refused the gT of a CLI file (rounded to 7 digits, off by
+    ~1e-7) at 1e-9, through a group model and a GroupManifold alike. The projection moves the
+    element by ~1e-7: the solutions agree to that size."""
+    exact = cartan.SO3.exp(np.array([0.3, -0.2, 0.5]))
+    rounded = np.round(exact, 7)
+    assert np.abs(rounded.T @ rounded - np.eye(3)).max() > 1e-9
+    model = cartan.RigidBody([1.0, 2.0, 3.0])
+    a = cartan.solve(model, lam=0.5, T=1.0, N=50, gT=rounded)
+    b = cartan.solve(model, lam=0.5, T=1.0, N=50, gT=exact)
+    assert a.success and b.success, a.message
+    assert np.abs(a.v0 - b.v0).max() < 1e-6
+    np.testing.assert_allclose(a.problem.qT.T @ a.problem.qT, np.eye(3), atol=1e-15)  # projected
+    manifold = cartan.GroupManifold("so3", "cartan-schouten", lam=0.5)
+    m = cartan.solve(manifold, T=1.0, N=50, q0=np.eye(3), qT=rounded, inertia=[1.0, 2.0, 3.0])
+    assert m.success and np.abs(m.v0 - b.v0).max() < 1e-6, m.message
+    with pytest.raises(ValueError, match="gT = .* is not"):
+        cartan.solve(model, lam=0.5, T=1.0, N=50, gT=exact + 1e-4)
+
+
+def test_a_solve_stopped_by_its_time_limit_says_so_in_its_branch():
+    """The default strategy's stages stopped by the deadline were "interrupted" in the branch while
+    the status said "time-limit". At N = 20000 the default strategy's shooting alone takes about a
+    second here, twenty times the 0.05 s limit."""
+    model = cartan.SO3Oscillator([2.0, 3.0, 4.0])
+    gT = cartan.SO3.minimal_rotation([-0.7, -1, -0.7], [0.8, 0.8, 1])
+    r = cartan.solve(model, lam=0.5, T=12, N=20000, gT=gT, time_limit=0.05)
+    assert r.status == "time-limit", r.message
+    assert "interrupted" not in r.branch, r.branch

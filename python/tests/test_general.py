@@ -190,7 +190,7 @@ def test_spherical_pendulum_is_the_classical_one():
         assert r.converged and r.status == "converged", r.message
         assert r.q.shape == (N + 1, 3) and r.v.shape == (N + 1, 2) and r.frame.shape == (N + 1, 3, 2)
         assert r.Xi.shape == (N + 1, 2, 2) and r.terminal_error < 1e-10
-        np.testing.assert_allclose(r.frame[0], Sphere().tangent_basis(q0))
+        np.testing.assert_allclose(r.frame[0], Sphere().default_frame(q0, qT))
         np.testing.assert_allclose(r.t, np.linspace(0, T, N + 1), atol=1e-12)
         curve = classical_pendulum_end(q0, r.frame[0] @ r.v0, G, T, t_eval=np.linspace(0, T, N + 1))
         miss.append(np.linalg.norm(curve[-1] - qT))
@@ -435,7 +435,7 @@ def test_guess_frame_and_progress():
                                  inertia=[1.0, 4.0])
     assert other.converged
     np.testing.assert_allclose(other.q, r.q, atol=1e-9)
-    np.testing.assert_allclose(frame0 @ other.v0, e @ r.v0, atol=1e-9)
+    np.testing.assert_allclose(frame0 @ other.v0, r.frame[0] @ r.v0, atol=1e-9)  # the same q'(0)
 
 
 def test_failed_solve_reports_its_status():
@@ -457,7 +457,7 @@ SPHERE_ARGS = dict(T=1.0, N=20, q0=[0, 0, 1.0], qT=Sphere.point([1, 0, 1]))
      ["potential_gradient", "both or neither"]),
     (lambda: cartan.solve_general(Sphere(), potential_gradient=lambda q: q, **SPHERE_ARGS), ["potential = None"]),
     (lambda: cartan.solve_general(Sphere(), potential=1.0, potential_gradient=lambda q: q, **SPHERE_ARGS),
-     ["potential = \"1.0\"", "not callable"]),
+     ["potential = 1.0 is not callable"]),
     (lambda: cartan.solve_general(Sphere(), inertia=[1.0, 2, 3], **SPHERE_ARGS), ["inertia", "(3,)", "(2, 2) or (2,)"]),
     (lambda: cartan.solve_general(Sphere(), inertia=[1.0, -1], **SPHERE_ARGS), ["inertia", "positive definite"]),
     (lambda: cartan.solve_general(Sphere(), gravity=1.0, lagrangian=SphereKinetic(np.eye(2), 1), **SPHERE_ARGS),
@@ -570,6 +570,12 @@ def test_endpoints_on_the_cut_locus_never_give_a_wrong_convergence(manifold, q0,
     if isinstance(manifold, Sphere):
         q0, qT = Sphere.point(q0), Sphere.point(qT)
     tol = 1e-10
+    if "inertia" in options and isinstance(manifold, Sphere) and np.linalg.norm(q0 + qT) == 0:
+        # At the antipode the default frame's e1 (towards qT) is undefined and an anisotropic inertia
+        # sees the frame: the problem is not defined without frame0, and the solve says so.
+        with pytest.raises(ValueError, match=r"q0/qT = .* are antipodal: .* give frame0"):
+            cartan.solve_general(manifold, T=1, N=100, q0=q0, qT=qT, tol=tol, **options)
+        options["frame0"] = manifold.tangent_basis(q0)
     r = cartan.solve_general(manifold, T=1, N=100, q0=q0, qT=qT, tol=tol, **options)
     checks = {k: v for k, v in options.items() if k in ("gravity", "inertia")}
     passed = len(r.t) >= 3 and cartan.verify_general(r, manifold, **checks).passed

@@ -468,3 +468,47 @@ def test_plot_draws_the_trajectory(tmp_path, name):
     fig = r.plot(tmp_path / "r.png")
     png = (tmp_path / "r.png").read_bytes()
     assert png.startswith(b"\x89PNG") and len(png) > 10000
+
+
+@pytest.mark.parametrize("space, q0, qT", [
+    (cartan.Sphere, cartan.Sphere.point([1, 0, 0.2]), cartan.Sphere.point([0, 0.6, -0.8])),
+    (cartan.HyperbolicPlane, cartan.HyperbolicPlane.point(0.3, -0.2), cartan.HyperbolicPlane.point(-0.5, 0.7)),
+])
+def test_the_cli_and_python_pose_the_same_problem_in_the_same_default_frame(tmp_path, space, q0, qT):
+    """With an anisotropic inertia the frame at q0 is part of the problem (docs/general-connections.md
+    #frames): both doors take the library's default_frame (on the quadrics e1 towards qT), so the
+    same arguments are the same problem. Both converge to the shooting tolerance 1e-12: v0 and
+    the action agree to 1e-9. (Before, the CLI's frame turned towards qT and Python's was the axes'
+    tangent_basis(q0): v0 differed by O(1) and the paths by 1e-1.)"""
+    p0, pT = q0, qT
+    mine = cartan.solve(space(), T=1.2, N=100, q0=p0, qT=pT, inertia=[1, 2.5], order=2, tol=1e-12)
+    assert mine.success, mine.message
+    path = tmp_path / "cli.json"
+    cli = subprocess.run([CARTAN_BIN, "solve", "--manifold", space().name, "--q0", ",".join(f"{x:.17g}" for x in p0),
+                          "--qT", ",".join(f"{x:.17g}" for x in pT), "--mass", "1,2.5", "--T", "1.2", "--N", "100", "--order", "2",
+                          "--tol", "1e-12", "--output", str(path)], capture_output=True, text=True, timeout=120)
+    assert cli.returncode == 0, cli.stderr
+    theirs = json.loads(path.read_text())
+    frame = space().default_frame(p0, pT)
+    np.testing.assert_allclose(np.array(theirs["frame0"]).T, frame, atol=1e-15)
+    np.testing.assert_allclose(mine.frame[0], frame, atol=1e-15)
+    np.testing.assert_allclose(theirs["v"][0], mine.v0, atol=1e-9)
+    assert abs(theirs["action"] - mine.action) < 1e-9
+    assert cartan.verify(cartan.load(path)).passed and cartan.verify(mine).passed
+
+
+def test_antipodal_endpoints_need_a_frame_only_where_the_lagrangian_sees_it():
+    """On S^2 between antipodal points (every half great circle minimal) the default frame's e1 is
+    undefined. The isotropic particle does not see the frame: solved, |v0| = pi / T (a geodesic is
+    exact in the scheme; 1e-9 the tolerance's). An anisotropic inertia or a Lagrangian object
+    would be posed in the axes' convention: refused by name, as by the CLI, until frame0 is given."""
+    S = cartan.Sphere
+    q0, qT = np.array([0.0, 0, 1]), np.array([0.0, 0, -1])
+    r = cartan.solve(S(), T=2, N=50, q0=q0, qT=qT)
+    assert r.success and abs(np.linalg.norm(r.v0) - math.pi / 2) < 1e-9, r.message
+    with pytest.raises(ValueError, match=r"q0/qT = \[0, 0, 1\] / \[0, 0, -1\] are antipodal.*give frame0"):
+        cartan.solve(S(), T=2, N=50, q0=q0, qT=qT, inertia=[1, 2])
+    with pytest.raises(ValueError, match="are equal.*give frame0"):
+        cartan.solve(S(), T=2, N=50, q0=q0, qT=q0, inertia=[1, 2], gravity=1.0)
+    r = cartan.solve(S(), T=2, N=50, q0=q0, qT=qT, inertia=[1, 2], frame0=np.eye(3)[:, :2])
+    assert r.success, r.message

@@ -137,9 +137,6 @@ using manifolds::PointOf;
 
 constexpr std::string_view kParticle = "particle";
 
-template <class M>
-constexpr bool kQuadric = std::is_same_v<M, manifolds::Sphere> || std::is_same_v<M, manifolds::HyperbolicPlane>;
-
 /// The connection of a manifold problem: the space's default when none is named.
 connections::ConnectionKind connection_of(const ManifoldProblem& p, const SpaceInfo& space) {
   return p.connection.value_or(space.connections.front());
@@ -190,32 +187,6 @@ PointOf<M> point_of(const std::vector<double>& x, const char* name, const SpaceI
   }
 }
 
-/// The quadrics' default frame at q0: e1 the unit tangent along the minimal geodesic towards qT,
-/// e2 = J (q0 x e1).
-template <class Q>
-FrameOf<Q> frame_towards(const Eigen::Vector3d& q0, const Eigen::Vector3d& qT, const ManifoldProblem& problem,
-                         std::string_view where) {
-  FrameOf<Q> frame;
-  if constexpr (std::is_same_v<Q, manifolds::Sphere>) {
-    if (q0.cross(qT).norm() < 1e-12) {
-      throw_invalid(where, "q0/qT", excerpt(problem.q0) + " / " + excerpt(problem.qT),
-                    q0.dot(qT) > 0 ? "are equal: the frame's e1 (towards qT along the minimal great circle) is undefined (give frame0)"
-                                   : "are antipodal: the minimal great circle is not unique (give frame0)");
-    }
-    frame.col(0) = (qT - q0.dot(qT) * q0).normalized();  // along the minimal great circle
-    frame.col(1) = q0.cross(Eigen::Vector3d(frame.col(0)));
-  } else {
-    const Eigen::Vector3d towards = Q::project_tangent(q0, qT);  // along the geodesic to qT; <., .> = J
-    if (!(std::sqrt(std::max(0.0, Q::inner(towards, towards))) > 1e-12)) {
-      throw_invalid(where, "q0/qT", excerpt(problem.q0) + " / " + excerpt(problem.qT),
-                    "are equal: the frame's e1 (towards qT along the geodesic) is undefined (give frame0)");
-    }
-    frame.col(0) = towards / std::sqrt(Q::inner(towards, towards));
-    frame.col(1) = Q::metric(q0) * q0.cross(Eigen::Vector3d(frame.col(0)));  // J (q0 x e1): unit, tangent, J-orthogonal to e1
-  }
-  return frame;
-}
-
 /// "GeneralProblem: <name> = ..." (the general problem's validation) as "<where>: <name> = ...".
 template <class Problem>
 void validate_for(const Problem& problem, std::string_view where) {
@@ -255,6 +226,7 @@ general::ErasedProblem<M> manifold_problem(const ManifoldProblem& p, const Guess
     throw_invalid(where, "gravity", format_value(p.gravity),
                   "does not apply on " + std::string(space.name) + " (V = G q[last] needs points that are vectors)");
   }
+  const M manifold = make_manifold<M>(p, connection, mass);
   PointOf<M> q0;
   if constexpr (requires { typename M::Group; }) {
     q0 = p.q0.empty() ? PointOf<M>(M::Group::identity()) : point_of<M>(p.q0, "q0", space, where);
@@ -267,8 +239,8 @@ general::ErasedProblem<M> manifold_problem(const ManifoldProblem& p, const Guess
     require_numbers(where, "frame0", p.frame0, static_cast<std::size_t>(m * d),
                     std::to_string(m) + " rows of " + std::to_string(d) + " numbers: e_1 .. e_" + std::to_string(m) + " at q0");
     frame0 = Eigen::Map<const Eigen::Matrix<double, m, d, m == 1 ? Eigen::ColMajor : Eigen::RowMajor>>(p.frame0.data()).transpose();
-  } else if constexpr (kQuadric<M>) {
-    frame0 = frame_towards<M>(q0, qT, p, where);
+  } else if ((mass - mass(0, 0) * Eigen::MatrixXd::Identity(m, m)).cwiseAbs().maxCoeff() != 0) {
+    manifolds::require_frame_towards(manifold, q0, qT, where);  // l = 1/2 v.A v depends on the frame
   }
   if (!guess.v0.empty()) require_numbers(where, "v0", guess.v0, m, "a guess of v(0) in the frame at q0");
   if (!guess.xi0.empty()) {
@@ -286,7 +258,7 @@ general::ErasedProblem<M> manifold_problem(const ManifoldProblem& p, const Guess
     }
     return general::erased_particle<M>(A);
   };
-  general::ErasedProblem<M> out{make_manifold<M>(p, connection, mass), particle(), p.T, p.N, q0, qT, frame0};
+  general::ErasedProblem<M> out{manifold, particle(), p.T, p.N, q0, qT, frame0};
   validate_for(out, where);
   return out;
 }

@@ -459,7 +459,7 @@ nlohmann::json result_json(const ResultRecord& record) {
   out["terminal_error"] = number_or_null(r.terminal_error);
   out["xi_terminal"] = number_or_null(r.xi_terminal);
   out["iterations"] = {{"outer", r.outer_iterations}, {"inner", r.inner_iterations}, {"sweeps", r.sweeps}};
-  if (r.lie_kernel) out["action"] = number_or_null(r.action);  // the general kernel computes none
+  out["action"] = number_or_null(r.action);  // the Lie-group kernel's S_h, else the action along the samples
   out["solve_time_s"] = number_or_null(r.solve_time_s);
   if (r.collocation) {
     out["mesh_size"] = r.collocation->mesh_size;

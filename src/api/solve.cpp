@@ -1,6 +1,8 @@
 // api::solve: the catalogue's model on its group through the kernel the connection allows, or the
 // particle on a space of the catalogue (spaces.hpp) (solve.hpp); every solve is the library's compiled one (kernels/lie_group/ and
 // kernels/manifold/compiled.hpp), so this unit instantiates only the conversions to numbers.
+#include <limits>
+
 #include "problems.hpp"
 
 namespace cartan::api {
@@ -27,9 +29,16 @@ Result result_of(transported::TransportedSolution<G>&& s) {
   return result_of(std::move(s), s.trajectory.g, s.trajectory.xi, true);
 }
 
+/// A general solve's result with the discrete action along its samples (kernels/manifold/along.hpp),
+/// as Python's result carries it: NaN for a result stopped on request or of fewer than two samples.
 template <manifolds::ManifoldWithConnection M>
-Result result_of(general::GeneralSolution<M>&& s) {
-  return result_of(std::move(s), s.trajectory.q, s.trajectory.Xi, false);
+Result result_of(const general::ErasedProblem<M>& posed, general::GeneralSolution<M>&& s) {
+  const bool along = !stopped_on_request(s.status) && s.trajectory.t.size() >= 2;
+  const double action = along ? general::along_general(posed, s.trajectory).action.back()
+                              : std::numeric_limits<double>::quiet_NaN();
+  Result r = result_of(std::move(s), s.trajectory.q, s.trajectory.Xi, false);
+  r.action = action;
+  return r;
 }
 
 template <class Vector>
@@ -55,7 +64,8 @@ Result solve(const GroupProblem& problem, const cartan::SolveOptions& options, c
     using M = manifolds::GroupManifold<G>;
     general::GeneralGuess<M> start;
     if (!guess.v0.empty()) start.v0 = vector_of<groups::TangentOf<G>>(guess.v0);
-    return result_of<M>(general::solve(detail::connection_problem<Entry>(problem, checked, g0, gT, where), options, start));
+    const general::ErasedProblem<M> posed = detail::connection_problem<Entry>(problem, checked, g0, gT, where);
+    return result_of<M>(posed, general::solve(posed, options, start));
   });
 }
 
@@ -63,7 +73,7 @@ Result solve(const ManifoldProblem& problem, const cartan::SolveOptions& options
   return detail::visit_manifold(problem, guess, where, [&]<class M>(const general::ErasedProblem<M>& posed) {
     general::GeneralGuess<M> start;
     if (!guess.v0.empty()) start.v0 = vector_of<manifolds::ComponentsOf<M>>(guess.v0);
-    Result r = result_of<M>(general::solve(posed, options, start));
+    Result r = result_of<M>(posed, general::solve(posed, options, start));
     r.frame0 = posed.initial_frame().transpose();  // the rows e_1 .. e_m
     return r;
   });

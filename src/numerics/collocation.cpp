@@ -73,20 +73,11 @@ class Model {
   /// Whether a poll inside a sweep (rhs, rhs_jacobian, polled_stop) found a stop requested.
   bool stopped() const { return stopped_; }
   /// At point j of a sweep: whether the monitor asks to stop (then remembered: stopped()), polled
-  /// every poll_interval_ points, a power of two adapted as the sweeps' (SolveMonitor::
-  /// stop_pending_at): doubled while polls are less than kPollsApart / 4 apart, up to
-  /// kPointsBetweenPolls; halved while they are more than kPollsApart apart (f in Python: a
-  /// point can take a millisecond, and 256 of them were a quarter of a second past a limit).
+  /// at the points a PollPacer adapts to the sweep's pace, at most kPointsBetweenPolls apart (f in
+  /// Python: a point can take a millisecond, and 256 of them were a quarter of a second past a limit).
   bool polled_stop(Index j) {
-    if (stopped_ || ((j + 1) & (poll_interval_ - 1)) != 0) return stopped_;
-    const auto now = std::chrono::steady_clock::now();
-    const auto apart = now - last_poll_;
-    last_poll_ = now;
-    if (apart > SolveMonitor::kPollsApart && poll_interval_ > 1) {
-      poll_interval_ /= 2;
-    } else if (apart < SolveMonitor::kPollsApart / 4 && poll_interval_ < kPointsBetweenPolls) {
-      poll_interval_ *= 2;
-    }
+    if (stopped_ || !pacer_.due(j)) return stopped_;
+    pacer_.polled();
     return stopped_ = SolveMonitor::poll(monitor_);
   }
   /// A poll now, between calls of a batched f (each a whole mesh).
@@ -193,8 +184,7 @@ class Model {
   const SolveMonitor* monitor_;
   int evaluations_ = 0;
   bool stopped_ = false;
-  Index poll_interval_ = 1;  ///< polled_stop's points between polls
-  std::chrono::steady_clock::time_point last_poll_ = std::chrono::steady_clock::now();
+  PollPacer pacer_{kPointsBetweenPolls};  ///< polled_stop's points between polls
 };
 
 /// Column i of an n-row matrix, and the n x n block i of an n x n m one, with the compile-time

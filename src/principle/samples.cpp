@@ -1,7 +1,11 @@
-// The one check of a sampled trajectory (cartan/principle/samples.hpp).
+// The one check of a sampled trajectory (cartan/principle/samples.hpp), and the check that a
+// horizon's steps fit in memory (cartan/principle/horizon.hpp).
 #include "cartan/principle/samples.hpp"
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
 
 #include "cartan/principle/horizon.hpp"
 
@@ -21,7 +25,24 @@ std::string listed(std::initializer_list<SampleColumn> columns) {
   return out;
 }
 
+/// This machine's physical memory in bytes (0 where the system does not say).
+double physical_memory() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0.0;
+}
+
 }  // namespace
+
+void require_steps_fit(int N, std::string_view where) {
+  static const double memory = physical_memory();
+  const double bytes = kBytesPerStepAtLeast * N;
+  if (memory > 0 && bytes > memory) {
+    char text[96];
+    std::snprintf(text, sizeof text, "needs at least %.3g GiB (%g KiB per step), more than this machine's %.3g GiB",
+                  bytes / (1 << 30), kBytesPerStepAtLeast / 1024, memory / (1 << 30));
+    throw_invalid(where, "N", std::to_string(N), text);
+  }
+}
 
 bool require_samples(const std::vector<double>& t, double T, std::initializer_list<SampleColumn> columns,
                      const SampleRules& rules, std::string_view where, std::string_view what) {

@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
+#include <tuple>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "cartan/api/result_file.hpp"
@@ -171,6 +174,24 @@ TEST(ApiSpaces, AnIsotropicParticleDoesNotDependOnTheFrame) {
   // return under gravity).
   q.qT = q.q0;
   EXPECT_NO_THROW(check(q));
+}
+
+TEST(ApiSpaces, AntipodalEndpointsNeedAFrameOnlyWhereTheLagrangianSeesIt) {
+  // Between antipodal points of S^2 every half great circle is minimal, and the default frame's e1
+  // (towards qT) is undefined (docs/general-connections.md#frames). The isotropic particle does
+  // not see the frame: solved, a half great circle, |v0| = pi / T (a geodesic is exact in the
+  // scheme: constant v, the curvature term vanishing against v; 1e-9 is the shooting tolerance).
+  // With A = diag(1, 2) the axes' convention would choose the problem: refused by name, and
+  // solved once frame0 is given.
+  ManifoldProblem p;
+  std::tie(p.q0, p.qT, p.T, p.N) = std::tuple(std::vector<double>{0, 0, 1}, std::vector<double>{0, 0, -1}, 2.0, 50);
+  const Result a = solve(p);
+  ASSERT_TRUE(a.converged()) << a.message;
+  EXPECT_NEAR(a.samples.v.row(0).norm(), std::numbers::pi / p.T, 1e-9);
+  p.mass = {1, 2};
+  testing::expect_invalid([&] { check(p); }, {"q0/qT = [0, 0, 1] / [0, 0, -1] are antipodal", "give frame0"});
+  p.frame0 = {1, 0, 0, 0, 1, 0};
+  EXPECT_NO_THROW(check(p));
 }
 
 TEST(ApiSpaces, BadInputIsRefusedByName) {

@@ -401,3 +401,25 @@ def test_merge_rejects_tables_that_are_not_one_grid(tmp_path):
         result = run("merge", *args)
         assert result.returncode == 2 and result.stdout == "", (args, result.stderr)
         assert message in result.stderr and result.stderr.count("\n") == 1, (args, result.stderr)
+
+
+def test_csv_of_a_surface_has_its_two_components_of_v0():
+    """v0 on the sphere has 2 components: the table had an always-empty v0_3 column."""
+    result = run("sweep", "--manifold", "sphere", "--q0", "1,0,-0.3", "--qT-list", "0,1,-0.5;0,1,0.5", "--T", "1",
+                 "--N", "50", "--quiet", "--format", "csv")
+    assert result.returncode == 0, result.stderr
+    lines = list(csv.DictReader(io.StringIO(result.stdout)))
+    assert list(lines[0])[-2:] == ["v0_1", "v0_2"] and "v0_3" not in lines[0]
+    assert all(line["v0_1"] and line["v0_2"] for line in lines)
+
+
+def test_a_surface_row_holds_its_frame_and_action_as_cartan_solve_writes_them():
+    """v0 of a manifold's row is in the frame at q0, which turns with each point's qT: the row holds
+    it (frame0), and the action, as the solve's file does (neither was there)."""
+    base = ["--manifold", "sphere", "--q0", "1,0,-0.3", "--mass", "1,2", "--T", "1", "--N", "50"]
+    table = json.loads(run("sweep", *base, "--qT-list", "0,1,-0.5;0,1,0.5", "--quiet").stdout)
+    for row in table["rows"]:
+        solved = json.loads(run("solve", *base, "--qT", ",".join(repr(x) for x in row["qT"])).stdout)
+        assert row["frame0"] == solved["frame0"] and row["action"] == solved["action"] and row["v0"] == solved["v"][0]
+        assert isinstance(row["action"], float)
+    assert table["rows"][0]["frame0"] != table["rows"][1]["frame0"]

@@ -266,6 +266,43 @@ TEST(Quadrics, SectionalCurvatureIsPlusOrMinusOne) {
   EXPECT_NEAR(sectional_curvature<HyperbolicPlane>(hyperbolic_point(0.7, -1.1), rng), -1.0, 1e-13);
 }
 
+// The default frame of a problem from q0 to qT (docs/general-connections.md#frames): on S^2 and
+// H^2, e1 the unit tangent of the minimal geodesic towards qT (difference(q0, qT) normalised),
+// e2 = J (q0 x e1), a J-orthonormal basis of T_q0 (right-handed with q0 on S^2); where e1 is
+// undefined, the axes' tangent_basis(q0), which require_frame_towards refuses by name. Elsewhere
+// always tangent_basis(q0). Exact up to rounding (1e-14 on unit vectors).
+template <class Q>
+void expect_frame_towards(const Eigen::Vector3d& q0, const Eigen::Vector3d& qT) {
+  const Q space;
+  const Eigen::Matrix<double, 3, 2> e = default_frame(space, q0, qT);
+  const Eigen::Vector3d w = space.difference(q0, qT);
+  EXPECT_NEAR_MATRIX(Eigen::Vector3d(e.col(0)), Eigen::Vector3d(w / std::sqrt(Q::inner(w, w))), 1e-14);
+  EXPECT_NEAR(Q::inner(e.col(0), e.col(0)), 1, 1e-14);
+  EXPECT_NEAR(Q::inner(e.col(1), e.col(1)), 1, 1e-14);
+  EXPECT_NEAR(Q::inner(e.col(0), e.col(1)), 0, 1e-14);
+  EXPECT_NEAR(Q::inner(e.col(1), q0), 0, 1e-14);
+  if constexpr (std::is_same_v<Q, Sphere>) EXPECT_GT(Eigen::Vector3d(e.col(0)).cross(Eigen::Vector3d(e.col(1))).dot(q0), 0);
+  EXPECT_NO_THROW(require_frame_towards(space, q0, qT, "here"));
+}
+
+TEST(Quadrics, TheDefaultFrameTurnsTowardsQT) {
+  const Eigen::Vector3d q0 = sphere_point({0.2, -0.3, 0.9});
+  expect_frame_towards<Sphere>(q0, sphere_point({-0.5, 0.4, 0.1}));
+  expect_frame_towards<Sphere>(q0, sphere_point({-0.2, 0.3, -0.8}));  // nearly antipodal: still defined
+  expect_frame_towards<HyperbolicPlane>(hyperbolic_point(0.7, -1.1), hyperbolic_point(-0.4, 2.0));
+  for (const Eigen::Vector3d& qT : {q0, Eigen::Vector3d(-q0)}) {
+    EXPECT_EQ(default_frame(Sphere{}, q0, qT), Sphere::tangent_basis(q0));
+    expect_invalid([&] { require_frame_towards(Sphere{}, q0, qT, "here"); },
+                   {"here: q0/qT = [", qT == q0 ? "are equal" : "are antipodal", "give frame0"});
+  }
+  const Eigen::Vector3d p = hyperbolic_point(0.7, -1.1);
+  EXPECT_EQ(default_frame(HyperbolicPlane{}, p, p), HyperbolicPlane::tangent_basis(p));
+  expect_invalid([&] { require_frame_towards(HyperbolicPlane{}, p, p, "here"); }, {"are equal", "give frame0"});
+  const Euclidean<2> plane;  // no frame towards qT: the coordinate basis, never refused
+  EXPECT_EQ(default_frame(plane, Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1)), Eigen::Matrix2d::Identity());
+  EXPECT_NO_THROW(require_frame_towards(plane, Eigen::Vector2d(0, 0), Eigen::Vector2d(0, 0), "here"));
+}
+
 // The half-plane given only by its Christoffel field: the curvature computed from Gamma (with a
 // central-difference D Gamma) is the constant -1 of the closed form, <R(x, y) y, x>_g =
 // -(|x|^2 |y|^2 - <x, y>^2)_g, to the difference's error (~1e-9).

@@ -429,6 +429,20 @@ TEST(CollocationBadInput, ThrowsNamingTheValue) {
   BvpSystem zero = s;
   zero.n = 0;
   expect_invalid([&] { solve_collocation(zero, t, MatrixXd(0, 4), none); }, "system.n = 0");
+  // A value is named, never poured out: a guess of 2 x 10001 with a NaN made an 18 KB message
+  // (format_value cuts after 160 characters of entries).
+  const VectorXd fine = uniform(0, 1, 10001);
+  MatrixXd big = MatrixXd::Ones(2, 10001);
+  big(1, 5000) = nan;
+  try {
+    solve_collocation(s, fine, big, none, {.max_nodes = 20000});
+    ADD_FAILURE() << "a NaN in y was accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what();
+    EXPECT_LT(message.size(), 300u) << message;
+    EXPECT_NE(message.find("y = [1, 1, "), std::string::npos) << message;
+    EXPECT_NE(message.find("...] contains a non-finite number"), std::string::npos) << message;
+  }
 }
 
 // Every kernel's start of collocation (solvers::collocate_from_mesh, src/solvers/collocation.cpp):

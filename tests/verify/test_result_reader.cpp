@@ -214,8 +214,8 @@ TEST(ResultFile, TheWriterAndTheReaderAgree) {
   EXPECT_EQ(result_json(back), written);
 }
 
-// The general kernel's records: a group with a Levi-Civita connection (Xi, n^2 numbers a row, no
-// action) and a manifold (q, frame0).
+// The general kernel's records: a group with a Levi-Civita connection (Xi, n^2 numbers a row, the
+// action along the samples) and a manifold (q, frame0).
 TEST(ResultFile, GeneralRecordsTravel) {
   ResultRecord r = read_result(valid_result());
   auto& p = std::get<GroupProblem>(r.problem);
@@ -225,7 +225,7 @@ TEST(ResultFile, GeneralRecordsTravel) {
   r.result.lie_kernel = false;
   r.result.samples.aux = Eigen::MatrixXd::Constant(3, 9, 0.25);
   const json written = result_json(r);
-  EXPECT_TRUE(written.contains("Xi") && !written.contains("xi") && !written.contains("action"));
+  EXPECT_TRUE(written.contains("Xi") && !written.contains("xi") && written.contains("action"));
   EXPECT_EQ(written["inertia"].size(), 3u);  // n x n: as rows
   const ResultRecord back = read_result(written);
   EXPECT_FALSE(back.result.lie_kernel);

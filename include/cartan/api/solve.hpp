@@ -88,8 +88,9 @@ struct Samples {
 };
 
 /// What every solve returns, whichever kernel ran: the kernels' ResultCore (principle/result.hpp;
-/// its action is the Lie-group kernel's discrete action S_h, NaN where the general kernel ran) and
-/// the solution as numbers.
+/// its action is the Lie-group kernel's discrete action S_h, or where the general kernel ran the
+/// action along the samples, kernels/manifold/along.hpp, as Python's result has it; NaN for a
+/// result stopped on request) and the solution as numbers.
 struct Result : ResultCore {
   bool lie_kernel = false;   ///< the auxiliary is xi (n numbers a row); else Xi (n^2)
   Samples samples;           ///< the solution; at a failure the best iterate of the requested problem, or no rows

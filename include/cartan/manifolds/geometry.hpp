@@ -16,7 +16,10 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <string_view>
 
+#include "cartan/errors.hpp"
 #include "cartan/manifolds/manifold.hpp"
 
 namespace cartan::manifolds {
@@ -83,6 +86,33 @@ template <ManifoldWithConnection M>
 Eigen::Matrix<double, M::kDim, M::kAmbientDim> dual_frame(const FrameOf<M>& frame) {
   const ComponentMatrixOf<M> gram = frame.transpose() * frame;
   return gram.ldlt().solve(frame.transpose());
+}
+
+/// The default frame of T_{q0}Q of a problem from q0 to qT (docs/general-connections.md#frames):
+/// the manifold's frame towards qT where it has one and it is defined there (the quadrics: e1 along
+/// the minimal geodesic, so that the frame turns with the endpoints), else tangent_basis(q0).
+template <ManifoldWithConnection M>
+FrameOf<M> default_frame(const M& manifold, const PointOf<M>& q0, const PointOf<M>& qT) {
+  if constexpr (requires { manifold.frame_towards(q0, qT); }) {
+    if (const auto frame = manifold.frame_towards(q0, qT)) return *frame;
+  }
+  return manifold.tangent_basis(q0);
+}
+
+/// Throws std::invalid_argument naming q0/qT (as "<where>: q0/qT = ...") where the manifold's frame
+/// towards qT is undefined (equal endpoints; antipodal ones on S^2), so that default_frame falls
+/// back on the convention tangent_basis(q0): for a Lagrangian that depends on the frame (an
+/// anisotropic inertia, a Lagrangian of the user's) the problem is then not defined without frame0.
+template <ManifoldWithConnection M>
+void require_frame_towards(const M& manifold, const PointOf<M>& q0, const PointOf<M>& qT, std::string_view where) {
+  if constexpr (requires { manifold.frame_towards(q0, qT); }) {
+    if (!manifold.frame_towards(q0, qT)) {
+      throw_invalid(where, "q0/qT", format_value(q0.transpose()) + " / " + format_value(qT.transpose()),
+                    std::string((q0 - qT).norm() < 1 ? "are equal" : "are antipodal") +
+                        ": the default frame's e1 (towards qT along the minimal geodesic) is undefined, and the "
+                        "Lagrangian depends on the frame (an anisotropic inertia or a Lagrangian of its own): give frame0");
+    }
+  }
 }
 
 /// How far b is from a, as the solvers' convergence tests and the verifiers may trust it: the

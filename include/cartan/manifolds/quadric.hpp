@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string_view>
 
 #include "cartan/errors.hpp"
@@ -104,6 +105,20 @@ class Quadric {
     e.col(1) -= inner(e.col(0), e.col(1)) * e.col(0);
     e.col(1) /= std::sqrt(inner(e.col(1), e.col(1)));
     if (Curvature > 0 && e.col(0).cross(e.col(1)).dot(q) < 0) e.col(1) = -e.col(1);
+    return e;
+  }
+
+  /// The frame at a towards b, the default frame of a problem from a to b (manifolds::default_frame):
+  /// e1 the unit tangent at a along the minimal geodesic towards b, e2 = J (a x e1) (unit, tangent,
+  /// J-orthogonal to e1; on S^2 (e1, e2, a) is right-handed). Empty where that geodesic does not
+  /// give a direction: b = a, and on S^2 b = -a (every great circle is minimal).
+  static std::optional<Frame> frame_towards(const Point& a, const Point& b) {
+    const Vector towards = project_tangent(a, b);
+    const double size = std::sqrt(std::max(0.0, inner(towards, towards)));
+    if (!(size > 1e-12)) return std::nullopt;
+    Frame e;
+    e.col(0) = towards / size;
+    e.col(1) = metric(a) * a.cross(Vector(e.col(0)));
     return e;
   }
 

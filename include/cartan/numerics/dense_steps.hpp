@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,15 +16,20 @@
 
 namespace cartan::numerics {
 
+/// How far past an end of [t_0, t_M] a requested time may lie, relative to the larger end: a few
+/// roundings (T * (1 + 1e-15), a time computed as a sum of steps), read as the end itself.
+inline constexpr double kDenseEndSlack = 16 * std::numeric_limits<double>::epsilon();
+
 /// Throws std::invalid_argument "<where>: ..." unless there are at least 2 nodes and every time
-/// lies in [nodes.front(), nodes.back()] (NaN does not).
+/// lies in [nodes.front(), nodes.back()] up to kDenseEndSlack (NaN does not).
 inline void check_dense_times(const std::vector<double>& nodes, const std::vector<double>& times, std::string_view where) {
   if (nodes.size() < 2) {
     throw_invalid(where, "the result", std::to_string(nodes.size()) + " samples", "has nothing to interpolate (it needs at least 2)");
   }
   const double lo = nodes.front(), hi = nodes.back();
+  const double slack = kDenseEndSlack * std::max(std::abs(lo), std::abs(hi));
   for (double t : times) {
-    if (!(t >= lo && t <= hi)) {
+    if (!(t >= lo - slack && t <= hi + slack)) {
       throw_invalid(where, "t", format_value(t), "is outside [0, T] = [" + format_value(lo) + ", " + format_value(hi) + "]");
     }
   }
@@ -42,7 +49,9 @@ struct DenseStep {
   }
 };
 
+/// The step of t, a time check_dense_times accepted (one within kDenseEndSlack of an end is that end).
 inline DenseStep locate_dense_step(const std::vector<double>& nodes, double t) {
+  t = std::clamp(t, nodes.front(), nodes.back());
   const auto upper = static_cast<std::size_t>(std::upper_bound(nodes.begin(), nodes.end(), t) - nodes.begin());
   const std::size_t k = std::clamp<std::size_t>(upper == 0 ? 0 : upper - 1, 0, nodes.size() - 2);
   const double h = nodes[k + 1] - nodes[k];

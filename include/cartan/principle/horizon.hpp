@@ -11,11 +11,18 @@
 
 namespace cartan {
 
-/// Throws std::invalid_argument unless T is positive and finite and N >= 1.
+/// Throws std::invalid_argument naming N when N steps cannot fit in this machine's physical
+/// memory at kBytesPerStepAtLeast each (a lower bound of every kernel's trajectory and work: a
+/// problem refused here could never be solved; N = 2^31 - 1 from Python grew to gigabytes before).
+void require_steps_fit(int N, std::string_view where);
+inline constexpr double kBytesPerStepAtLeast = 1024;
+
+/// Throws std::invalid_argument unless T is positive and finite, N >= 1 and N steps fit in memory.
 inline void require_horizon(double T, int N, std::string_view where) {
   require_finite(T, where, "T");
   if (!(T > 0)) throw_invalid(where, "T", format_value(T), "must be positive");
   if (N < 1) throw_invalid(where, "N", std::to_string(N), "must be at least 1");
+  require_steps_fit(N, where);
 }
 
 /// The time of the node after the one at t on the horizon [0, T] with steps h = T / N: t + h, and

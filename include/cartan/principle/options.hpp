@@ -195,11 +195,16 @@ inline SolveOptions with_deadline(const SolveOptions& options, std::chrono::stea
   return timed;
 }
 
-/// A solve stopped by the deadline of `timed` (with_deadline) has status time-limit, not interrupted.
-inline void apply_time_limit(const SolveOptions& timed, Status& status, std::string& message) {
+/// A solve stopped by the deadline of `timed` (with_deadline) has status time-limit, not interrupted,
+/// and so has every attempt its branch names (the default strategy's stages said "interrupted").
+inline void apply_time_limit(const SolveOptions& timed, Status& status, std::string& message, std::string& branch) {
   if (status == Status::Interrupted && timed.monitor.deadline_passed()) {
     status = Status::TimeLimit;
     message = "time limit of " + format_value(*timed.time_limit) + " s reached; " + message;
+    const std::string_view from = to_string(Status::Interrupted), to = to_string(Status::TimeLimit);
+    for (std::size_t at = branch.find(from); at != std::string::npos; at = branch.find(from, at + to.size())) {
+      branch.replace(at, from.size(), to);
+    }
   }
 }
 

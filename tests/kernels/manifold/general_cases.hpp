@@ -32,6 +32,11 @@ struct WithoutFastPath {
   Vector difference(const Point& a, const Point& b) const { return inner.difference(a, b); }
   Operator transport_along_step(const Point& q, const Vector& x) const { return inner.transport_along_step(q, x); }
   Frame tangent_basis(const Point& q) const { return inner.tangent_basis(q); }
+  auto frame_towards(const Point& a, const Point& b) const
+    requires requires(const M& m) { m.frame_towards(a, b); }
+  {
+    return inner.frame_towards(a, b);
+  }
   void validate(const Point& q, std::string_view where) const { inner.validate(q, where); }
 };
 

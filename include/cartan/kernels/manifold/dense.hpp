@@ -1,5 +1,5 @@
 #pragma once
-// Dense output of a sampled solution of the general problem (GeneralSolveResult.sol in Python): at
+// Dense output of a sampled solution of the general problem (Result.sol in Python): at
 // a node the sample itself; on the step [t_k, t_k+1], s = (t - t_k) / h, with x_k =
 // difference(q_k, q_k+1) (the instance's piece through both nodes, manifolds/manifold.hpp):
 //   q(t) = step(q_k, s x_k) and frame(t) = transport_along_step(q_k, s x_k) frame_k, the piece the

@@ -29,11 +29,14 @@ struct GeneralProblem {
   int N = 100;  ///< steps, h = T / N
   manifolds::PointOf<M> q0;
   manifolds::PointOf<M> qT;
-  /// The frame of T_{q0}Q in which v and mu are components; empty: manifold.tangent_basis(q0).
+  /// The frame of T_{q0}Q in which v and mu are components; empty: manifolds::default_frame(q0, qT)
+  /// (on the quadrics towards qT, elsewhere tangent_basis(q0)).
   std::optional<manifolds::FrameOf<M>> frame0;
 
   double step() const { return T / N; }
-  manifolds::FrameOf<M> initial_frame() const { return frame0 ? *frame0 : manifold.tangent_basis(q0); }
+  manifolds::FrameOf<M> initial_frame() const {
+    return frame0 ? *frame0 : manifolds::default_frame(manifold, q0, qT);
+  }
 
   /// Throws std::invalid_argument naming the first bad value: T, N, q0, qT, or a frame0 that is
   /// not finite, not tangent at q0 or not a basis.

@@ -254,7 +254,7 @@ TransportedSolution<G> solve(const TransportedProblem<G, L>& problem, const Solv
   detail::StrategyKernel<G, L> kernel(problem, guess);
   TransportedSolution<G> s = solvers::take<TransportedProblem<G, L>>(solvers::run_method(kernel, options));
   if (const std::string note = detail::cut_locus_note(problem); !note.empty()) s.message += "; note: " + note;
-  apply_time_limit(options, s.status, s.message);
+  apply_time_limit(options, s.status, s.message, s.branch);
   detail::complete(problem, s, start);
   return s;
 }

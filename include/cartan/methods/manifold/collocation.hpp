@@ -103,14 +103,25 @@ class GeneralCollocation {
   /// The geodesic guess on a uniform mesh of N intervals: the instance's piece from q0 towards qT,
   /// q(t) = step(q0, (t/T) w) with w = difference(q0, qT), the frame transported along it,
   /// v = E0^+ w / T constant, mu = momentum, Xi = (T - t) v mu^T (exact for constant v and mu).
-  void geodesic_guess(Eigen::VectorXd& t, Eigen::MatrixXd& y) const {
+  /// With a `monitor`, polled at a PollPacer's nodes (a chart's steps and transports may call
+  /// Python): a stop leaves the remaining nodes at the last one computed, and the solve then stops
+  /// at its first poll.
+  void geodesic_guess(Eigen::VectorXd& t, Eigen::MatrixXd& y, const SolveMonitor* monitor = nullptr) const {
     const GeneralProblem<M, L>& p = problem();
     const manifolds::VectorOf<M> w = p.manifold.difference(p.q0, p.qT);
     const manifolds::FrameOf<M> frame0 = p.initial_frame();
     const manifolds::ComponentsOf<M> v = manifolds::dual_frame<M>(frame0) * w / p.T;
     t = Eigen::VectorXd::LinSpaced(p.N + 1, 0, p.T);
     y.resize(kStates, t.size());
+    PollPacer pacer(SolveMonitor::kStepsBetweenPolls);
     for (Eigen::Index k = 0; k < t.size(); ++k) {
+      if (monitor != nullptr && k > 0 && pacer.due(k)) {
+        pacer.polled();
+        if (SolveMonitor::poll(monitor)) {
+          y.rightCols(t.size() - k) = y.col(k - 1).replicate(1, t.size() - k);
+          return;
+        }
+      }
       const manifolds::VectorOf<M> part = (t[k] / p.T) * w;
       Node n;
       n.t = t[k];

@@ -90,12 +90,13 @@ GeneralSolution<M> collocation(const GeneralProblem<M, L>& problem, const SolveO
     const GeneralCollocation<M, L> system_of;
     const GeneralTrajectory<M>* guess;
     const Discrete& discrete;
-    Continuous(const GeneralProblem<M, L>& p, const GeneralTrajectory<M>* g, const Discrete& d)
-        : system_of(p), guess(g), discrete(d) {}
+    const SolveMonitor* monitor;
+    Continuous(const GeneralProblem<M, L>& p, const GeneralTrajectory<M>* g, const Discrete& d, const SolveMonitor* m)
+        : system_of(p), guess(g), discrete(d), monitor(m) {}
     numerics::BvpSystem system() const override { return system_of.system(); }
     bool start(Eigen::VectorXd& t, Eigen::MatrixXd& y) const override {
       if (guess == nullptr) {
-        system_of.geodesic_guess(t, y);
+        system_of.geodesic_guess(t, y, monitor);
         return false;
       }
       GeneralCollocation<M, L>::guess_from(*guess, t, y);
@@ -108,7 +109,7 @@ GeneralSolution<M> collocation(const GeneralProblem<M, L>& problem, const SolveO
     // (measured on SO(3) under a Levi-Civita connection).
     bool starts_on_mesh() const override { return true; }
   };
-  const Continuous continuous(problem, guess.trajectory ? &*guess.trajectory : nullptr, discrete);
+  const Continuous continuous(problem, guess.trajectory ? &*guess.trajectory : nullptr, discrete, &stage);
   const solvers::Collocated r = solvers::collocate(continuous, discrete, options.continuation, c);
   GeneralSolution<M> s =
       general_collocation_solution(continuous.system_of, r.result, solvers::output_times(r.result, options.samples, problem.T));
@@ -300,7 +301,7 @@ GeneralSolution<M> solve_on(const GeneralProblem<M, L>& problem, const SolveOpti
   const auto start = std::chrono::steady_clock::now();
   const SolveOptions timed = with_deadline(options, start);
   GeneralSolution<M> s = run_strategy(problem, timed, guess, kernel);
-  apply_time_limit(timed, s.status, s.message);
+  apply_time_limit(timed, s.status, s.message, s.branch);
   s.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return s;
 }
