@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <limits>
 #include <random>
 #include <string>
@@ -196,6 +197,27 @@ TEST(LieKernel, TheHessianStructureTravelsThroughTheErasures) {
   expect(mechanics::ErasedLagrangian<groups::SO3>(mechanics::RigidBody(paper_inertia())).hessian_structure(), true, true, true,
          "mechanics::ErasedLagrangian(RigidBody)");
 }
+
+// Both erased Lagrangians are one template (mechanics/erased.hpp) in each kernel's words, never the
+// other's, so that what detects a member (the concepts, lagrangian_hessian, check_lagrangian's
+// has_hessian) reads each as before.
+template <class L, class... A>
+concept HessianTakes = requires(const L& l, const A&... a) { l.hessian(a...); };
+template <class L>
+concept ReportsOwnHessian = requires(const L& l) { { l.has_hessian() } -> std::same_as<bool>; };
+using ErasedOnSO3 = mechanics::ErasedLagrangian<groups::SO3>;
+using SO3Element = groups::ElementOf<groups::SO3>;
+using SO3Tangent = groups::TangentOf<groups::SO3>;
+static_assert(std::is_same_v<ErasedOnSO3, mechanics::Erased<mechanics::ReducedTerms<groups::SO3>>> &&
+              std::is_same_v<ErasedLagrangian<SO3Manifold>, mechanics::Erased<general::ManifoldTerms<SO3Manifold>>>);
+static_assert(mechanics::ReducedLagrangian<ErasedOnSO3, groups::SO3> && !general::ManifoldLagrangian<ErasedOnSO3, SO3Manifold>);
+static_assert(general::ManifoldLagrangian<ErasedLagrangian<SO3Manifold>, SO3Manifold> &&
+              !mechanics::ReducedLagrangian<ErasedLagrangian<SO3Manifold>, groups::SO3>);
+static_assert(HessianTakes<ErasedOnSO3, double, SO3Element, SO3Tangent> &&
+              !HessianTakes<ErasedOnSO3, groups::SO3, double, SO3Element, SO3Tangent>);
+static_assert(HessianTakes<ErasedLagrangian<SO3Manifold>, SO3Manifold, double, SO3Element, SO3Tangent> &&
+              !HessianTakes<ErasedLagrangian<SO3Manifold>, double, SO3Element, SO3Tangent>);
+static_assert(ReportsOwnHessian<ErasedLagrangian<SO3Manifold>> && !ReportsOwnHessian<ErasedOnSO3>);
 
 // Design §5.4, item 1: the dispatched solve against the general kernel, node by node.
 TEST(LieKernel, GeneralSolveOnCartanSchoutenRunsTheLieKernel) {

@@ -1,83 +1,50 @@
 #pragma once
-// Any Lagrangian of the general problem behind one type per manifold (DESIGN.md, "mechanics:
-// erased"): ErasedLagrangian<M> holds a ManifoldLagrangian<M> (lagrangian.hpp) behind a shared
-// pointer and forwards value, momentum, velocity, point_gradient and the second derivatives
-// (the wrapped type's own `hessian` where it has one, central differences otherwise:
-// lagrangian_hessian.hpp). The general solve and verify are compiled once for it on every shipped
-// manifold (compiled.hpp, src/kernels/manifold/), so that the CLI, the Python module and a user's own
-// Lagrangian reuse them; the cost is one indirect call per evaluation (bench/README.md, "Build time").
+// Any Lagrangian of the general problem behind one type per manifold: ErasedLagrangian<M>, the
+// erased Lagrangian (mechanics/erased.hpp) in the terms of ManifoldLagrangian<M> (lagrangian.hpp):
+// value, momentum, velocity, point_gradient, hessian(manifold, t, q, v) (lagrangian_hessian.hpp),
+// has_hessian() and hessian_structure(). The general solve and verify are compiled once for it on
+// every shipped manifold (compiled.hpp, src/methods/solve_<space>.cpp), so that the CLI, the
+// Python module and a user's own Lagrangian reuse them.
 
 #include <concepts>
-#include <memory>
-#include <utility>
 
 #include "cartan/kernels/manifold/lagrangian.hpp"
 #include "cartan/kernels/manifold/lagrangian_hessian.hpp"
 #include "cartan/kernels/manifold/problem.hpp"
+#include "cartan/mechanics/erased.hpp"
 
 namespace cartan::general {
 
+/// A Lagrangian on M as mechanics::Erased reads it.
 template <manifolds::ManifoldWithConnection M>
-class ErasedLagrangian {
- public:
+struct ManifoldTerms {
+  static constexpr bool kOnGroup = false;
+  using Space = M;
   using Point = manifolds::PointOf<M>;
-  using Vector = manifolds::VectorOf<M>;
-  using Components = manifolds::ComponentsOf<M>;
+  using Velocity = manifolds::ComponentsOf<M>;
+  using Momentum = manifolds::ComponentsOf<M>;
+  using Gradient = manifolds::VectorOf<M>;
+  using Hessian = LagrangianHessian<M>;
 
-  /// Wraps `lagrangian` (copied or moved into shared, immutable storage).
-  template <ManifoldLagrangian<M> L>
-    requires(!std::same_as<L, ErasedLagrangian>)
-  explicit ErasedLagrangian(L lagrangian) : impl_(std::make_shared<const Model<L>>(std::move(lagrangian))) {}
-
-  double value(double t, const Point& q, const Components& v) const { return impl_->value(t, q, v); }
-  Components momentum(double t, const Point& q, const Components& v) const { return impl_->momentum(t, q, v); }
-  Components velocity(double t, const Point& q, const Components& mu) const { return impl_->velocity(t, q, mu); }
-  Vector point_gradient(double t, const Point& q, const Components& v) const { return impl_->point_gradient(t, q, v); }
-  /// The wrapped Lagrangian's second derivatives (lagrangian_hessian.hpp).
-  LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q, const Components& v) const {
-    return impl_->hessian(manifold, t, q, v);
-  }
-  /// Whether the wrapped Lagrangian has its own `hessian` (else hessian() differences it): what
-  /// check_lagrangian checks.
-  bool has_hessian() const { return impl_->has_hessian(); }
-  /// The wrapped Lagrangian's structure (mechanics::hessian_structure_of; point gradient read as
-  /// the group gradient), which the Lie-group kernel's scheme reads at run time.
-  mechanics::RuntimeHessianStructure hessian_structure() const { return impl_->structure; }
-
- private:
-  struct Interface {
-    virtual ~Interface() = default;
-    virtual double value(double t, const Point& q, const Components& v) const = 0;
-    virtual Components momentum(double t, const Point& q, const Components& v) const = 0;
-    virtual Components velocity(double t, const Point& q, const Components& mu) const = 0;
-    virtual Vector point_gradient(double t, const Point& q, const Components& v) const = 0;
-    virtual LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q, const Components& v) const = 0;
-    virtual bool has_hessian() const = 0;
-    mechanics::RuntimeHessianStructure structure;
+  template <class L>
+  static constexpr bool wraps = ManifoldLagrangian<L, M>;
+  /// What check_lagrangian checks (has_hessian()).
+  template <class L>
+  static constexpr bool has_hessian = requires(const L& l, const M& m, double t, const Point& q, const Velocity& v) {
+    l.hessian(m, t, q, v);
   };
   template <class L>
-  struct Model final : Interface {
-    explicit Model(L l) : lagrangian(std::move(l)) { this->structure = mechanics::hessian_structure_of(lagrangian); }
-    double value(double t, const Point& q, const Components& v) const override { return lagrangian.value(t, q, v); }
-    Components momentum(double t, const Point& q, const Components& v) const override {
-      return lagrangian.momentum(t, q, v);
-    }
-    Components velocity(double t, const Point& q, const Components& mu) const override {
-      return lagrangian.velocity(t, q, mu);
-    }
-    Vector point_gradient(double t, const Point& q, const Components& v) const override {
-      return lagrangian.point_gradient(t, q, v);
-    }
-    LagrangianHessian<M> hessian(const M& manifold, double t, const Point& q, const Components& v) const override {
-      return lagrangian_hessian(manifold, lagrangian, t, q, v);
-    }
-    bool has_hessian() const override {
-      return requires(const L& l, const M& m, double t, const Point& q, const Components& v) { l.hessian(m, t, q, v); };
-    }
-    L lagrangian;
-  };
-  std::shared_ptr<const Interface> impl_;
+  static Gradient gradient(const L& l, double t, const Point& q, const Velocity& v) {
+    return l.point_gradient(t, q, v);
+  }
+  template <class L>
+  static Hessian hessian(const L& l, const M* manifold, double t, const Point& q, const Velocity& v) {
+    return lagrangian_hessian(*manifold, l, t, q, v);
+  }
 };
+
+template <manifolds::ManifoldWithConnection M>
+using ErasedLagrangian = mechanics::Erased<ManifoldTerms<M>>;
 
 /// The problem of the compiled solve on M (compiled.hpp): any Lagrangian behind the erased type.
 template <manifolds::ManifoldWithConnection M>
