@@ -230,7 +230,7 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
   group.def_static("_dense", [a](const py::object& result, double lambda, const std::string& method, const py::object& times) {
     const transported::TransportedTrajectory<G> x = trajectory_of<G>(result, a, "sol", "result", true);
     const Array t = as_array(times, a.group + ".sol", "t");
-    transported::DenseSamples<G> d = transported::dense_output<G>(
+    transported::TransportedTrajectory<G> d = transported::dense_output<G>(
         x, lambda, parse_enum<cartan::Method>(method, "Result.sol"), std::vector<double>(t.data(), t.data() + t.size()),
         "Result.sol");
     py::dict out;

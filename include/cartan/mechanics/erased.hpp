@@ -19,7 +19,7 @@
 //
 // Terms supplies, as static members:
 //   kOnGroup                      true: the group's names; false: the manifold's
-//   Space Point Velocity Momentum Gradient Hessian   the types (Space: G or M)
+//   Types                         TermTypes<Space, Point, Velocity, Momentum, Gradient, Hessian>
 //   wraps<L>                      whether L is a Lagrangian in these terms (the kernel's concept)
 //   has_hessian<L>                whether L has its own hessian
 //   gradient(l, t, q, v)          l's first derivative in the point
@@ -33,15 +33,26 @@
 
 namespace cartan::mechanics {
 
+/// The types a Terms names (its member Types), in one line per kernel.
+template <class SpaceType, class PointType, class VelocityType, class MomentumType, class GradientType, class HessianType>
+struct TermTypes {
+  using Space = SpaceType;
+  using Point = PointType;
+  using Velocity = VelocityType;
+  using Momentum = MomentumType;
+  using Gradient = GradientType;
+  using Hessian = HessianType;
+};
+
 template <class Terms>
 class Erased {
  public:
-  using Space = typename Terms::Space;
-  using Point = typename Terms::Point;
-  using Velocity = typename Terms::Velocity;
-  using Momentum = typename Terms::Momentum;
-  using Gradient = typename Terms::Gradient;
-  using Hessian = typename Terms::Hessian;
+  using Space = typename Terms::Types::Space;
+  using Point = typename Terms::Types::Point;
+  using Velocity = typename Terms::Types::Velocity;
+  using Momentum = typename Terms::Types::Momentum;
+  using Gradient = typename Terms::Types::Gradient;
+  using Hessian = typename Terms::Types::Hessian;
 
   /// Wraps `lagrangian` (copied or moved into shared, immutable storage). A type derived from
   /// this one (python/src/bind_solvers.hpp) is copied as it is (its pointer), not wrapped again.

@@ -17,28 +17,24 @@ namespace cartan::mechanics {
 /// A reduced Lagrangian on G as Erased reads it.
 template <groups::LieGroup G>
 struct ReducedTerms {
+  using Types = TermTypes<G, groups::ElementOf<G>, groups::TangentOf<G>, groups::CovectorOf<G>, groups::CovectorOf<G>,
+                          LagrangianHessian<G>>;
   static constexpr bool kOnGroup = true;
-  using Space = G;
-  using Point = groups::ElementOf<G>;
-  using Velocity = groups::TangentOf<G>;
-  using Momentum = groups::CovectorOf<G>;
-  using Gradient = groups::CovectorOf<G>;
-  using Hessian = LagrangianHessian<G>;
-
   template <class L>
   static constexpr bool wraps = ReducedLagrangian<L, G>;
   /// Whether lagrangian_hessian takes L's own (Erased reports it on a manifold only).
   template <class L>
-  static constexpr bool has_hessian = requires(const L& l, double t, const Point& g, const Velocity& v) {
-    { l.hessian(t, g, v) } -> std::convertible_to<Hessian>;
-  };
-  template <class L>
-  static Gradient gradient(const L& l, double t, const Point& g, const Velocity& v) {
-    return l.group_gradient(t, g, v);
+  static constexpr bool has_hessian =
+      requires(const L& l, double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) {
+        { l.hessian(t, g, v) } -> std::convertible_to<LagrangianHessian<G>>;
+      };
+  template <class L, class... Args>  // (t, g, v)
+  static groups::CovectorOf<G> gradient(const L& l, const Args&... at) {
+    return l.group_gradient(at...);
   }
-  template <class L>
-  static Hessian hessian(const L& l, const G*, double t, const Point& g, const Velocity& v) {
-    return lagrangian_hessian<G>(l, t, g, v);
+  template <class L, class... Args>  // (t, g, v)
+  static LagrangianHessian<G> hessian(const L& l, const G*, const Args&... at) {
+    return lagrangian_hessian<G>(l, at...);
   }
 };
 

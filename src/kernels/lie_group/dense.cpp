@@ -23,8 +23,8 @@ groups::TangentOf<G> chart_derivative(const groups::TangentOf<G>& x, const group
 }  // namespace
 
 template <groups::LieGroup G>
-DenseSamples<G> dense_output(const TransportedTrajectory<G>& x, double lambda, Method method, const std::vector<double>& times,
-                             std::string_view where) {
+TransportedTrajectory<G> dense_output(const TransportedTrajectory<G>& x, double lambda, Method method,
+                                      const std::vector<double>& times, std::string_view where) {
   using Tangent = groups::TangentOf<G>;
   numerics::check_dense_times(x.t, times, where);
   const std::size_t m = x.t.size();
@@ -37,8 +37,9 @@ DenseSamples<G> dense_output(const TransportedTrajectory<G>& x, double lambda, M
     v_spline = numerics::not_a_knot_spline(nodes, numerics::as_columns(x.v));
     mu_spline = numerics::not_a_knot_spline(nodes, numerics::as_columns(x.mu));
   }
-  DenseSamples<G> out;
-  out.g.reserve(times.size()), out.v.reserve(times.size()), out.mu.reserve(times.size()), out.xi.reserve(times.size());
+  TransportedTrajectory<G> out;
+  out.reserve(times.size());
+  out.t = times;
   for (double t : times) {
     const numerics::DenseStep place = numerics::locate_dense_step(x.t, t);
     const auto [k, s, h] = place;
@@ -66,9 +67,9 @@ DenseSamples<G> dense_output(const TransportedTrajectory<G>& x, double lambda, M
   return out;
 }
 
-#define CARTAN_TRANSPORTED_DENSE(G)                                                                                  \
-  template DenseSamples<G> dense_output<G>(const TransportedTrajectory<G>&, double, Method, const std::vector<double>&, \
-                                           std::string_view);
+#define CARTAN_TRANSPORTED_DENSE(G)                                                                         \
+  template TransportedTrajectory<G> dense_output<G>(const TransportedTrajectory<G>&, double, Method,       \
+                                                    const std::vector<double>&, std::string_view);
 CARTAN_TRANSPORTED_SHIPPED_GROUPS(CARTAN_TRANSPORTED_DENSE)
 #undef CARTAN_TRANSPORTED_DENSE
 

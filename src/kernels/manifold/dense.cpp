@@ -10,8 +10,8 @@
 namespace cartan::general {
 
 template <manifolds::ManifoldWithConnection M>
-GeneralDenseSamples<M> dense_output(const M& manifold, const GeneralTrajectory<M>& x, cartan::Method method,
-                                    const std::vector<double>& times, std::string_view where) {
+GeneralTrajectory<M> dense_output(const M& manifold, const GeneralTrajectory<M>& x, cartan::Method method,
+                                  const std::vector<double>& times, std::string_view where) {
   using Matrix = manifolds::ComponentMatrixOf<M>;
   numerics::check_dense_times(x.t, times, where);
   const std::size_t m = x.t.size();
@@ -22,7 +22,8 @@ GeneralDenseSamples<M> dense_output(const M& manifold, const GeneralTrajectory<M
     v_spline = numerics::not_a_knot_spline(nodes, numerics::as_columns(x.v));
     mu_spline = numerics::not_a_knot_spline(nodes, numerics::as_columns(x.mu));
   }
-  GeneralDenseSamples<M> out;
+  GeneralTrajectory<M> out;
+  out.t = times;
   for (double t : times) {
     const numerics::DenseStep place = numerics::locate_dense_step(x.t, t);
     const auto [k, s, h] = place;
@@ -56,9 +57,9 @@ GeneralDenseSamples<M> dense_output(const M& manifold, const GeneralTrajectory<M
   return out;
 }
 
-#define CARTAN_GENERAL_DENSE(M)                                                                                    \
-  template GeneralDenseSamples<M> dense_output<M>(const M&, const GeneralTrajectory<M>&, cartan::Method,       \
-                                                  const std::vector<double>&, std::string_view);
+#define CARTAN_GENERAL_DENSE(M)                                                                  \
+  template GeneralTrajectory<M> dense_output<M>(const M&, const GeneralTrajectory<M>&, cartan::Method, \
+                                                const std::vector<double>&, std::string_view);
 CARTAN_GENERAL_SHIPPED_MANIFOLDS(CARTAN_GENERAL_DENSE)
 #undef CARTAN_GENERAL_DENSE
 

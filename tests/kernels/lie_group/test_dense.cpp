@@ -32,7 +32,7 @@ void expect_exact_on_a_subgroup(const groups::TangentOf<G>& w, const groups::Ele
   const auto x = subgroup<G>(w, g0);
   const std::vector<double> times{0.05, 0.2, 0.29, 0.4, 0.7, 0.95};
   for (transported::Method method : {transported::Method::Shooting, transported::Method::Collocation}) {
-    const transported::DenseSamples<G> d = transported::dense_output<G>(x, 0.0, method, times);
+    const transported::TransportedTrajectory<G> d = transported::dense_output<G>(x, 0.0, method, times);
     ASSERT_EQ(d.g.size(), times.size());
     for (std::size_t j = 0; j < times.size(); ++j) {
       // exp-log round trips on steps of length <= 0.25 |w|: 1e-14.

@@ -23,19 +23,12 @@
 
 namespace cartan::transported {
 
-/// The solution at the requested times, one entry per time.
-template <groups::LieGroup G>
-struct DenseSamples {
-  std::vector<groups::ElementOf<G>> g;
-  std::vector<groups::TangentOf<G>> v;
-  std::vector<groups::CovectorOf<G>> mu, xi;
-};
-
-/// `x` (the samples of a solution by `method`, with its lambda) at `times`. Throws
+/// `x` (the samples of a solution by `method`, with its lambda) at `times`: the solution as a
+/// trajectory of the kernel's own type, whose t are `times`. Throws
 /// std::invalid_argument "<where>: ..." when x has fewer than 2 samples or a time is outside
 /// [t_0, t_M] (NaN included).
 template <groups::LieGroup G>
-DenseSamples<G> dense_output(const TransportedTrajectory<G>& x, double lambda, Method method, const std::vector<double>& times,
-                             std::string_view where = "dense_output");
+TransportedTrajectory<G> dense_output(const TransportedTrajectory<G>& x, double lambda, Method method,
+                                      const std::vector<double>& times, std::string_view where = "dense_output");
 
 }  // namespace cartan::transported

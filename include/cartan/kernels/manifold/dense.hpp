@@ -22,20 +22,12 @@
 
 namespace cartan::general {
 
-/// The solution at the requested times, one entry per time.
-template <manifolds::ManifoldWithConnection M>
-struct GeneralDenseSamples {
-  std::vector<manifolds::PointOf<M>> q;
-  std::vector<manifolds::FrameOf<M>> frame;
-  std::vector<manifolds::ComponentsOf<M>> v, mu;
-  std::vector<manifolds::ComponentMatrixOf<M>> Xi;
-};
-
-/// `x` (the samples of a solution on `manifold` by `method`) at `times`. Throws
+/// `x` (the samples of a solution on `manifold` by `method`) at `times`: the solution as a
+/// trajectory of the kernel's own type, whose t are `times`. Throws
 /// std::invalid_argument "<where>: ..." when x has fewer than 2 samples, a time is outside
 /// [t_0, t_M] (NaN included), or the piece of a step does not reach its end node.
 template <manifolds::ManifoldWithConnection M>
-GeneralDenseSamples<M> dense_output(const M& manifold, const GeneralTrajectory<M>& x, Method method,
-                                    const std::vector<double>& times, std::string_view where = "dense_output");
+GeneralTrajectory<M> dense_output(const M& manifold, const GeneralTrajectory<M>& x, Method method,
+                                  const std::vector<double>& times, std::string_view where = "dense_output");
 
 }  // namespace cartan::general

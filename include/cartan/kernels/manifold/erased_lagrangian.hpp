@@ -18,28 +18,24 @@ namespace cartan::general {
 /// A Lagrangian on M as mechanics::Erased reads it.
 template <manifolds::ManifoldWithConnection M>
 struct ManifoldTerms {
+  using Types = mechanics::TermTypes<M, manifolds::PointOf<M>, manifolds::ComponentsOf<M>, manifolds::ComponentsOf<M>,
+                                     manifolds::VectorOf<M>, LagrangianHessian<M>>;
   static constexpr bool kOnGroup = false;
-  using Space = M;
-  using Point = manifolds::PointOf<M>;
-  using Velocity = manifolds::ComponentsOf<M>;
-  using Momentum = manifolds::ComponentsOf<M>;
-  using Gradient = manifolds::VectorOf<M>;
-  using Hessian = LagrangianHessian<M>;
-
   template <class L>
   static constexpr bool wraps = ManifoldLagrangian<L, M>;
   /// What check_lagrangian checks (has_hessian()).
   template <class L>
-  static constexpr bool has_hessian = requires(const L& l, const M& m, double t, const Point& q, const Velocity& v) {
-    l.hessian(m, t, q, v);
-  };
-  template <class L>
-  static Gradient gradient(const L& l, double t, const Point& q, const Velocity& v) {
-    return l.point_gradient(t, q, v);
+  static constexpr bool has_hessian =
+      requires(const L& l, const M& m, double t, const manifolds::PointOf<M>& q, const manifolds::ComponentsOf<M>& v) {
+        l.hessian(m, t, q, v);
+      };
+  template <class L, class... Args>  // (t, q, v)
+  static manifolds::VectorOf<M> gradient(const L& l, const Args&... at) {
+    return l.point_gradient(at...);
   }
-  template <class L>
-  static Hessian hessian(const L& l, const M* manifold, double t, const Point& q, const Velocity& v) {
-    return lagrangian_hessian(*manifold, l, t, q, v);
+  template <class L, class... Args>  // (t, q, v)
+  static LagrangianHessian<M> hessian(const L& l, const M* manifold, const Args&... at) {
+    return lagrangian_hessian(*manifold, l, at...);
   }
 };
 
