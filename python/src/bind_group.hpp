@@ -20,6 +20,16 @@ struct GroupTag {};
 template <groups::LieGroup G>
 using GroupClass = py::class_<GroupTag<G>>;
 
+/// A problem's endpoint x as every door reads one (models::check_element, the CLI's and a result
+/// file's rule): an element within kElementTolerance, projected onto the group, so that input
+/// rounded to a few digits (a CLI file's gT, off by 4e-8) is the exact element the CLI solves.
+template <groups::LieGroup G>
+groups::ElementOf<G> checked_endpoint(const groups::ElementOf<G>& x, const std::string& where, const std::string& name) {
+  const std::vector<double> numbers = models::element_numbers(x);
+  models::find_model(G::name(), {}, where).check_element(numbers, where, name);
+  return models::element_of<G>(numbers);
+}
+
 /// Converts the argument `name` of `Group.method` to G's element, tangent or algebra-matrix type.
 template <groups::LieGroup G>
 struct Args {
@@ -27,14 +37,9 @@ struct Args {
   groups::ElementOf<G> element(const py::handle& x, std::string_view method, std::string_view name) const {
     return to_eigen<groups::ElementOf<G>>(x, group + "." + std::string(method), name);
   }
-  /// A problem's endpoint as every door reads one (models::check_element, the CLI's and a result
-  /// file's rule): an element within kElementTolerance, projected onto the group, so that input
-  /// rounded to a few digits (a CLI file's gT, off by 4e-8) is the exact element the CLI solves.
+  /// A problem's endpoint (checked_endpoint).
   groups::ElementOf<G> endpoint(const py::handle& x, std::string_view method, std::string_view name) const {
-    const std::string where = group + "." + std::string(method);
-    const std::vector<double> numbers = models::element_numbers(element(x, method, name));
-    models::find_model(G::name(), {}, where).check_element(numbers, where, std::string(name));
-    return models::element_of<G>(numbers);
+    return checked_endpoint<G>(element(x, method, name), group + "." + std::string(method), std::string(name));
   }
   groups::TangentOf<G> tangent(const py::handle& x, std::string_view method, std::string_view name) const {
     return to_eigen<groups::TangentOf<G>>(x, group + "." + std::string(method), name);

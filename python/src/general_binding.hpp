@@ -82,10 +82,8 @@ decltype(auto) visit_holder(const Holder& holder, F&& f) {
 template <class M>
 PointOf<M> point_arg(const M& manifold, const py::handle& q, const std::string& where, const char* name) {
   const PointOf<M> p = to_eigen<PointOf<M>>(q, where, name);
-  if constexpr (requires { typename M::Group; }) {  // a group's element as a group model's endpoint
-    const std::vector<double> numbers = models::element_numbers(p);
-    models::find_model(M::Group::name(), {}, where).check_element(numbers, where, name);
-    return models::element_of<typename M::Group>(numbers);
+  if constexpr (requires { typename M::Group; }) {
+    return checked_endpoint<typename M::Group>(p, where, name);  // as a group model's endpoint
   } else {
     manifold.validate(p, name);
     return p;
