@@ -70,7 +70,7 @@ nlohmann::json result_row(std::size_t index, const GridPoint& point, const nlohm
     row[key] = result.at(key);
   }
   row["v0"] = result.at("v").at(0);
-  row["action"] = result.contains("action") ? result.at("action") : nlohmann::json(nullptr);
+  row["action"] = result.at("action");  // result_json writes it always (null where there is none)
   if (result.contains("frame0")) row["frame0"] = result.at("frame0");  // the frame v0 is in (a manifold's)
   if (trajectories) {
     for (const char* key : {"t", result.contains("q") ? "q" : "g", "v"}) row[key] = result.at(key);
