@@ -303,7 +303,8 @@ class Result:
         group model's problem, or the particle on any space of :data:`cartan.SPACES` with its
         connection, mass, gravity and frame0. A Lagrangian or potential defined in Python is written
         as model "python:<type name>", which `cartan verify` rejects (it cannot rebuild it) and
-        :func:`cartan.load` accepts; a Chart (Python code) raises ValueError (pickle the result)."""
+        :func:`cartan.load` accepts; so is a Chart (manifold "python:<name>": pass it again,
+        ``cartan.load(path, space=chart)``)."""
         _results.to_json(self, path)
 
     def plot(self, path=None):

@@ -417,16 +417,6 @@ general::ErasedLagrangian<M> request_lagrangian(const M&, const GeneralRequest& 
   return general::erased_particle<M>(inertia, std::move(potential), std::move(gradient));
 }
 
-/// Whether the request's Lagrangian depends on the frame at q0 (manifolds::require_frame_towards):
-/// an object of the user's, or an inertia that is not a multiple of the identity.
-template <int m>
-bool depends_on_frame(const GeneralRequest& r) {
-  if (!r.lagrangian.is_none()) return true;
-  if (r.inertia.is_none()) return false;
-  const Square<m> inertia = matrix_or_diagonal<m>(r.inertia, kWhere, "inertia");
-  return (inertia - inertia(0, 0) * Square<m>::Identity()).cwiseAbs().maxCoeff() != 0;
-}
-
 /// Runs a solve or check f() on a manifold whose geometry may call Python (`chart` non-null, with
 /// the GIL held): the chart's first callback error is re-raised after it, in place of whatever
 /// the solver made of it.
@@ -506,11 +496,8 @@ struct PosedRequest {
       : problem{manifold, request_lagrangian(manifold, r, state, python_object, python), r.T, r.N,
                 point_arg(manifold, r.q0, kWhere, "q0"), point_arg(manifold, r.qT, kWhere, "qT"), std::nullopt},
         options(solve_options(r, kWhere)) {
-    if (!r.frame0.is_none()) {
-      problem.frame0 = to_eigen<FrameOf<M>>(r.frame0, kWhere, "frame0");
-    } else if (depends_on_frame<M::kDim>(r)) {
-      manifolds::require_frame_towards(manifold, problem.q0, problem.qT, kWhere);
-    }
+    // without frame0 the problem's validation refuses the fallback frame where the Lagrangian depends on it
+    if (!r.frame0.is_none()) problem.frame0 = to_eigen<FrameOf<M>>(r.frame0, kWhere, "frame0");
     if (!r.v0.is_none()) guess.v0 = finite_arg<ComponentsOf<M>>(r.v0, kWhere, "v0");
     if (!r.Xi0.is_none()) guess.Xi0 = finite_arg<ComponentMatrixOf<M>>(r.Xi0, kWhere, "Xi0");
     if (!r.guess.is_none()) guess.trajectory = trajectory_of(manifold, r.guess, kWhere, "guess");

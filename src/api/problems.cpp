@@ -239,9 +239,7 @@ general::ErasedProblem<M> manifold_problem(const ManifoldProblem& p, const Guess
     require_numbers(where, "frame0", p.frame0, static_cast<std::size_t>(m * d),
                     std::to_string(m) + " rows of " + std::to_string(d) + " numbers: e_1 .. e_" + std::to_string(m) + " at q0");
     frame0 = Eigen::Map<const Eigen::Matrix<double, m, d, m == 1 ? Eigen::ColMajor : Eigen::RowMajor>>(p.frame0.data()).transpose();
-  } else if ((mass - mass(0, 0) * Eigen::MatrixXd::Identity(m, m)).cwiseAbs().maxCoeff() != 0) {
-    manifolds::require_frame_towards(manifold, q0, qT, where);  // l = 1/2 v.A v depends on the frame
-  }
+  }  // without it, validate_for refuses the fallback frame where A is not a multiple of I
   if (!guess.v0.empty()) require_numbers(where, "v0", guess.v0, m, "a guess of v(0) in the frame at q0");
   if (!guess.xi0.empty()) {
     throw_invalid(where, "xi0", excerpt(guess.xi0),

@@ -295,6 +295,12 @@ TEST(Quadrics, TheDefaultFrameTurnsTowardsQT) {
     expect_invalid([&] { require_frame_towards(Sphere{}, q0, qT, "here"); },
                    {"here: q0/qT = [", qT == q0 ? "are equal" : "are antipodal", "give frame0"});
   }
+  // 1e-7 from -q0, where difference(q0, qT) is known to about 1e-9 only: the frame is still
+  // tangent and orthonormal to rounding (1e-15), as GeneralProblem::validate asks of a frame0.
+  const Eigen::Vector3d nearly_antipodal = Sphere{}.step(Eigen::Vector3d(-q0), Eigen::Vector3d(1e-7 * Sphere::tangent_basis(-q0).col(0)));
+  const Eigen::Matrix<double, 3, 2> e = default_frame(Sphere{}, q0, nearly_antipodal);
+  EXPECT_NEAR((e.transpose() * q0).cwiseAbs().maxCoeff(), 0, 1e-15);
+  EXPECT_NEAR_MATRIX(Eigen::Matrix2d(e.transpose() * e), Eigen::Matrix2d::Identity(), 1e-15);
   const Eigen::Vector3d p = hyperbolic_point(0.7, -1.1);
   EXPECT_EQ(default_frame(HyperbolicPlane{}, p, p), HyperbolicPlane::tangent_basis(p));
   expect_invalid([&] { require_frame_towards(HyperbolicPlane{}, p, p, "here"); }, {"are equal", "give frame0"});

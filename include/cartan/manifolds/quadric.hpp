@@ -116,8 +116,13 @@ class Quadric {
     const Vector towards = project_tangent(a, b);
     const double size = std::sqrt(std::max(0.0, inner(towards, towards)));
     if (!(size > 1e-12)) return std::nullopt;
+    // Projected again once unit: with b near -a on S^2, |towards| is small and its rounding, of
+    // order 1e-16 / |towards| relative, leaves a normal part in towards / size (1e-9 at 1e-7 from
+    // -a, as large as GeneralProblem::validate allows a frame0); the second projection is exact
+    // to rounding.
+    const Vector e1 = project_tangent(a, Vector(towards / size));
     Frame e;
-    e.col(0) = towards / size;
+    e.col(0) = e1 / std::sqrt(inner(e1, e1));
     e.col(1) = metric(a) * a.cross(Vector(e.col(0)));
     return e;
   }

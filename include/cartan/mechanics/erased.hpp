@@ -82,6 +82,8 @@ class Erased {
   /// The wrapped Lagrangian's structure (hessian_structure_of; a point gradient read as the group
   /// gradient), which the schemes read at run time.
   RuntimeHessianStructure hessian_structure() const { return impl_->structure; }
+  /// Whether the wrapped Lagrangian does not depend on the orthonormal frame (frame_invariant_of).
+  bool frame_invariant() const { return impl_->frame_invariant; }
 
  private:
   struct Interface {
@@ -93,12 +95,14 @@ class Erased {
     virtual Hessian hessian(const Space* space, double t, const Point& q, const Velocity& v) const = 0;
     RuntimeHessianStructure structure;
     bool own_hessian = false;
+    bool frame_invariant = false;
   };
   template <class L>
   struct Model final : Interface {
     explicit Model(L l) : lagrangian(std::move(l)) {
       this->structure = mechanics::hessian_structure_of(lagrangian);
       this->own_hessian = Terms::template has_hessian<L>;
+      this->frame_invariant = mechanics::frame_invariant_of(lagrangian);
     }
     double value(double t, const Point& q, const Velocity& v) const override { return lagrangian.value(t, q, v); }
     Momentum momentum(double t, const Point& q, const Velocity& v) const override { return lagrangian.momentum(t, q, v); }

@@ -46,6 +46,22 @@ concept ReducedHamiltonian =
       { h.group_gradient(t, g, mu) } -> std::convertible_to<groups::CovectorOf<G>>;
     };
 
+/// Whether l(t, q, R v) = l(t, q, v) for every orthogonal R, v the components in an orthonormal
+/// frame: whether a problem posed in one orthonormal frame at its first point is the same problem
+/// in any other. What the type reports (`frame_invariant()`: a KineticPotential whose A is a
+/// multiple of the identity, an erased Lagrangian), else false: a Lagrangian is taken to depend on
+/// its frame unless it says otherwise (general::GeneralProblem::validate reads it).
+template <class L>
+bool frame_invariant_of(const L& lagrangian) {
+  if constexpr (requires {
+                  { lagrangian.frame_invariant() } -> std::convertible_to<bool>;
+                }) {
+    return lagrangian.frame_invariant();
+  } else {
+    return false;
+  }
+}
+
 inline bool all_finite(double x) { return std::isfinite(x); }
 /// A finite sum proves every entry finite (one pass of additions, cheaper than a comparison per
 /// entry); an infinite or NaN sum may still come from finite entries that overflow, so then the

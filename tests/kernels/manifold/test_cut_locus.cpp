@@ -51,7 +51,9 @@ class CutLocusTest : public ::testing::Test {
   static ErasedProblem<M> problem(const M& manifold, const Point& q0, const Point& qT) {
     const Eigen::Matrix<double, m, m> a = Eigen::Matrix<double, m, m>::Identity() +
                                           Eigen::Matrix<double, m, 1>::LinSpaced(0.0, 1.5).asDiagonal().toDenseMatrix();
-    return {manifold, ErasedLagrangian<M>(KineticPotential<M>(a)), 1.0, 40, q0, qT, std::nullopt};
+    // The anisotropic l depends on the frame: given, so that the problem is defined at antipodal
+    // endpoints too (where default_frame falls back on tangent_basis(q0)).
+    return {manifold, ErasedLagrangian<M>(KineticPotential<M>(a)), 1.0, 40, q0, qT, manifolds::default_frame(manifold, q0, qT)};
   }
 
   /// The storage distance a passing or converged result may have from qT: the solver's and the

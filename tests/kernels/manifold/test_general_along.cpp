@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "cartan/kernels/manifold/along.hpp"
 #include "cartan/kernels/manifold/check_lagrangian.hpp"
@@ -70,6 +71,41 @@ struct Pendulum {
 // The manifold's check names a wrong point gradient (a sign: O(1)) and ignores what is not defined
 // of it (a normal part on the sphere); a correct Lagrangian agrees to the differences' accuracy
 // (check_lagrangian.hpp: 1e-10; asserted 1e-8).
+// A problem without frame0 whose endpoints leave the sphere's default frame undefined (equal or
+// antipodal: tangent_basis(q0) is then a convention) is the same problem in every orthonormal frame
+// only if its Lagrangian does not see the frame: refused otherwise, the kernel's own rule, so that
+// every door (api, Python, a C++ caller) refuses the same problems.
+struct OwnKinetic {  // a Lagrangian of the user's: 1/2 v.v, but it does not say that it is frame invariant
+  double value(double, const Eigen::Vector3d&, const Eigen::Vector2d& v) const { return 0.5 * v.squaredNorm(); }
+  Eigen::Vector2d momentum(double, const Eigen::Vector3d&, const Eigen::Vector2d& v) const { return v; }
+  Eigen::Vector2d velocity(double, const Eigen::Vector3d&, const Eigen::Vector2d& mu) const { return mu; }
+  Eigen::Vector3d point_gradient(double, const Eigen::Vector3d&, const Eigen::Vector2d&) const { return Eigen::Vector3d::Zero(); }
+};
+
+TEST(GeneralProblem, RefusesTheFallbackFrameWhereTheLagrangianDependsOnIt) {
+  using Particle = general::KineticPotential<Sphere>;
+  const Eigen::Vector3d q0(0, 0, 1);
+  const Particle isotropic(2 * Eigen::Matrix2d::Identity()), anisotropic(Eigen::Vector2d(1, 2).asDiagonal());
+  EXPECT_TRUE(mechanics::frame_invariant_of(isotropic));
+  EXPECT_FALSE(mechanics::frame_invariant_of(anisotropic));
+  EXPECT_FALSE(mechanics::frame_invariant_of(OwnKinetic{}));
+  EXPECT_TRUE(mechanics::frame_invariant_of(general::ErasedLagrangian<Sphere>(isotropic)));  // carried through the erasure
+  EXPECT_FALSE(mechanics::frame_invariant_of(general::ErasedLagrangian<Sphere>(anisotropic)));
+  for (const Eigen::Vector3d& qT : {q0, Eigen::Vector3d(-q0)}) {
+    const auto posed = [&](const Particle& l, std::optional<Sphere::Frame> frame0) {
+      return general::ErasedProblem<Sphere>{Sphere{}, general::ErasedLagrangian<Sphere>(l), 1, 10, q0, qT, frame0};
+    };
+    EXPECT_NO_THROW(posed(isotropic, std::nullopt).validate());
+    expect_invalid([&] { posed(anisotropic, std::nullopt).validate(); },
+                   {"GeneralProblem: q0/qT = [0, 0, 1]", qT == q0 ? "are equal" : "are antipodal", "give frame0"});
+    expect_invalid([&] { general::GeneralProblem<Sphere, OwnKinetic>{Sphere{}, {}, 1, 10, q0, qT, std::nullopt}.validate(); },
+                   {"give frame0"});
+    EXPECT_NO_THROW(posed(anisotropic, Sphere::tangent_basis(q0)).validate());
+  }
+  // Where the frame towards qT is defined, the default frame is that one for every Lagrangian.
+  EXPECT_NO_THROW((general::GeneralProblem<Sphere, OwnKinetic>{Sphere{}, {}, 1, 10, q0, Eigen::Vector3d(1, 0, 0), std::nullopt}.validate()));
+}
+
 TEST(GeneralCheckLagrangian, NamesAWrongPointGradientOnly) {
   const Sphere sphere;
   mechanics::CheckLagrangianOptions options;

@@ -84,6 +84,11 @@ class KineticPotential {
   }
 
   const Inertia& inertia() const { return inertia_; }
+  /// 1/2 v^T A v is the same in every orthonormal frame where A is a multiple of the identity
+  /// (mechanics::frame_invariant_of); V(q) does not see the frame.
+  bool frame_invariant() const {
+    return (inertia_ - inertia_(0, 0) * Inertia::Identity()).cwiseAbs().maxCoeff() == 0;
+  }
   double potential(const Point& q) const { return potential_ ? potential_(q) : 0.0; }
 
   double value(double, const Point& q, const Components& v) const { return 0.5 * v.dot(inertia_ * v) - potential(q); }

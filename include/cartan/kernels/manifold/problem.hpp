@@ -38,13 +38,18 @@ struct GeneralProblem {
     return frame0 ? *frame0 : manifolds::default_frame(manifold, q0, qT);
   }
 
-  /// Throws std::invalid_argument naming the first bad value: T, N, q0, qT, or a frame0 that is
-  /// not finite, not tangent at q0 or not a basis.
+  /// Throws std::invalid_argument naming the first bad value: T, N, q0, qT, a frame0 that is not
+  /// finite, not tangent at q0 or not a basis, or no frame0 where the default one falls back on
+  /// tangent_basis(q0) (q0, qT equal, or antipodal on S^2) and the Lagrangian depends on the frame
+  /// (mechanics::frame_invariant_of): the problem is then not defined without frame0.
   void validate() const {
     require_horizon(T, N, "GeneralProblem");
     manifold.validate(q0, "q0");
     manifold.validate(qT, "qT");
-    if (!frame0) return;
+    if (!frame0) {
+      if (!mechanics::frame_invariant_of(lagrangian)) manifolds::require_frame_towards(manifold, q0, qT, "GeneralProblem");
+      return;
+    }
     require_finite(*frame0, "GeneralProblem", "frame0");
     const manifolds::FrameOf<M> basis = manifold.tangent_basis(q0);
     const manifolds::FrameOf<M> in_span = basis * (manifolds::dual_frame<M>(basis) * *frame0);
