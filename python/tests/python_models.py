@@ -70,3 +70,22 @@ class PyH3Oscillator:
 
     def velocity(self, t, g, mu):
         return np.array(mu, dtype=float)
+
+
+class SphereKinetic:
+    """l = 1/2 v.A v - G q[2] on S^2 written in Python (a manifold's lagrangian= object)."""
+
+    def __init__(self, A, G):
+        self.A, self.G = np.asarray(A, float), G
+
+    def value(self, t, q, v):
+        return 0.5 * v @ self.A @ v - self.G * q[2]
+
+    def momentum(self, t, q, v):
+        return self.A @ v
+
+    def velocity(self, t, q, mu):
+        return np.linalg.solve(self.A, mu)
+
+    def point_gradient(self, t, q, v):
+        return np.array([0.0, 0.0, -self.G])

@@ -33,6 +33,7 @@ from scipy.linalg import expm
 
 import cartan
 from cartan import Euclidean, GroupManifold, HyperbolicPlane, Sphere
+from python_models import SphereKinetic
 
 SO3 = cartan.SO3
 A0, AT = np.array([-1.0, -1, -1]), np.array([0.9, 1.0, 1.0])
@@ -343,25 +344,6 @@ def test_python_potential_equals_builtin_gravity():
     # Without gravity the solution differs: the potential is really used.
     free = cartan.solve_general(Sphere(), **kwargs)
     assert np.abs(free.v0 - builtin.v0).max() > 1e-2
-
-
-class SphereKinetic:
-    """l = 1/2 v.A v - G q[2] on S^2 written in Python (the lagrangian= interface)."""
-
-    def __init__(self, A, G):
-        self.A, self.G = np.asarray(A, float), G
-
-    def value(self, t, q, v):
-        return 0.5 * v @ self.A @ v - self.G * q[2]
-
-    def momentum(self, t, q, v):
-        return self.A @ v
-
-    def velocity(self, t, q, mu):
-        return np.linalg.solve(self.A, mu)
-
-    def point_gradient(self, t, q, v):
-        return np.array([0.0, 0.0, -self.G])
 
 
 def test_python_lagrangian_object_equals_kinetic_potential():
