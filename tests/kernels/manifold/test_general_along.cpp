@@ -68,9 +68,6 @@ struct Pendulum {
   }
 };
 
-// The manifold's check names a wrong point gradient (a sign: O(1)) and ignores what is not defined
-// of it (a normal part on the sphere); a correct Lagrangian agrees to the differences' accuracy
-// (check_lagrangian.hpp: 1e-10; asserted 1e-8).
 // A problem without frame0 whose endpoints leave the sphere's default frame undefined (equal or
 // antipodal: tangent_basis(q0) is then a convention) is the same problem in every orthonormal frame
 // only if its Lagrangian does not see the frame: refused otherwise, the kernel's own rule, so that
@@ -106,6 +103,9 @@ TEST(GeneralProblem, RefusesTheFallbackFrameWhereTheLagrangianDependsOnIt) {
   EXPECT_NO_THROW((general::GeneralProblem<Sphere, OwnKinetic>{Sphere{}, {}, 1, 10, q0, Eigen::Vector3d(1, 0, 0), std::nullopt}.validate()));
 }
 
+// The manifold's check names a wrong point gradient (a sign: O(1)) and ignores what is not defined
+// of it (a normal part on the sphere); a correct Lagrangian agrees to the differences' accuracy
+// (check_lagrangian.hpp: 1e-10; asserted 1e-8).
 TEST(GeneralCheckLagrangian, NamesAWrongPointGradientOnly) {
   const Sphere sphere;
   mechanics::CheckLagrangianOptions options;
