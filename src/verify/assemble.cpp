@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace cartan::verify {
 
@@ -33,11 +34,25 @@ Report assemble(const Figures& f, int order, double tol, Status status) {
   report.checks.push_back({"boundary", f.boundary, tol, true, f.boundary_note});
   report.checks.push_back({"legendre", f.legendre, kLegendreThreshold, true, f.legendre_note});
   report.checks.push_back(discretisation_check("energy", f.energy, threshold(f.energy_constant, 1), true, f.energy_note));
-  report.checks.push_back(discretisation_check("residual", f.residual.relative, threshold(kResidualConstant, 0), true,
-                                               f.residual_equations + " by finite differences, worst: " + f.residual.equation +
-                                                   " at t = " + Report::format(f.residual.t)));
-  report.checks.push_back(discretisation_check("stationarity", f.stationarity.value_or(0), threshold(kActionConstant, 0),
-                                               f.stationarity.has_value(),
+  // A check whose figure is taken by differences of the samples: its threshold adds their
+  // roundoff (`floor`, relative); where that alone exceeds kCoarsestThreshold, no refinement helps.
+  const auto check_above_roundoff = [&](std::string name, double figure, double limit, double floor, bool applicable,
+                                        std::string note) {
+    if (applicable && floor > 0.1 * limit) {  // said where it matters
+      note += " (the threshold includes the samples' roundoff, " + Report::format(floor) + ")";
+    }
+    if (applicable && floor > kCoarsestThreshold) {
+      return Check{std::move(name), figure, floor, false,
+                   "unresolved: the path's steps are at the roundoff of its samples; " + note};
+    }
+    return discretisation_check(std::move(name), figure, limit + floor, applicable, std::move(note));
+  };
+  report.checks.push_back(check_above_roundoff("residual", f.residual.relative, threshold(kResidualConstant, 0),
+                                               f.residual.floor, true,
+                                               f.residual_equations + " by finite differences, worst: " +
+                                                   f.residual.equation + " at t = " + Report::format(f.residual.t)));
+  report.checks.push_back(check_above_roundoff("stationarity", f.stationarity.value_or(0), threshold(kActionConstant, 0),
+                                               f.stationarity_floor, f.stationarity.has_value(),
                                                f.stationarity ? "max |dS| / (size of its terms) over " +
                                                                     std::to_string(kVariations) +
                                                                     " random endpoint-fixed variations"

@@ -6,13 +6,27 @@
 
 namespace cartan {
 
-/// The unit of the auxiliary (xi or Xi): T |v_ref| |mu_ref| (v_ref the geodesic velocity, mu_ref
-/// its momentum at the start; the kernel computes both norms on its own types), or 1 where that
-/// is not a positive normal number. For a kinetic Lagrangian the problem at horizon cT is then the
-/// same dimensionless problem (methods/lie_group/shooting.hpp's header comment).
+/// The unit of the auxiliary (xi or Xi): T |v_ref| |mu_ref| (v_ref the velocity of
+/// aux_scale_velocity, mu_ref its momentum at the start; the kernel computes both norms on its own
+/// types), or 1 where that is not a positive normal number. For a kinetic Lagrangian the problem at
+/// horizon cT is then the same dimensionless problem (methods/lie_group/shooting.hpp's header comment).
 inline double aux_scale(double T, double v_ref_norm, double mu_ref_norm) {
   const double scale = T * v_ref_norm * mu_ref_norm;
   return std::isfinite(scale) && scale > std::numeric_limits<double>::min() ? scale : 1.0;
+}
+
+/// The velocity at which aux_scale is taken: the geodesic velocity v, but at a speed of at least
+/// 1/T (one radian over the horizon, the unit of v0 in the shooting driver), along v, or along the
+/// first axis where v vanishes or is not finite. Below 1/T the auxiliary's unit would shrink like
+/// |v|^2 while v0's stays 1/T: the auxiliary's rows of the dimensionless Jacobian grow like
+/// 1 / (|v| T), and Levenberg–Marquardt stalled (SO(3), |log(g0^-1 gT)| = 1e-5: max-iterations) or
+/// traded the boundary for the auxiliary (S^2, endpoints 1e-10 apart: a constant path within tol).
+template <class Velocity>
+Velocity aux_scale_velocity(const Velocity& v, double T) {
+  const double speed = v.norm();
+  if (speed * T >= 1 && std::isfinite(speed)) return v;
+  if (speed > 0 && std::isfinite(speed)) return v / (speed * T);
+  return Velocity::Unit(0) / T;
 }
 
 }  // namespace cartan

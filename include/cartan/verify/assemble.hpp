@@ -29,6 +29,7 @@ struct Figures {
   Residual residual;
   std::string residual_equations;  ///< what the residual is of: "eq:reduced-system", "the local form"
   std::optional<double> stationarity;  ///< empty: not applicable, for the reason in stationarity_note
+  double stationarity_floor = 0;       ///< its roundoff, relative (step_roundoff), added to the threshold
   std::string stationarity_note;
 };
 

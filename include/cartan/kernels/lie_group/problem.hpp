@@ -43,11 +43,10 @@ groups::TangentOf<G> geodesic_guess(const TransportedProblem<G, L>& problem) {
 }
 
 /// The unit of xi on this problem (aux_scale; methods/lie_group/shooting.hpp's header comment):
-/// T |v_ref| |mu_ref|, v_ref the geodesic velocity (or 1/T along the first axis when g0 = gT).
+/// T |v_ref| |mu_ref|, v_ref the geodesic velocity at a speed of at least 1/T (aux_scale_velocity).
 template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
 double xi_scale(const TransportedProblem<G, L>& problem) {
-  groups::TangentOf<G> v = geodesic_guess(problem);
-  if (!(v.norm() > 0)) v = groups::TangentOf<G>::Unit(0) / problem.T;
+  const groups::TangentOf<G> v = aux_scale_velocity(geodesic_guess(problem), problem.T);
   return aux_scale(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.g0, v).norm());
 }
 

@@ -57,6 +57,7 @@ Report verify_trajectory(const transported::TransportedProblem<G, L>& problem, t
   f.residual_equations = "eq:reduced-system";
   if (is_uniform(checks.trajectory().t)) {
     f.stationarity = checks.action_stationarity(kVariations, kVariationSeed);
+    f.stationarity_floor = checks.stationarity_roundoff();
   } else {
     f.stationarity_note = kNonUniformStationarityNote;
   }

@@ -127,7 +127,7 @@ class TrajectoryChecks {
   /// |v| |mu| in the covector equations) over the samples; the largest of the three is returned.
   /// Needs at least 3 samples (else 0).
   Residual equation_residual() const {
-    double worst[3] = {0, 0, 0}, scale[3] = {0, 0, 0}, where[3] = {0, 0, 0};
+    double worst[3] = {0, 0, 0}, scale[3] = {0, 0, 0}, where[3] = {0, 0, 0}, noise[3] = {0, 0, 0};
     const double torsion = 2 * lambda_ - 1, curvature = lambda_ * (1 - lambda_);
     for (std::size_t k = 1; k + 1 < size(); ++k) {
       const ThreePoint d(x_.t[k] - x_.t[k - 1], x_.t[k + 1] - x_.t[k]);
@@ -149,18 +149,31 @@ class TrajectoryChecks {
                                dmu.norm() + force.norm() + coadjoint_size + std::abs(torsion) * coad_mu.norm() +
                                    std::abs(curvature) * coad_xi.norm(),
                                dxi.norm() + coadjoint_size + coad_mu.norm()};
+      // u comes from log(g_k^-1 g_{k+-1}): a product's roundoff, of size |g_k^-1| |g_j|.
+      const double inverse = G::inverse(x_.g[k]).norm();
+      const double roundoff[3] = {
+          three_point_roundoff(d, inverse * x_.g[k - 1].norm(), inverse * x_.g[k].norm(), inverse * x_.g[k + 1].norm()),
+          three_point_roundoff(d, x_.mu[k - 1].norm(), x_.mu[k].norm(), x_.mu[k + 1].norm()),
+          three_point_roundoff(d, x_.xi[k - 1].norm(), x_.xi[k].norm(), x_.xi[k + 1].norm())};
       for (int i = 0; i < 3; ++i) {
         scale[i] = std::max(scale[i], terms[i]);
+        noise[i] = std::max(noise[i], roundoff[i]);
         if (residual[i] > worst[i]) worst[i] = residual[i], where[i] = x_.t[k];
       }
     }
     static const char* const kNames[3] = {"g' = g P v", "mu equation", "xi' = -ad*_v mu"};
-    Residual out;
-    for (int i = 0; i < 3; ++i) {
-      const double r = relative_to(worst[i], scale[i]);
-      if (i == 0 || r > out.relative) out = {r, kNames[i], where[i]};
+    return worst_equation(worst, scale, noise, where, kNames, 3);
+  }
+
+  /// The stationarity figure's roundoff (step_roundoff): the samples' size is that of the products
+  /// g_k^-1 g_{k+1} the steps are logarithms of.
+  double stationarity_roundoff() const {
+    double largest = 0, longest = 0;
+    for (std::size_t k = 0; k + 1 < size(); ++k) {
+      largest = std::max(largest, G::inverse(x_.g[k]).norm() * x_.g[k + 1].norm());
+      longest = std::max(longest, step_log(k).norm());
     }
-    return out;
+    return step_roundoff(largest, longest);
   }
 
   /// max over `count` variations w_j(t) = sin(j pi t / T) r_j (j = 1..count, r_j random unit

@@ -70,11 +70,11 @@ manifolds::ComponentsOf<M> geodesic_guess(const GeneralProblem<M, L>& problem) {
          problem.T;
 }
 
-/// The unit of Xi on this problem (aux_scale): T |v_ref| |mu_ref|, v_ref the geodesic guess.
+/// The unit of Xi on this problem (aux_scale): T |v_ref| |mu_ref|, v_ref the geodesic guess at a
+/// speed of at least 1/T (aux_scale_velocity).
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 double xi_scale(const GeneralProblem<M, L>& problem) {
-  manifolds::ComponentsOf<M> v = geodesic_guess(problem);
-  if (!(v.norm() > 0)) v = manifolds::ComponentsOf<M>::Unit(0) / problem.T;
+  const manifolds::ComponentsOf<M> v = aux_scale_velocity(geodesic_guess(problem), problem.T);
   return aux_scale(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.q0, v).norm());
 }
 

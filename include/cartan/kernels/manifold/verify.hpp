@@ -113,7 +113,7 @@ class GeneralChecks {
   /// The local form's residual at the interior samples (header comment), each equation relative to
   /// the largest sum of its terms' magnitudes; the worst of the three.
   verify::Residual equation_residual() const {
-    double worst[3] = {0, 0, 0}, scale[3] = {0, 0, 0}, where[3] = {0, 0, 0};
+    double worst[3] = {0, 0, 0}, scale[3] = {0, 0, 0}, where[3] = {0, 0, 0}, noise[3] = {0, 0, 0};
     for (std::size_t k = 1; k + 1 < size(); ++k) {
       // The three-point derivative at t_k for steps b = t_k - t_{k-1}, a = t_{k+1} - t_k, second
       // order on any mesh: (b^2 (f_{k+1} - f_k) + a^2 (f_k - f_{k-1})) / (a b (a + b)); on a
@@ -139,18 +139,29 @@ class GeneralChecks {
       const double residual[3] = {(dq - u).norm(), (dmu - force - torsion - curvature).norm(), (dXi + vmu).norm()};
       const double terms[3] = {dq.norm() + u.norm(), dmu.norm() + force.norm() + torsion.norm() + curvature.norm() + size,
                                dXi.norm() + vmu.norm()};
+      const verify::ThreePoint w(b, a);  // the weights of the formula above, for its roundoff
+      const double roundoff[3] = {
+          verify::three_point_roundoff(w, x_.q[k - 1].norm(), x_.q[k].norm(), x_.q[k + 1].norm()),
+          verify::three_point_roundoff(w, x_.mu[k - 1].norm(), x_.mu[k].norm(), x_.mu[k + 1].norm()),
+          verify::three_point_roundoff(w, x_.Xi[k - 1].norm(), x_.Xi[k].norm(), x_.Xi[k + 1].norm())};
       for (int i = 0; i < 3; ++i) {
         scale[i] = std::max(scale[i], terms[i]);
+        noise[i] = std::max(noise[i], roundoff[i]);
         if (residual[i] > worst[i]) worst[i] = residual[i], where[i] = x_.t[k];
       }
     }
     static const char* const kNames[3] = {"q' = E v", "mu equation", "Xi' = -v mu^T"};
-    verify::Residual out;
-    for (int i = 0; i < 3; ++i) {
-      const double r = verify::relative_to(worst[i], scale[i]);
-      if (i == 0 || r > out.relative) out = {r, kNames[i], where[i]};
+    return verify::worst_equation(worst, scale, noise, where, kNames, 3);
+  }
+
+  /// The stationarity figure's roundoff (verify::step_roundoff).
+  double stationarity_roundoff() const {
+    double largest = 0, longest = 0;
+    for (std::size_t k = 0; k < size(); ++k) {
+      largest = std::max(largest, x_.q[k].norm());
+      if (k + 1 < size()) longest = std::max(longest, difference(k, k + 1).norm());
     }
-    return out;
+    return verify::step_roundoff(largest, longest);
   }
 
   /// max over `count` variations w_j(t) = sin(j pi t / T) (basis(q_k) r_j), r_j random unit, of
@@ -246,6 +257,7 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
   f.residual_equations = "the local form";
   if (verify::is_uniform(x.t)) {
     f.stationarity = checks.action_stationarity(verify::kVariations, verify::kVariationSeed);
+    f.stationarity_floor = checks.stationarity_roundoff();
   } else {
     f.stationarity_note = verify::kNonUniformStationarityNote;
   }

@@ -9,8 +9,9 @@
 //
 // Scale. The unknowns and residual are made dimensionless so that the same tolerance means the
 // same at every horizon: v0 in units of 1/T, xi in units of the curvature integral's size
-// xi_scale = T |v_ref| |mu_ref| (v_ref the geodesic velocity, mu_ref its momentum at g0; for a
-// kinetic Lagrangian the problem at horizon cT is then the same problem). The convergence test
+// xi_scale = T |v_ref| |mu_ref| (v_ref the geodesic velocity at a speed of at least 1/T, mu_ref its
+// momentum at g0: principle/scales.hpp; for a kinetic Lagrangian the problem at horizon cT is then
+// the same problem). The convergence test
 // is |(log(gT^{-1} g_N), xi_N / xi_scale)| <= tolerance: radians, and a relative xi.
 
 #include <array>

@@ -1,0 +1,76 @@
+"""Short paths: endpoints a few ulps to 1e-4 rad apart, or a small motion far from the origin.
+
+Before 2026-12-07 every case below failed one way or another: verify's residual and stationarity
+were relative to the path's own terms with no account of the samples' roundoff (a step of 1e-9 on
+the unit sphere is 1e7 ulps of a point: q' by differences is 1e-7 off, relatively), and the
+auxiliary's scale shrank like |v|^2 while v0's unit stayed 1/T, so Levenberg-Marquardt stalled on
+SO(3) (max-iterations at |log gT| = 1e-5) and on S^2 traded the boundary for Xi (a constant path,
+"converged" within tol, at endpoints 1e-10 apart).
+"""
+
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+import cartan
+
+TOL = 1e-10  # the solve's default tolerance (radians at the end point)
+
+
+def _passes(result):
+    report = cartan.verify(result)
+    failed = [(c["name"], c["figure"], c["threshold"]) for c in report.checks if c["result"] == "FAIL"]
+    return report.passed, failed
+
+
+@pytest.mark.parametrize("N", [50, 400])
+@pytest.mark.parametrize("angle", [1e-4, 1e-7, 3e-9, 1e-10, 1e-12])
+def test_a_short_geodesic_on_the_sphere(angle, N):
+    q0 = np.array([0.0, 0.0, 1.0])
+    qT = np.array([np.sin(angle), 0.0, np.cos(angle)])
+    r = cartan.solve(space=cartan.Sphere(), T=1, N=N, q0=q0, qT=qT)
+    assert r.status == "converged"
+    # The geodesic: speed angle / T towards qT. The solve meets |q_N - qT| <= TOL, so v0 is right to
+    # TOL / T absolutely whatever the angle (not the constant path of before, off by the angle).
+    speed = np.linalg.norm(r.v0)
+    assert abs(speed - angle) <= 2 * TOL
+    assert np.linalg.norm(np.asarray(r.q)[-1] - qT) <= TOL
+    assert _passes(r) == (True, [])
+
+
+@pytest.mark.parametrize("lam", [0.0, 0.5, 1.0])
+@pytest.mark.parametrize("size", [1e-2, 1e-5, 1e-8, 1e-10])
+def test_a_small_rotation_of_a_rigid_body(size, lam):
+    rotation = size * np.array([1.0, 0.3, 0.0])
+    gT = Rotation.from_rotvec(rotation).as_matrix()
+    for method in ("shooting", "auto"):
+        r = cartan.solve(cartan.RigidBody([1, 2, 3]), lam=lam, T=1, N=50, gT=gT, method=method)
+        assert r.status == "converged", (method, r.message)
+        # A motion this small is a free rotation to first order: v0 = rotvec / T up to O(size^2)
+        # (the gyroscopic term), and the end point is met to TOL.
+        assert np.linalg.norm(r.v0 - rotation) <= 2 * TOL + 10 * size**2
+        assert _passes(r) == (True, []), method
+
+
+@pytest.mark.parametrize("offset", [1e-4, 1e-7])
+def test_a_small_motion_far_from_the_origin_of_the_plane(offset):
+    # Coordinates of 1e3: each carries 1e-13 of roundoff, against steps of offset / N = 1e-9 at
+    # the smallest. (At 1e6 the end point itself is known to an ulp of 1.2e-10 only, and tol =
+    # 1e-10 cannot be met: the solve fails, saying |r| did not decrease.)
+    q0 = np.array([1e3, -1e3])
+    qT = q0 + np.array([offset, 0.5 * offset])
+    r = cartan.solve(space=cartan.Euclidean(dim=2), T=1, N=100, q0=q0, qT=qT)
+    assert r.status == "converged"
+    assert _passes(r) == (True, [])
+
+
+def test_the_roundoff_floor_does_not_pass_a_wrong_path():
+    # 1e-7 rad on the sphere: the floor is ~1e-7 of the terms; a velocity 1 % off is far above it.
+    angle = 1e-7
+    q0, qT = np.array([0.0, 0.0, 1.0]), np.array([np.sin(angle), 0.0, np.cos(angle)])
+    r = cartan.solve(space=cartan.Sphere(), T=1, N=50, q0=q0, qT=qT)
+    assert _passes(r)[0]
+    r.v = np.asarray(r.v) * 1.01
+    r.mu = np.asarray(r.mu) * 1.01
+    passed, failed = _passes(r)
+    assert not passed and "residual" in [name for name, _, _ in failed]
