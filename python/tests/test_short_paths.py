@@ -74,3 +74,27 @@ def test_the_roundoff_floor_does_not_pass_a_wrong_path():
     r.mu = np.asarray(r.mu) * 1.01
     passed, failed = _passes(r)
     assert not passed and "residual" in [name for name, _, _ in failed]
+
+
+@pytest.mark.parametrize("group, q0", [("heisenberg", np.zeros(3)), ("so3", np.eye(3))])
+@pytest.mark.parametrize("size", [1e-6, 1e-9])
+def test_a_small_motion_on_a_curved_group_manifold(group, q0, size):
+    # The first variation of a path 1e-9 long is ~1e-9: the stationarity check's three-point
+    # difference of the action had an absolute truncation error of ~4e-13 (figure 4.1e-4 against
+    # 1.1e-9 on the Heisenberg group before); the five-point one's is ~1e-24.
+    M = cartan.GroupManifold(group, "levi-civita", metric=[1, 2, 3])
+    qT = M.step(q0, M.tangent_basis(q0) @ (size * np.array([0.3, -0.2, 0.5])))
+    r = cartan.solve(M, T=1, N=50, q0=q0, qT=qT, method="shooting")
+    assert r.status == "converged", r.message
+    assert _passes(r) == (True, [])
+
+
+@pytest.mark.parametrize("lam", [2.0, -1.0])
+def test_two_level_converged_means_the_end_point_meets_tol(lam):
+    # Strong anisotropy and lambda (1 - lambda) = -2: the outer change fell below tol while the end
+    # point of the updated sequence was 1.7e-8 off, and two-level said "converged".
+    r = cartan.solve(cartan.SE2FreeBody([1, 100, 1e4]), lam=lam, T=1, N=50, gT=cartan.SE2.exp([0.3, -0.2, 0.5]),
+                     method="two-level")
+    assert r.status == "converged", r.message
+    assert r.terminal_error <= TOL
+    assert _passes(r) == (True, [])

@@ -17,6 +17,7 @@ struct ToyFixedPoint final : FixedPointSystem {
   double s = 0;
   int inner_fails_from = 1 << 30;  ///< inner evaluations after this many fail
   bool update_fails = false;
+  double gain = 1;  ///< K: inner v^2 = 1 + K s, update s <- v / (4 K): the same fixed point, a change K times smaller
   int evaluations = 0;
   std::string why;
 
@@ -26,7 +27,7 @@ struct ToyFixedPoint final : FixedPointSystem {
       why = "the toy sweep failed";
       return false;
     }
-    r = Eigen::VectorXd::Constant(1, v[0] * v[0] - 1 - s);
+    r = Eigen::VectorXd::Constant(1, v[0] * v[0] - 1 - gain * s);
     if (jac) *jac = Eigen::MatrixXd::Constant(1, 1, 2 * v[0]);
     return true;
   }
@@ -35,12 +36,12 @@ struct ToyFixedPoint final : FixedPointSystem {
       why = "the rates sweep failed";
       return std::nullopt;
     }
-    const double next = v[0] / 4, change = std::abs(next - s);
+    const double next = v[0] / (4 * gain), change = std::abs(next - s);
     s = next;
     return change;
   }
   bool record(const Eigen::VectorXd& v) override {
-    result.terminal_error = std::abs(v[0] * v[0] - 1 - s);
+    result.terminal_error = std::abs(v[0] * v[0] - 1 - gain * s);
     return true;
   }
   const std::string& failure() const override { return why; }
@@ -60,6 +61,19 @@ TEST(FixedPointDriver, ConvergesToTheFixedPointAndCountsBothLoops) {
     EXPECT_EQ(r.sweeps, toy.evaluations + r.outer_iterations + 1);
     EXPECT_EQ(r.message.rfind("two-level: converged after ", 0), 0u) << r.message;
   }
+}
+
+// A strongly coupled sequence (K = 1e6): the outer change falls below tol while the end point of
+// the updated sequence is still ~K tol off. Converged only once the end point meets tol too (SE(2),
+// inertia (1, 100, 1e4), lambda = 2 returned "converged" 1.7e-8 off before).
+TEST(FixedPointDriver, ConvergedMeansTheEndPointMeetsTheToleranceToo) {
+  ResultCore r;
+  ToyFixedPoint toy(r);
+  toy.gain = 1e6;
+  solve_fixed_point(toy, {.tolerance = 1e-12}, Eigen::VectorXd::Constant(1, 1.0), r);
+  EXPECT_EQ(r.status, Status::Converged) << r.message;
+  EXPECT_LE(r.terminal_error, 1e-12) << r.message;
+  EXPECT_NEAR(4 * toy.gain * toy.s, (1 + std::sqrt(65.0)) / 8, 1e-11);
 }
 
 TEST(FixedPointDriver, EachLoopsFailureHasItsStatus) {
