@@ -98,3 +98,42 @@ def test_two_level_converged_means_the_end_point_meets_tol(lam):
     assert r.status == "converged", r.message
     assert r.terminal_error <= TOL
     assert _passes(r) == (True, [])
+
+
+@pytest.mark.parametrize("lam", [0.5, 2.0])
+@pytest.mark.parametrize("size", [1e-6, 1e-9])
+def test_collocation_solves_a_small_motion_rather_than_returning_its_guess(size, lam):
+    # The geodesic guess (xi = 0) met the collocation target's absolute floor tol h (1 + |f|), so
+    # Newton took no step and xi ~ size^2 stayed 0 (verify: residual on xi' 0.25). Newton now takes
+    # at least one step from the guess, as SciPy's solve_newton does.
+    d = np.array([0.3, -0.2, 0.5]) / np.linalg.norm([0.3, -0.2, 0.5])
+    r = cartan.solve(cartan.RigidBody([1, 2, 3]), lam=lam, T=1, N=50, gT=cartan.SO3.exp(size * d), method="collocation")
+    assert r.status == "converged", r.message
+    assert np.abs(np.asarray(r.xi)).max() > 0
+    assert _passes(r) == (True, [])
+
+
+@pytest.mark.parametrize("size", [1e-6, 1e-9])
+def test_the_oscillators_energy_of_a_small_motion(size):
+    # V = 1/2 (3 - tr g) cancelled to roundoff at these sizes (E ~ size^2): the energy drifted by
+    # 0.34 of E at 1e-9 with every method. Evaluated as 1/4 |g - I|^2 its roundoff is relative.
+    # (Collocation is left out: its Newton stops at the absolute floor of its target after one step
+    # from the geodesic guess, which leaves xi ~1 % off under a potential; the closing note of
+    # 2026-12-07 says what would fix it.)
+    d = np.array([0.3, -0.2, 0.5]) / np.linalg.norm([0.3, -0.2, 0.5])
+    for method in ("shooting", "auto", "two-level"):
+        r = cartan.solve(cartan.SO3Oscillator([1, 2, 3]), lam=0.5, T=1, N=50, gT=cartan.SO3.exp(size * d), method=method)
+        assert r.status == "converged", (method, r.message)
+        assert _passes(r) == (True, []), method
+
+
+@pytest.mark.parametrize("method", ["auto", "shooting", "collocation", "variational"])
+def test_a_body_at_rest_away_from_the_identity(method):
+    # g0 = gT != e: the solution is rest, its steps log(g_k^-1 g_k+1) are roundoff. Variational
+    # reported "stalled" at it (delta and correction both ~1e-32 failed the monotonicity test), and
+    # verify's residual on roundoff v and mu read 0.996 against a floor of 0.49.
+    g0 = cartan.SO3.exp([0.3, -0.2, 0.5])
+    r = cartan.solve(cartan.RigidBody([1, 2, 3]), lam=0.5, T=1, N=50, g0=g0, gT=g0.copy(), method=method)
+    assert r.status == "converged", r.message
+    assert np.abs(np.asarray(r.v)).max() <= 1e-12
+    assert _passes(r) == (True, [])

@@ -445,8 +445,13 @@ std::string describe(const ResidualSize& size, const CollocationOptions& options
 /// is the next step (a chord step, as in Deuflhard's NLEQ codes and COLNEW). A chord step is
 /// only taken in full; when it is not accepted, the iteration starts again from a fresh
 /// Jacobian at the same iterate.
+/// `from_guess`: `it` is the caller's guess (not a previous solution, nor a given mesh), and Newton
+/// takes at least one step from it, as SciPy's solve_newton does on every mesh: a guess that meets the target's absolute floor (the 1 of
+/// 1 + |f|) is no solution on the problem's own scale (SO(3), a rotation of 1e-6: xi ~ 1e-13 was
+/// left at its guess 0, and verify's residual on xi' was 0.25).
 template <int N>
-NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOptions& options, Counters& counters) {
+NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOptions& options, Counters& counters,
+                     bool from_guess) {
   const int n = model.n();
   LinearSolver solver(options.linear_solver, workspace.block);
   CollocationJacobian& jac = workspace.jac;
@@ -468,7 +473,7 @@ NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOption
   const NewtonOutcome stopped{Status::Interrupted, "stop requested"};
   for (int iteration = 0;; ++iteration) {
     const ResidualSize size = residual_size(it, n, options.tol);
-    if (newton_converged(size, options)) return {};
+    if ((iteration > 0 || !from_guess) && newton_converged(size, options)) return {};
     if (iteration == options.max_newton_iterations) {
       return {Status::NotConverged, "Newton did not converge in " + std::to_string(iteration) +
                                            " iterations on " + std::to_string(it.nodes()) + " nodes: " +
@@ -659,7 +664,7 @@ void validate_input(const BvpSystem& system, const VectorXd& t, const MatrixXd& 
 
 template <int N>
 BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p, const CollocationOptions& options,
-              bool adapt) {
+              bool adapt, bool from_guess) {
   Model model(system, options.fd_step, options.monitor);
   Counters counters;
   BvpResult result;
@@ -678,7 +683,7 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
       }
       return result;
     }
-    const NewtonOutcome outcome = newton<N>(model, workspace, options, counters);
+    const NewtonOutcome outcome = newton<N>(model, workspace, options, counters, from_guess && round == 0);
     if (outcome.status == Status::SingularJacobian || outcome.status == Status::Interrupted ||
         (outcome.status != Status::Converged && !adapt)) {
       fill<N>(result, model, workspace, counters, outcome.status, outcome.message);
@@ -734,14 +739,14 @@ BvpResult run(const BvpSystem& system, VectorXd t, MatrixXd y, const VectorXd& p
 /// scalar problems, the commonest in SciPy-style use), so that the per-interval blocks have fixed
 /// sizes; any other n at run time.
 BvpResult dispatch(const BvpSystem& system, const VectorXd& t, const MatrixXd& y, const VectorXd& p,
-                   const CollocationOptions& options, bool adapt) {
+                   const CollocationOptions& options, bool adapt, bool from_guess) {
   validate_input(system, t, y, p, options);
   switch (system.n) {
-    case 2: return run<2>(system, t, y, p, options, adapt);
-    case 6: return run<6>(system, t, y, p, options, adapt);
-    case 12: return run<12>(system, t, y, p, options, adapt);
-    case 24: return run<24>(system, t, y, p, options, adapt);
-    default: return run<Eigen::Dynamic>(system, t, y, p, options, adapt);
+    case 2: return run<2>(system, t, y, p, options, adapt, from_guess);
+    case 6: return run<6>(system, t, y, p, options, adapt, from_guess);
+    case 12: return run<12>(system, t, y, p, options, adapt, from_guess);
+    case 24: return run<24>(system, t, y, p, options, adapt, from_guess);
+    default: return run<Eigen::Dynamic>(system, t, y, p, options, adapt, from_guess);
   }
 }
 
@@ -766,16 +771,16 @@ void CollocationOptions::validate() const {
 
 BvpResult solve_collocation(const BvpSystem& system, const Eigen::VectorXd& t, const Eigen::MatrixXd& y,
                             const Eigen::VectorXd& p, const CollocationOptions& options) {
-  return dispatch(system, t, y, p, options, true);
+  return dispatch(system, t, y, p, options, true, true);
 }
 
 BvpResult solve_collocation(const BvpSystem& system, const BvpResult& previous, const CollocationOptions& options) {
-  return dispatch(system, previous.t, previous.y, previous.p, options, true);
+  return dispatch(system, previous.t, previous.y, previous.p, options, true, false);  // a solution, not a guess
 }
 
 BvpResult solve_collocation_on_mesh(const BvpSystem& system, const Eigen::VectorXd& t, const Eigen::MatrixXd& y,
                                     const Eigen::VectorXd& p, const CollocationOptions& options) {
-  return dispatch(system, t, y, p, options, false);
+  return dispatch(system, t, y, p, options, false, false);
 }
 
 }  // namespace cartan::numerics

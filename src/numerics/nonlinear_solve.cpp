@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <sstream>
+#include <string>
 
 #include "cartan/errors.hpp"
 #include "cartan/numerics/dense_lu.hpp"
@@ -117,7 +119,7 @@ void finish(NonlinearSolveReport& report, Status status, const std::string& why)
   report.status = status;
   std::ostringstream out;
   out << to_string(status) << " after " << report.iterations << " iterations and " << report.evaluations
-      << " evaluations, |r| = " << format_value(report.residual_norm);
+      << " evaluations, |r| = " << (std::isnan(report.residual_norm) ? std::string("undefined") : format_value(report.residual_norm));
   if (!why.empty()) out << " (" << why << ")";
   report.message = out.str();
 }
@@ -158,7 +160,7 @@ NonlinearSolveReport levenberg_marquardt(const ResidualFunction& f, const Eigen:
   const auto stop = [&] { return options.monitor != nullptr && options.monitor->stop_requested(); };
   if (!evaluate(f, report.x, r, &jac, report)) {
     report.residual = r;
-    report.residual_norm = r.size() ? r.norm() : std::nan("");
+    report.residual_norm = std::nan("");  // the failed evaluation left r undefined (it read |r| = 0)
     if (stop()) {
       finish(report, Status::Interrupted, "stop requested");
     } else {

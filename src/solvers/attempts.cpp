@@ -50,7 +50,9 @@ PathResultPtr Attempts::finish(bool solved, bool stopped) {
     core.status = stopped ? Status::Interrupted : Status::StrategyFailed;
     core.branch = "failed: " + log_;
   }
-  core.message = "default strategy: " + log_ + "; the returned result: " + core.message;
+  core.message = "default strategy: " + log_ +
+                 (core.message.empty() ? "; no attempt produced a trajectory to return"
+                                       : "; the returned result: " + core.message);
   return std::move(best_);  // not a copy of its trajectory (0.3 GB at N = 2e6)
 }
 

@@ -89,7 +89,10 @@ PathNewtonOutcome newton_on_path(PathSystem& system, const PathNewtonOptions& op
       }
       if (!system.trial(delta, s, trial_gradient)) continue;
       correction = -lu.solve(trial_gradient);
-      if (correction.norm() <= (1 - s / 4) * delta.norm()) {
+      // Monotone, or already within tol (as collocation's acceptance): at the exact solution
+      // (g0 = gT away from e, gradient 3.8e-30) delta and the correction are both roundoff, and the
+      // monotonicity test alone reported "stalled".
+      if (correction.norm() <= (1 - s / 4) * delta.norm() || correction.cwiseAbs().maxCoeff() <= options.tolerance) {
         system.accept();
         std::swap(gradient, trial_gradient);
         accepted = true;

@@ -48,11 +48,11 @@ Report assemble(const Figures& f, int order, double tol, Status status) {
     return discretisation_check(std::move(name), figure, limit + floor, applicable, std::move(note));
   };
   report.checks.push_back(check_above_roundoff("residual", f.residual.relative, threshold(kResidualConstant, 0),
-                                               f.residual.floor, true,
+                                               std::max(f.residual.floor, f.step_roundoff), true,
                                                f.residual_equations + " by finite differences, worst: " +
                                                    f.residual.equation + " at t = " + Report::format(f.residual.t)));
   report.checks.push_back(check_above_roundoff("stationarity", f.stationarity.value_or(0), threshold(kActionConstant, 0),
-                                               f.stationarity_floor, f.stationarity.has_value(),
+                                               f.step_roundoff, f.stationarity.has_value(),
                                                f.stationarity ? "max |dS| / (size of its terms) over " +
                                                                     std::to_string(kVariations) +
                                                                     " random endpoint-fixed variations"

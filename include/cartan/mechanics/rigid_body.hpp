@@ -14,12 +14,15 @@
 
 namespace cartan::mechanics {
 
-/// V(g) = 1/2 (3 - tr g) ~ theta^2 / 2 for a rotation by a small angle theta.
+/// V(g) = 1/2 (3 - tr g) ~ theta^2 / 2 for a rotation by a small angle theta, evaluated as
+/// 1/4 |g - I|_F^2 (equal on SO(3): |g - I|^2 = 6 - 2 tr g), whose roundoff is relative to V
+/// (eps theta^2) where 3 - tr g's is eps: at theta = 1e-9 that was the whole of V, and the energy
+/// E = mu.v - l ~ 1e-18 drifted by 0.34 of itself, failing verify with every method.
 /// Left gradient: d/de V(g exp(e w)) = -1/2 tr(g hat(w)) = vee(Skew g) . w, since
 /// tr(g hat(w)) = -2 vee(Skew g) . w. So the oscillator's zeta = -dV = -vee(Skew g), a restoring
 /// force (docs/paper-notes.md#erratum-1: the paper prints +vee(Skew g), the gradient of V).
 struct SO3TracePotential {
-  double value(const groups::SO3::Element& g) const { return (3 - g.trace()) / 2; }
+  double value(const groups::SO3::Element& g) const { return (g - groups::SO3::Element::Identity()).squaredNorm() / 4; }
   groups::SO3::Tangent left_gradient(const groups::SO3::Element& g) const { return groups::SO3::vee(g); }  // vee reads Skew(g)
   /// d/de vee(Skew(g exp(e E_i))) = vee(Skew(g hat(E_i))).
   groups::SO3::AlgebraMatrix left_hessian(const groups::SO3::Element& g) const {

@@ -29,7 +29,9 @@ struct Figures {
   Residual residual;
   std::string residual_equations;  ///< what the residual is of: "eq:reduced-system", "the local form"
   std::optional<double> stationarity;  ///< empty: not applicable, for the reason in stationarity_note
-  double stationarity_floor = 0;       ///< its roundoff, relative (step_roundoff), added to the threshold
+  /// The samples' roundoff against their steps, relative (figures.hpp step_roundoff): stationarity's
+  /// floor, and the residual's at least (v and mu of a path at rest are roundoff too).
+  double step_roundoff = 0;
   std::string stationarity_note;
 };
 

@@ -55,9 +55,9 @@ Report verify_trajectory(const transported::TransportedProblem<G, L>& problem, t
   f.energy_note = "max |E - E(0)| / max |E|, E = mu.v - l (conserved for every lambda when l does not depend on t)";
   f.residual = checks.equation_residual();
   f.residual_equations = "eq:reduced-system";
+  f.step_roundoff = checks.samples_roundoff();
   if (is_uniform(checks.trajectory().t)) {
     f.stationarity = checks.action_stationarity(kVariations, kVariationSeed);
-    f.stationarity_floor = checks.stationarity_roundoff();
   } else {
     f.stationarity_note = kNonUniformStationarityNote;
   }

@@ -165,9 +165,9 @@ class TrajectoryChecks {
     return worst_equation(worst, scale, noise, where, kNames, 3);
   }
 
-  /// The stationarity figure's roundoff (step_roundoff): the samples' size is that of the products
-  /// g_k^-1 g_{k+1} the steps are logarithms of.
-  double stationarity_roundoff() const {
+  /// The samples' roundoff against their steps (step_roundoff; Figures::step_roundoff): the
+  /// samples' size is that of the products g_k^-1 g_{k+1} the steps are logarithms of.
+  double samples_roundoff() const {
     double largest = 0, longest = 0;
     for (std::size_t k = 0; k + 1 < size(); ++k) {
       largest = std::max(largest, G::inverse(x_.g[k]).norm() * x_.g[k + 1].norm());

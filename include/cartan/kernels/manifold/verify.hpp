@@ -154,8 +154,8 @@ class GeneralChecks {
     return verify::worst_equation(worst, scale, noise, where, kNames, 3);
   }
 
-  /// The stationarity figure's roundoff (verify::step_roundoff).
-  double stationarity_roundoff() const {
+  /// The samples' roundoff against their steps (verify::step_roundoff; Figures::step_roundoff).
+  double samples_roundoff() const {
     double largest = 0, longest = 0;
     for (std::size_t k = 0; k < size(); ++k) {
       largest = std::max(largest, x_.q[k].norm());
@@ -255,9 +255,9 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
   f.energy_note = "max |E - E(0)| / max |E|, E = mu.v - l (conserved for every connection when l does not depend on t)";
   f.residual = checks.equation_residual();
   f.residual_equations = "the local form";
+  f.step_roundoff = checks.samples_roundoff();
   if (verify::is_uniform(x.t)) {
     f.stationarity = checks.action_stationarity(verify::kVariations, verify::kVariationSeed);
-    f.stationarity_floor = checks.stationarity_roundoff();
   } else {
     f.stationarity_note = verify::kNonUniformStationarityNote;
   }

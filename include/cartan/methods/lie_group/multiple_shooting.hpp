@@ -318,7 +318,7 @@ TransportedSolution<G> solve_multiple_shooting(const TransportedProblem<G, L>& p
   solution.method = Method::MultipleShooting;
   solution.order = static_cast<int>(options.order);
   solution.branch = "from the initial guess, segment states from a sweep from the guess";
-  const std::string header = "multiple shooting (" + std::to_string(segments) + " segments of ~" +
+  const std::string header = "multiple shooting (" + std::to_string(segments) + (segments == 1 ? " segment of ~" : " segments of ~") +
                              std::to_string(problem.N / segments) + " steps): ";
   detail::LiftedScheme<G, L> lifted(scheme, system, v0_guess, xi0_guess, solution);
   solvers::solve_lifted(lifted,
