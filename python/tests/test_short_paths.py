@@ -137,3 +137,19 @@ def test_a_body_at_rest_away_from_the_identity(method):
     assert r.status == "converged", r.message
     assert np.abs(np.asarray(r.v)).max() <= 1e-12
     assert _passes(r) == (True, [])
+
+
+@pytest.mark.parametrize("lam", [0.0, 0.5])
+@pytest.mark.parametrize("size", [1e-6, 1e-9])
+def test_shootings_xi_of_a_short_path_is_right_to_its_own_size(size, lam):
+    # xi's unit is floored at a speed of 1/T (so that Levenberg-Marquardt is well conditioned), so
+    # LM met xi_N = 0 only to tol in that unit: for a rotation of 1e-6, xi ran from 0 to -2.6e-13
+    # instead of from 2.6e-13 to 0. Newton steps then bring |xi_N| to tol times xi's own size.
+    d = np.array([0.3, -0.2, 0.5]) / np.linalg.norm([0.3, -0.2, 0.5])
+    r = cartan.solve(cartan.RigidBody([1, 2, 3]), lam=lam, T=1, N=50, gT=cartan.SO3.exp(size * d), method="shooting")
+    assert r.status == "converged", r.message
+    xi = np.asarray(r.xi)
+    own_size = np.linalg.norm(r.v0) * np.linalg.norm(np.asarray(r.mu)[0])  # T |v| |mu|, T = 1
+    assert np.linalg.norm(xi[-1]) <= 10 * TOL * own_size
+    assert np.linalg.norm(xi[0]) > 0.1 * own_size  # xi(0) = int ad*_v mu dt, of the size of |v| |mu| T
+    assert _passes(r) == (True, [])

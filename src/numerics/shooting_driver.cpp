@@ -1,8 +1,10 @@
 // The shooting driver (cartan/numerics/shooting_driver.hpp), compiled once for every kernel.
 #include "cartan/numerics/shooting_driver.hpp"
 
+#include <Eigen/QR>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -52,6 +54,30 @@ class RecordedSlots {
   int writing_ = 0;
 };
 
+/// Newton steps from a converged x (ShootingDriverOptions::aux_size) while |a_N / s| > aux_target:
+/// a step is kept when the end point's residual stays within `tolerance` and |a_N| decreases.
+void polish(const ResidualFunction& f, Eigen::Index nv, double aux_target, double tolerance, const SolveMonitor* monitor,
+            NonlinearSolveReport& report) {
+  constexpr int kSteps = 3;  // the auxiliary enters linearly: one step is the rule, three the bound
+  const Eigen::Index na = report.residual.size() - nv;
+  if (na < 1 || report.residual.tail(na).norm() <= aux_target) return;  // LM's own result is right already
+  Eigen::VectorXd x = report.x, r, trial_r;
+  Eigen::MatrixXd jacobian;
+  for (int step = 0; step < kSteps; ++step) {
+    if (monitor != nullptr && monitor->stop_requested()) return;
+    ++report.evaluations;
+    if (!f(x, r, &jacobian) || r.tail(r.size() - nv).norm() <= aux_target) break;
+    const Eigen::VectorXd trial = x - jacobian.colPivHouseholderQr().solve(r);
+    ++report.evaluations;
+    if (!trial.allFinite() || !f(trial, trial_r, nullptr)) break;
+    if (!(trial_r.head(nv).norm() <= tolerance && trial_r.tail(r.size() - nv).norm() < r.tail(r.size() - nv).norm())) break;
+    x = trial;
+    report.x = x;
+    report.residual = trial_r;
+    report.residual_norm = trial_r.norm();
+  }
+}
+
 }  // namespace
 
 std::string ShootingOutcome::summary() const {
@@ -72,6 +98,9 @@ ShootingOutcome shoot(ShootingKernel& kernel, const ShootingDriverOptions& optio
   require_finite(options.aux_scale, "shoot", "aux_scale");
   if (!(options.horizon > 0)) throw_invalid("shoot", "horizon", format_value(options.horizon), "must be positive");
   if (!(options.aux_scale > 0)) throw_invalid("shoot", "aux_scale", format_value(options.aux_scale), "must be positive");
+  if (!(options.aux_size >= 0) || !std::isfinite(options.aux_size)) {
+    throw_invalid("shoot", "aux_size", format_value(options.aux_size), "must be finite and non-negative (0: none)");
+  }
   require_finite(y0, "shoot", "y0");
   const double T = options.horizon, s = options.aux_scale;
   const SolveMonitor* monitor = options.solver.monitor;
@@ -119,6 +148,9 @@ ShootingOutcome shoot(ShootingKernel& kernel, const ShootingDriverOptions& optio
   Eigen::VectorXd x0(size);
   x0 << y0.head(nv) * T, y0.tail(na) / s;
   outcome.report = levenberg_marquardt(f, x0, options.solver);
+  if (outcome.report.status == Status::Converged && options.aux_size > 0 && options.aux_size < s) {
+    polish(f, nv, options.solver.tolerance * options.aux_size / s, options.solver.tolerance, monitor, outcome.report);
+  }
   outcome.y = unknowns(outcome.report.x);
   const int slot = options.analytic_jacobian ? slots.find(outcome.report.x) : -1;
   outcome.stopped_before_a_sweep =

@@ -23,11 +23,11 @@ numerics::NonlinearSolveOptions solver_options(const ShootingOptions& options) {
 }  // namespace
 
 numerics::ShootingOutcome shoot(numerics::ShootingKernel& kernel, int velocity_size, double T, double aux_scale,
-                                const ShootingOptions& options, const Eigen::VectorXd& y0, const ShotLabel& label,
+                                double aux_size, const ShootingOptions& options, const Eigen::VectorXd& y0, const ShotLabel& label,
                                 ResultCore& result) {
   numerics::ShootingOutcome outcome =
       numerics::shoot(kernel,
-                      {.velocity_size = velocity_size, .horizon = T, .aux_scale = aux_scale,
+                      {.velocity_size = velocity_size, .horizon = T, .aux_scale = aux_scale, .aux_size = aux_size,
                        .analytic_jacobian = options.analytic_jacobian, .solver = solver_options(options)},
                       y0);
   result.inner_iterations = outcome.report.iterations;

@@ -121,6 +121,9 @@ TEST(ShootingDriver, RejectsBadOptions) {
   o = driver_options(true);
   o.aux_scale = 0;
   cartan::testing::expect_invalid([&] { shoot(kernel, o, Eigen::Vector4d::Zero()); }, "aux_scale = 0");
+  o.aux_scale = 1;
+  o.aux_size = -1;
+  cartan::testing::expect_invalid([&] { shoot(kernel, o, Eigen::Vector4d::Zero()); }, "aux_size = -1");
   cartan::testing::expect_invalid([&] { shoot(kernel, driver_options(true), Eigen::Vector4d(1, NAN, 0, 0)); }, "y0");
 }
 

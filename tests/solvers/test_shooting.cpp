@@ -35,7 +35,7 @@ TEST(Shoot, TheResultTakesTheDriversCountersStatusAndWords) {
     options.tolerance = 1e-12;
     ResultCore result;
     const numerics::ShootingOutcome outcome =
-        shoot(kernel, 2, 3.0, 0.5, options, Eigen::Vector4d::Ones(), {"toy shooting", "exact", "a", ", toy"}, result);
+        shoot(kernel, 2, 3.0, 0.5, 0.0, options, Eigen::Vector4d::Ones(), {"toy shooting", "exact", "a", ", toy"}, result);
     ASSERT_EQ(outcome.status, Status::Converged) << outcome.summary();
     EXPECT_EQ(result.status, Status::Converged);
     // The root in the problem's units: cbrt(c) to the tolerance (the dimensionless residual is
@@ -56,7 +56,7 @@ TEST(Shoot, AFailureIsTheDriversStatusWithItsWords) {
   options.max_iterations = 1;
   ResultCore result;
   const numerics::ShootingOutcome outcome =
-      shoot(kernel, 2, 1.0, 1.0, options, Eigen::Vector4d::Ones(), {"shooting", "analytic", "xi", ""}, result);
+      shoot(kernel, 2, 1.0, 1.0, 0.0, options, Eigen::Vector4d::Ones(), {"shooting", "analytic", "xi", ""}, result);
   EXPECT_EQ(result.status, Status::MaxIterations);
   EXPECT_EQ(result.status, outcome.status);
   EXPECT_FALSE(result.converged());

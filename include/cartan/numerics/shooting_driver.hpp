@@ -50,6 +50,11 @@ struct ShootingDriverOptions {
   int velocity_size = 0;    ///< n_v: y = (v0, a0) with v0 the first n_v unknowns
   double horizon = 1;       ///< T, the scale of v0
   double aux_scale = 1;     ///< s, the scale of a0 and a_N
+  /// u, the auxiliary's own size where it is below s (0: none). aux_scale floors the speed at 1/T
+  /// (principle/scales.hpp), so Levenberg–Marquardt meets |a_N| <= tol s only; for a shorter path
+  /// Newton steps from its result then bring |a_N| to tol u (the auxiliary right to its own size),
+  /// each kept only if the end point stays within tol.
+  double aux_size = 0;
   bool analytic_jacobian = true;
   NonlinearSolveOptions solver;  ///< Levenberg–Marquardt's, on the dimensionless problem
 };

@@ -15,6 +15,14 @@ inline double aux_scale(double T, double v_ref_norm, double mu_ref_norm) {
   return std::isfinite(scale) && scale > std::numeric_limits<double>::min() ? scale : 1.0;
 }
 
+/// The auxiliary's own size T |v| |mu| at the geodesic velocity itself (no floor on the speed), or 0
+/// where that is not a positive normal number: shooting's polish target (numerics/shooting_driver.hpp
+/// ShootingDriverOptions::aux_size).
+inline double aux_size(double T, double v_norm, double mu_norm) {
+  const double size = T * v_norm * mu_norm;
+  return std::isfinite(size) && size > std::numeric_limits<double>::min() ? size : 0.0;
+}
+
 /// The velocity at which aux_scale is taken: the geodesic velocity v, but at a speed of at least
 /// 1/T (one radian over the horizon, the unit of v0 in the shooting driver), along v, or along the
 /// first axis where v vanishes or is not finite. Below 1/T the auxiliary's unit would shrink like

@@ -50,4 +50,11 @@ double xi_scale(const TransportedProblem<G, L>& problem) {
   return aux_scale(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.g0, v).norm());
 }
 
+/// xi's own size on this problem (aux_size): T |v| |mu| at the geodesic velocity, or 0.
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+double xi_size(const TransportedProblem<G, L>& problem) {
+  const groups::TangentOf<G> v = geodesic_guess(problem);
+  return aux_size(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.g0, v).norm());
+}
+
 }  // namespace cartan::transported

@@ -78,4 +78,11 @@ double xi_scale(const GeneralProblem<M, L>& problem) {
   return aux_scale(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.q0, v).norm());
 }
 
+/// Xi's own size on this problem (aux_size): T |v| |mu| at the geodesic guess, or 0.
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+double xi_size(const GeneralProblem<M, L>& problem) {
+  const manifolds::ComponentsOf<M> v = geodesic_guess(problem);
+  return aux_size(problem.T, v.norm(), problem.lagrangian.momentum(0, problem.q0, v).norm());
+}
+
 }  // namespace cartan::general

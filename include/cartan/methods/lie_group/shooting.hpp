@@ -121,7 +121,7 @@ TransportedSolution<G> solve_shooting(const TransportedProblem<G, L>& problem, c
   detail::TransportedShootingKernel<G, L> kernel(scheme, options.monitor, solution);
   Eigen::VectorXd y0(2 * n);
   y0 << v0_guess, xi0_guess;
-  solvers::shoot(kernel, n, problem.T, s, options, y0, {"shooting", "analytic", "xi", ""}, solution);
+  solvers::shoot(kernel, n, problem.T, s, xi_size(problem), options, y0, {"shooting", "analytic", "xi", ""}, solution);
   solution.solve_time_s = detail::seconds_since(start);
   return solution;
 }

@@ -155,7 +155,7 @@ GeneralSolution<M> solve_general_shooting(const GeneralProblem<M, L>& problem, c
   Eigen::VectorXd y0(m + m * m);
   y0 << v0_guess, Xi0_guess.reshaped();
   const numerics::ShootingOutcome outcome =
-      solvers::shoot(kernel, m, problem.T, s, options, y0,
+      solvers::shoot(kernel, m, problem.T, s, xi_size(problem), options, y0,
                      {"general shooting", "tangent-linear", "Xi",
                       scheme.uses_constant_components() ? ", constant frame components" : ""},
                      solution);
