@@ -17,6 +17,12 @@ import cartan
 TOL = 1e-10  # the solve's default tolerance (radians at the end point)
 
 
+def _small_rotation(model, lam, size, method):
+    """The model's solve at T = 1, N = 50 from e to a rotation by `size` about a fixed axis."""
+    axis = np.array([0.3, -0.2, 0.5]) / np.linalg.norm([0.3, -0.2, 0.5])
+    return cartan.solve(model, lam=lam, T=1, N=50, gT=cartan.SO3.exp(size * axis), method=method)
+
+
 def _passes(result):
     report = cartan.verify(result)
     failed = [(c["name"], c["figure"], c["threshold"]) for c in report.checks if c["result"] == "FAIL"]
@@ -106,8 +112,7 @@ def test_collocation_solves_a_small_motion_rather_than_returning_its_guess(size,
     # The geodesic guess (xi = 0) met the collocation target's absolute floor tol h (1 + |f|), so
     # Newton took no step and xi ~ size^2 stayed 0 (verify: residual on xi' 0.25). Newton now takes
     # at least one step from the guess, as SciPy's solve_newton does.
-    d = np.array([0.3, -0.2, 0.5]) / np.linalg.norm([0.3, -0.2, 0.5])
-    r = cartan.solve(cartan.RigidBody([1, 2, 3]), lam=lam, T=1, N=50, gT=cartan.SO3.exp(size * d), method="collocation")
+    r = _small_rotation(cartan.RigidBody([1, 2, 3]), lam, size, "collocation")
     assert r.status == "converged", r.message
     assert np.abs(np.asarray(r.xi)).max() > 0
     assert _passes(r) == (True, [])
@@ -120,9 +125,8 @@ def test_the_oscillators_energy_of_a_small_motion(size):
     # (Collocation is left out: its Newton stops at the absolute floor of its target after one step
     # from the geodesic guess, which leaves xi ~1 % off under a potential; the closing note of
     # 2026-12-07 says what would fix it.)
-    d = np.array([0.3, -0.2, 0.5]) / np.linalg.norm([0.3, -0.2, 0.5])
     for method in ("shooting", "auto", "two-level"):
-        r = cartan.solve(cartan.SO3Oscillator([1, 2, 3]), lam=0.5, T=1, N=50, gT=cartan.SO3.exp(size * d), method=method)
+        r = _small_rotation(cartan.SO3Oscillator([1, 2, 3]), 0.5, size, method)
         assert r.status == "converged", (method, r.message)
         assert _passes(r) == (True, []), method
 
@@ -145,8 +149,7 @@ def test_shootings_xi_of_a_short_path_is_right_to_its_own_size(size, lam):
     # xi's unit is floored at a speed of 1/T (so that Levenberg-Marquardt is well conditioned), so
     # LM met xi_N = 0 only to tol in that unit: for a rotation of 1e-6, xi ran from 0 to -2.6e-13
     # instead of from 2.6e-13 to 0. Newton steps then bring |xi_N| to tol times xi's own size.
-    d = np.array([0.3, -0.2, 0.5]) / np.linalg.norm([0.3, -0.2, 0.5])
-    r = cartan.solve(cartan.RigidBody([1, 2, 3]), lam=lam, T=1, N=50, gT=cartan.SO3.exp(size * d), method="shooting")
+    r = _small_rotation(cartan.RigidBody([1, 2, 3]), lam, size, "shooting")
     assert r.status == "converged", r.message
     xi = np.asarray(r.xi)
     own_size = np.linalg.norm(r.v0) * np.linalg.norm(np.asarray(r.mu)[0])  # T |v| |mu|, T = 1
