@@ -446,9 +446,9 @@ std::string describe(const ResidualSize& size, const CollocationOptions& options
 /// only taken in full; when it is not accepted, the iteration starts again from a fresh
 /// Jacobian at the same iterate.
 /// `from_guess`: `it` is the caller's guess (not a previous solution, nor a given mesh), and Newton
-/// takes at least one step from it, as SciPy's solve_newton does on every mesh: a guess that meets the target's absolute floor (the 1 of
-/// 1 + |f|) is no solution on the problem's own scale (SO(3), a rotation of 1e-6: xi ~ 1e-13 was
-/// left at its guess 0, and verify's residual on xi' was 0.25).
+/// takes at least one step from it, as SciPy's solve_newton does on every mesh: a guess that meets
+/// the target's absolute floor (the 1 of 1 + |f|) is no solution on the problem's own scale (SO(3),
+/// a rotation of 1e-6: xi ~ 1e-13 was left at its guess 0, and verify's residual on xi' was 0.25).
 template <int N>
 NewtonOutcome newton(Model& model, Workspace& workspace, const CollocationOptions& options, Counters& counters,
                      bool from_guess) {

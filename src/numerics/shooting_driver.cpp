@@ -66,11 +66,11 @@ void polish(const ResidualFunction& f, Eigen::Index nv, double aux_target, doubl
   for (int step = 0; step < kSteps; ++step) {
     if (monitor != nullptr && monitor->stop_requested()) return;
     ++report.evaluations;
-    if (!f(x, r, &jacobian) || r.tail(r.size() - nv).norm() <= aux_target) break;
+    if (!f(x, r, &jacobian) || r.tail(na).norm() <= aux_target) break;
     const Eigen::VectorXd trial = x - jacobian.colPivHouseholderQr().solve(r);
     ++report.evaluations;
     if (!trial.allFinite() || !f(trial, trial_r, nullptr)) break;
-    if (!(trial_r.head(nv).norm() <= tolerance && trial_r.tail(r.size() - nv).norm() < r.tail(r.size() - nv).norm())) break;
+    if (!(trial_r.head(nv).norm() <= tolerance && trial_r.tail(na).norm() < r.tail(na).norm())) break;
     x = trial;
     report.x = x;
     report.residual = trial_r;

@@ -23,8 +23,8 @@ numerics::NonlinearSolveOptions solver_options(const ShootingOptions& options) {
 }  // namespace
 
 numerics::ShootingOutcome shoot(numerics::ShootingKernel& kernel, int velocity_size, double T, double aux_scale,
-                                double aux_size, const ShootingOptions& options, const Eigen::VectorXd& y0, const ShotLabel& label,
-                                ResultCore& result) {
+                                double aux_size, const ShootingOptions& options, const Eigen::VectorXd& y0,
+                                const ShotLabel& label, ResultCore& result) {
   numerics::ShootingOutcome outcome =
       numerics::shoot(kernel,
                       {.velocity_size = velocity_size, .horizon = T, .aux_scale = aux_scale, .aux_size = aux_size,

@@ -29,7 +29,7 @@ struct ShotLabel {
 /// Levenberg–Marquardt solve; writes into `result` the counters (inner iterations, residual
 /// history, sweeps), the status and the message. Returns the driver's outcome.
 numerics::ShootingOutcome shoot(numerics::ShootingKernel& kernel, int velocity_size, double T, double aux_scale,
-                                double aux_size, const ShootingOptions& options, const Eigen::VectorXd& y0, const ShotLabel& label,
-                                ResultCore& result);
+                                double aux_size, const ShootingOptions& options, const Eigen::VectorXd& y0,
+                                const ShotLabel& label, ResultCore& result);
 
 }  // namespace cartan::solvers
