@@ -1,4 +1,4 @@
-// Your own Lagrangian on a manifold with a connection (cartan/kernels/manifold/lagrangian.hpp, concept
+// Your own Lagrangian on a manifold with a connection (cartan/mechanics/manifold_lagrangian.hpp, concept
 // ManifoldLagrangian), solved by the library's compiled general solve: behind
 // general::ErasedLagrangian it needs no solver instantiation of its own, so this file compiles in
 // seconds (bench/README.md, "Build time"). A bead on the unit sphere whose inertia grows with

@@ -555,7 +555,7 @@ def check_lagrangian(model, group=None, *, samples=8, seed=20261122, scale=1.0, 
       and group_gradient (the solvers otherwise difference them; :func:`lagrangian_hessian`);
 
     on a manifold (`group` any of :data:`MANIFOLDS`; general::check_lagrangian,
-    include/cartan/kernels/manifold/check_lagrangian.hpp) the same with point_gradient in place of
+    include/cartan/mechanics/manifold_check_lagrangian.hpp) the same with point_gradient in place of
     group_gradient: its components along tangent_basis(q) against central differences of value along
     step(q, e E_i). The manifold's Lagrangian is `model` (an object with value, momentum, velocity,
     point_gradient as :func:`solve` takes it on a manifold) or, with `model` None, the one `inertia`,

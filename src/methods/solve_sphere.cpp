@@ -1,9 +1,9 @@
 // The general solve and verify on the sphere for the erased Lagrangian, compiled once
 // (compiled.hpp).
 #include "cartan/kernels/manifold/along.hpp"
-#include "cartan/kernels/manifold/check_lagrangian.hpp"
-#include "cartan/kernels/manifold/particle.hpp"
 #include "cartan/kernels/manifold/verify.hpp"
+#include "cartan/mechanics/manifold_check_lagrangian.hpp"
+#include "cartan/mechanics/manifold_particle.hpp"
 #include "cartan/methods/manifold/shooting.hpp"
 #include "cartan/methods/solve.hpp"
 

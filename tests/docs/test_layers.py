@@ -1,8 +1,11 @@
 """The headers keep the layers of DESIGN.md and docs/architecture.md ("Layout"): a layer includes
 only the layers below it, and no kernel includes the other or a driver.
 
-* principle/ (the vocabulary: methods, options, defaults, result parts) includes no kernel, no
-  method, no driver (solvers/), no verifier and no api;
+* principle/ (the vocabulary: methods, options, defaults, result parts, each kernel's problem)
+  includes no kernel, no method, no driver (solvers/), no verifier and no api;
+* mechanics/ (the Lagrangians of both kernels, models, integrators) and the geometry (manifolds/,
+  groups/, connections/, transport/) include no kernel, no method, no driver, no verifier and no
+  api: what the bindings and the api read of them stays below the kernels;
 * solvers/ (the drivers every kernel's methods share, over the interfaces they declare) includes
   the vocabulary and numerics, no kernel and no method;
 * kernels/lie_group/ and kernels/manifold/ (the arithmetic: problems, schemes, sweeps, tangent
@@ -20,8 +23,9 @@ only the layers below it, and no kernel includes the other or a driver.
   compiled solves' declarations (compiled.hpp) and its dense output (dense.hpp), never a method
   nor a driver;
 * the forwarding headers of the old paths (transported/, general/, verify/report.hpp,
-  verify/checks.hpp), kept for one release, each include the one header of the same name that
-  replaced them, and nothing of the project includes them.
+  verify/checks.hpp, and the kernels' headers that moved to mechanics/ and principle/), kept for
+  one release, each include the one header that replaced them, and nothing of the project
+  includes them.
 """
 import re
 from pathlib import Path
@@ -34,7 +38,14 @@ METHODS = ("methods/lie_group", "methods/manifold")
 FORWARDING = ("transported", "general")
 FORWARDING_FILES = {"verify/report.hpp": "kernels/lie_group/verify.hpp",
                     "verify/checks.hpp": "kernels/lie_group/verify_checks.hpp",
-                    "general/lie_kernel.hpp": "methods/lie_group_as_manifold.hpp"}
+                    "general/lie_kernel.hpp": "methods/lie_group_as_manifold.hpp",
+                    # the manifold kernel's Lagrangians, beside the group's, and both problems
+                    **{f"kernels/manifold/{name}.hpp": f"mechanics/manifold_{name}.hpp"
+                       for name in ("lagrangian", "lagrangian_hessian", "erased_lagrangian", "particle",
+                                    "check_lagrangian")},
+                    "kernels/manifold/problem.hpp": "principle/manifold_problem.hpp",
+                    "kernels/lie_group/problem.hpp": "principle/group_problem.hpp"}
+GEOMETRY = ("manifolds", "groups", "connections", "transport")
 
 
 def includes(header):
@@ -80,6 +91,12 @@ def test_the_folders_exist():
 
 def test_the_vocabulary_includes_no_kernel_method_driver_verifier_or_api():
     assert crossings("principle", {*KERNELS, *ABOVE_THE_KERNELS, "verify"}) == []
+
+
+def test_mechanics_and_the_geometry_include_no_kernel_method_driver_verifier_or_api():
+    for folder in ("mechanics", *GEOMETRY):
+        assert list(headers(folder)), folder
+        assert crossings(folder, {*KERNELS, *ABOVE_THE_KERNELS, "verify"}) == [], folder
 
 
 def test_the_drivers_include_no_kernel_and_no_method():
@@ -180,9 +197,10 @@ def test_the_forwarding_headers_forward_and_nothing_uses_them():
             assert targets[0] == FORWARDING_FILES[path]
         elif path == "general/solve.hpp":  # the general solve is where the kernels meet
             assert targets[0] == "methods/solve.hpp"
-        else:  # the header of the same name in the kernel or in its methods
+        else:  # the header of the same name in the kernel or in its methods, or where it moved since
             kernel = "lie_group" if path.startswith("transported/") else "manifold"
-            assert targets[0] in (f"kernels/{kernel}/{header.name}", f"methods/{kernel}/{header.name}"), path
+            in_kernel = f"kernels/{kernel}/{header.name}"
+            assert targets[0] in (in_kernel, f"methods/{kernel}/{header.name}", FORWARDING_FILES.get(in_kernel)), path
     users = [f"{source.relative_to(ROOT)} -> {t}" for source in project_sources()
              if not (source.is_relative_to(INCLUDE) and is_forwarding(source.relative_to(INCLUDE).as_posix()))
              for t in includes(source) if is_forwarding(t)]

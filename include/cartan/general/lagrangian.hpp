@@ -1,4 +1,4 @@
 #pragma once
-// Forwarding header, kept for one release: the kernels moved to include/cartan/kernels/
-// (docs/architecture.md, "Layout"). Include "cartan/kernels/manifold/lagrangian.hpp" instead.
-#include "cartan/kernels/manifold/lagrangian.hpp"
+// Forwarding header, kept for one release: the manifold Lagrangians moved to include/cartan/mechanics/
+// (docs/architecture.md, "Layout"). Include "cartan/mechanics/manifold_lagrangian.hpp" instead.
+#include "cartan/mechanics/manifold_lagrangian.hpp"

@@ -1,4 +1,4 @@
 #pragma once
-// Forwarding header, kept for one release: the kernels moved to include/cartan/kernels/
-// (docs/architecture.md, "Layout"). Include "cartan/kernels/manifold/problem.hpp" instead.
-#include "cartan/kernels/manifold/problem.hpp"
+// Forwarding header, kept for one release: the problems moved to include/cartan/principle/
+// (docs/architecture.md, "Layout"). Include "cartan/principle/manifold_problem.hpp" instead.
+#include "cartan/principle/manifold_problem.hpp"

@@ -12,8 +12,8 @@
 
 namespace cartan::mechanics {
 
-/// The seeded samples of a check (check_lagrangian.hpp on a group, kernels/manifold/check_lagrangian.hpp on
-/// a manifold).
+/// The seeded samples of a check (check_lagrangian.hpp on a group, manifold_check_lagrangian.hpp on a
+/// manifold).
 struct CheckLagrangianOptions {
   int samples = 8;               ///< how many seeded samples
   std::uint32_t seed = 20261122u;

@@ -5,7 +5,7 @@
 // where it has one, central differences otherwise). Terms says in which kernel's words:
 //   mechanics::ReducedTerms<G> (erased_lagrangian.hpp): a ReducedLagrangian<G>, read as
 //     group_gradient(t, g, v) and hessian(t, g, v): mechanics::ErasedLagrangian<G>;
-//   general::ManifoldTerms<M> (kernels/manifold/erased_lagrangian.hpp): a ManifoldLagrangian<M>,
+//   general::ManifoldTerms<M> (manifold_erased_lagrangian.hpp): a ManifoldLagrangian<M>,
 //     read as point_gradient(t, q, v), hessian(manifold, t, q, v) and has_hessian():
 //     general::ErasedLagrangian<M>.
 // The other kernel's names are declared but constrained away, so that a check for a member
@@ -69,7 +69,7 @@ class Erased {
   Gradient point_gradient(double t, const Point& q, const Velocity& v) const requires(!Terms::kOnGroup) {
     return impl_->gradient(t, q, v);
   }
-  /// The wrapped Lagrangian's second derivatives (mechanics/ or kernels/manifold/lagrangian_hessian.hpp).
+  /// The wrapped Lagrangian's second derivatives (lagrangian_hessian.hpp or manifold_lagrangian_hessian.hpp).
   Hessian hessian(double t, const Point& g, const Velocity& v) const requires(Terms::kOnGroup) {
     return impl_->hessian(nullptr, t, g, v);
   }

@@ -4,7 +4,7 @@
 // connection (docs/design/lie-kernel.md), chosen in methods/solve.hpp. Neither kernel includes
 // this header nor the other kernel; it includes both.
 // The general problem on GroupManifold<G>::cartan_schouten(lambda), with frame0 the identity (the
-// default), is the paper's problem (kernels/lie_group/problem.hpp) with the same lambda, T, N and
+// default), is the paper's problem (principle/group_problem.hpp) with the same lambda, T, N and
 // endpoints, and the same Lagrangian of the transported velocity v
 // (LieLagrangian below, the inverse of OnGroupManifold). The two schemes are then the same
 // discrete equations (docs/general-connections.md#reduction; design §2.1), with
@@ -31,14 +31,15 @@
 #include <utility>
 
 #include "cartan/kernels/lie_group/compiled.hpp"
-#include "cartan/kernels/manifold/lagrangian.hpp"
-#include "cartan/kernels/manifold/lagrangian_hessian.hpp"
-#include "cartan/kernels/manifold/problem.hpp"
+#include "cartan/kernels/manifold/solution.hpp"
 #include "cartan/manifolds/geometry.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
+#include "cartan/mechanics/manifold_lagrangian.hpp"
+#include "cartan/mechanics/manifold_lagrangian_hessian.hpp"
 #include "cartan/methods/lie_group/continuation.hpp"
 #include "cartan/methods/manifold/shooting.hpp"
 #include "cartan/numerics/spectrum.hpp"
+#include "cartan/principle/manifold_problem.hpp"
 #include "cartan/solvers/continuation.hpp"
 
 namespace cartan::general {
@@ -51,7 +52,7 @@ inline constexpr bool kIsGroupManifold<manifolds::GroupManifold<G>> = true;
 
 /// A Lagrangian of the general problem on GroupManifold<G> as a reduced Lagrangian of the Lie-group
 /// solvers (mechanics::ReducedLagrangian), in the identity frame at g0: the inverse of
-/// OnGroupManifold (lagrangian.hpp). Both take the transported velocity v, left-trivialised at g0
+/// OnGroupManifold (mechanics/manifold_lagrangian.hpp). Both take the transported velocity v, left-trivialised at g0
 /// (design §1.2), and both perturb g as g exp(e w): the point gradient is the left-trivialised group
 /// gradient, and the Hessian blocks are the same. Its Hessian structure is the wrapped Lagrangian's,
 /// reported at run time (mechanics::RuntimeHessianStructure).
@@ -73,7 +74,7 @@ struct LieLagrangian {
     return lagrangian.velocity(t, g, mu);
   }
   /// The Lagrangian's own second derivatives where it has them, central differences otherwise
-  /// (lagrangian_hessian.hpp).
+  /// (mechanics/manifold_lagrangian_hessian.hpp).
   mechanics::LagrangianHessian<G> hessian(double t, const groups::ElementOf<G>& g, const groups::TangentOf<G>& v) const {
     const LagrangianHessian<manifolds::GroupManifold<G>> h = general::lagrangian_hessian(manifold, lagrangian, t, g, v);
     return {h.momentum_v, h.momentum_q, h.gradient_v, h.gradient_q};

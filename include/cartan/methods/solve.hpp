@@ -1,6 +1,6 @@
 #pragma once
 // general::solve: the one place a kernel is chosen for the general transported-velocity problem
-// (kernels/manifold/problem.hpp), from what the space and its connection can do
+// (principle/manifold_problem.hpp), from what the space and its connection can do
 // (docs/architecture.md, "Kernels"):
 //   * on a Lie group whose connection is Cartan–Schouten given by its lambda, with frame0 unset or
 //     the identity (lie_kernel_applies), shooting, continuation in T and in lambda, multiple
@@ -11,7 +11,7 @@
 //   * everywhere else, and collocation always, the manifold kernel (kernels/manifold/).
 // Both are run by the manifold kernel's methods (methods/manifold/solve.hpp: the strategy, the
 // paths and collocation, with the chosen kernel's shooting); what neither kernel has is refused
-// by name. A group model (kernels/lie_group/problem.hpp) is a problem of the Lie-group kernel alone
+// by name. A group model (principle/group_problem.hpp) is a problem of the Lie-group kernel alone
 // (transported::solve), whose methods include the variational one.
 
 #include <optional>

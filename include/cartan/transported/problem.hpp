@@ -1,4 +1,4 @@
 #pragma once
-// Forwarding header, kept for one release: the kernels moved to include/cartan/kernels/
-// (docs/architecture.md, "Layout"). Include "cartan/kernels/lie_group/problem.hpp" instead.
-#include "cartan/kernels/lie_group/problem.hpp"
+// Forwarding header, kept for one release: the problems moved to include/cartan/principle/
+// (docs/architecture.md, "Layout"). Include "cartan/principle/group_problem.hpp" instead.
+#include "cartan/principle/group_problem.hpp"

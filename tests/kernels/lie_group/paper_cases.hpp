@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "cartan/kernels/lie_group/problem.hpp"
 #include "cartan/mechanics/rigid_body.hpp"
+#include "cartan/principle/group_problem.hpp"
 
 namespace cartan::testing {
 

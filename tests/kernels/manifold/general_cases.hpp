@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string_view>
 
-#include "cartan/kernels/manifold/problem.hpp"
 #include "cartan/methods/manifold/shooting.hpp"
+#include "cartan/principle/manifold_problem.hpp"
 #include "../lie_group/paper_cases.hpp"
 
 namespace cartan::testing {

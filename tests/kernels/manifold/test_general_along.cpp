@@ -1,5 +1,5 @@
 // What a manifold's result carries along it (kernels/manifold/along.hpp) and the check of a manifold's
-// Lagrangian (kernels/manifold/check_lagrangian.hpp), against closed forms on the sphere.
+// Lagrangian (mechanics/manifold_check_lagrangian.hpp), against closed forms on the sphere.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "cartan/kernels/manifold/along.hpp"
-#include "cartan/kernels/manifold/check_lagrangian.hpp"
+#include "cartan/mechanics/manifold_check_lagrangian.hpp"
 #include "test_support.hpp"
 
 namespace cartan::testing {
@@ -105,7 +105,7 @@ TEST(GeneralProblem, RefusesTheFallbackFrameWhereTheLagrangianDependsOnIt) {
 
 // The manifold's check names a wrong point gradient (a sign: O(1)) and ignores what is not defined
 // of it (a normal part on the sphere); a correct Lagrangian agrees to the differences' accuracy
-// (check_lagrangian.hpp: 1e-10; asserted 1e-8).
+// (mechanics/manifold_check_lagrangian.hpp: 1e-10; asserted 1e-8).
 TEST(GeneralCheckLagrangian, NamesAWrongPointGradientOnly) {
   const Sphere sphere;
   mechanics::CheckLagrangianOptions options;

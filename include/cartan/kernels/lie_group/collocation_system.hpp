@@ -17,10 +17,10 @@
 
 #include "cartan/errors.hpp"
 #include "cartan/groups/so3.hpp"
-#include "cartan/kernels/lie_group/problem.hpp"
 #include "cartan/kernels/lie_group/scheme.hpp"
 #include "cartan/mechanics/natural_system.hpp"
 #include "cartan/numerics/collocation.hpp"
+#include "cartan/principle/group_problem.hpp"
 #include "cartan/transport/disc_exp.hpp"
 
 namespace cartan::transported {

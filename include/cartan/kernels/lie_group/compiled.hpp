@@ -21,10 +21,10 @@
 #include "cartan/groups/se2.hpp"
 #include "cartan/groups/se3.hpp"
 #include "cartan/groups/so3.hpp"
-#include "cartan/kernels/lie_group/problem.hpp"
 #include "cartan/kernels/lie_group/solution.hpp"
 #include "cartan/kernels/lie_group/solve_options.hpp"
 #include "cartan/mechanics/erased_lagrangian.hpp"
+#include "cartan/principle/group_problem.hpp"
 #include "cartan/status.hpp"
 #include "cartan/verify/verdict.hpp"
 

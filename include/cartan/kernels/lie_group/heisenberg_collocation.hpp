@@ -20,9 +20,9 @@
 #include <cmath>
 
 #include "cartan/groups/heisenberg.hpp"
-#include "cartan/kernels/lie_group/problem.hpp"
 #include "cartan/mechanics/natural_system.hpp"
 #include "cartan/numerics/collocation.hpp"
+#include "cartan/principle/group_problem.hpp"
 
 namespace cartan::transported {
 

@@ -17,7 +17,7 @@
 // mu_R, xi_R). It is the left scheme in other coordinates: v_R = Ad(g0) v, mu_R = Ad(g0)^{-T} mu,
 // Q = Ad(g) P Ad(g0)^{-1}, and g_k is the same curve (tests/kernels/lie_group/test_right_form.cpp).
 //
-// The Lagrangian is the user's l(t, g, v) with v left-trivialised at g0 (problem.hpp); its right
+// The Lagrangian is the user's l(t, g, v) with v left-trivialised at g0 (principle/group_problem.hpp); its right
 // form is l_R(t, g, v_R) = l(t, g, Ad(g0)^{-1} v_R).
 
 #include "cartan/kernels/lie_group/scheme.hpp"

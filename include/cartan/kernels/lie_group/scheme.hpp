@@ -28,9 +28,9 @@
 #include <vector>
 
 #include "cartan/groups/exp_jacobian.hpp"
-#include "cartan/kernels/lie_group/problem.hpp"
 #include "cartan/kernels/lie_group/trajectory.hpp"
 #include "cartan/mechanics/lagrangian_hessian.hpp"
+#include "cartan/principle/group_problem.hpp"
 #include "cartan/scheme_order.hpp"
 
 namespace cartan::transported {

@@ -13,8 +13,8 @@
 #include <utility>
 #include <vector>
 
-#include "cartan/kernels/manifold/problem.hpp"
 #include "cartan/principle/action.hpp"
+#include "cartan/principle/manifold_problem.hpp"
 
 namespace cartan::general {
 

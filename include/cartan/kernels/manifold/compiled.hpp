@@ -2,7 +2,7 @@
 // The general solver's entry points as declarations, and the list of what the library compiles of
 // them: what a unit needs to call the library without parsing a solver. Compiled in the library
 // (src/methods/solve_<manifold>.cpp, one file per manifold, in unity groups: CMakeLists.txt) for the erased Lagrangian
-// (erased_lagrangian.hpp; `erased(problem)` wraps any problem's) on every shipped manifold: the
+// (mechanics/manifold_erased_lagrangian.hpp; `erased(problem)` wraps any problem's) on every shipped manifold: the
 // sphere, the hyperbolic plane, R^2 and R^3 with constant Christoffel symbols, charts of dimension
 // 2 and 3, and SO(3), H3, SE(2), SE(3) with any left-invariant connection. Including this header
 // costs a unit seconds; instantiating the solve costs it tens of seconds per manifold
@@ -11,7 +11,6 @@
 // (solve.hpp, shooting.hpp, verify.hpp) for the fully typed instantiation. The definition headers
 // include this one, so the declarations (with the default arguments) are written once.
 
-#include <functional>
 #include <optional>
 #include <string>
 
@@ -19,36 +18,30 @@
 #include "cartan/groups/se2.hpp"
 #include "cartan/groups/se3.hpp"
 #include "cartan/groups/so3.hpp"
-#include "cartan/kernels/manifold/erased_lagrangian.hpp"
-#include "cartan/kernels/manifold/problem.hpp"
 #include "cartan/kernels/manifold/solution.hpp"
 #include "cartan/manifolds/chart.hpp"
 #include "cartan/manifolds/euclidean.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"
 #include "cartan/mechanics/check_report.hpp"
+#include "cartan/mechanics/manifold_erased_lagrangian.hpp"
+#include "cartan/principle/manifold_problem.hpp"
 #include "cartan/principle/options.hpp"
 #include "cartan/status.hpp"
 #include "cartan/verify/verdict.hpp"
 
 namespace cartan::general {
 
-/// The potential of a particle, V(q), and its ambient gradient (KineticPotential, lagrangian.hpp).
+/// The problem of the compiled solve on M: any Lagrangian behind the erased type.
 template <manifolds::ManifoldWithConnection M>
-using ParticlePotential = std::function<double(const manifolds::PointOf<M>&)>;
-template <manifolds::ManifoldWithConnection M>
-using ParticleGradient = std::function<manifolds::VectorOf<M>(const manifolds::PointOf<M>&)>;
+using ErasedProblem = GeneralProblem<M, ErasedLagrangian<M>>;
 
-/// The particle l = 1/2 v^T A v - V(q) (KineticPotential: A symmetric positive definite in frame
-/// components, V and its gradient both or neither) behind the erased Lagrangian; with V = c . q for
-/// the second, where points are vectors (else it throws std::invalid_argument). Compiled in the library (particle.hpp), so that a caller does not compile the
-/// particle's callbacks. Throws std::invalid_argument as KineticPotential does.
-template <manifolds::ManifoldWithConnection M>
-ErasedLagrangian<M> erased_particle(const manifolds::ComponentMatrixOf<M>& inertia, ParticlePotential<M> potential = {},
-                                    ParticleGradient<M> gradient = {});
-template <manifolds::ManifoldWithConnection M>
-ErasedLagrangian<M> erased_particle_in_linear_potential(const manifolds::ComponentMatrixOf<M>& inertia,
-                                                        const manifolds::VectorOf<M>& c);
+/// `problem` with its Lagrangian behind the erased type (for the compiled solvers).
+template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
+ErasedProblem<M> erased(const GeneralProblem<M, L>& problem) {
+  return {problem.manifold, ErasedLagrangian<M>(problem.lagrangian), problem.T, problem.N, problem.q0, problem.qT,
+          problem.frame0};
+}
 
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 class GeneralScheme;
@@ -92,7 +85,7 @@ template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 GeneralAlong<M> along_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x);
 
 /// A Lagrangian's callbacks against each other at the samples, and seeded samples around `base`
-/// (check_lagrangian.hpp).
+/// (mechanics/manifold_check_lagrangian.hpp).
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 mechanics::CheckReport check_lagrangian(const M& manifold, const L& l, const std::vector<ManifoldLagrangianSample<M>>& samples);
 template <manifolds::ManifoldWithConnection M>

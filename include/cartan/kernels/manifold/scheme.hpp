@@ -1,7 +1,8 @@
 #pragma once
-// The discrete scheme of the general transported-velocity problem (problem.hpp), order 1 and 2.
+// The discrete scheme of the general transported-velocity problem (principle/manifold_problem.hpp),
+// order 1 and 2.
 // State at node k: q_k, the parallel frame E_k (d x m, columns e_i(t_k)), mu_k, Xi_k, v_k.
-// Rates (problem.hpp, docs/general-connections.md#scheme), with u = E v the represented velocity:
+// Rates (manifold_problem.hpp, docs/general-connections.md#scheme), with u = E v the represented velocity:
 //   zeta_i = point_gradient . e_i
 //   mu'_i  = zeta_i + mu(T(e_i, u)) + tr(Xi E^+ R(e_i, u) E)       (E^+ the dual frame)
 //   Xi'    = -v mu^T
@@ -19,9 +20,9 @@
 #include <string_view>
 #include <vector>
 
-#include "cartan/kernels/manifold/problem.hpp"
 #include "cartan/kernels/manifold/solution.hpp"
 #include "cartan/mechanics/lagrangian.hpp"
+#include "cartan/principle/manifold_problem.hpp"
 #include "cartan/principle/samples.hpp"
 
 namespace cartan::general {
@@ -119,7 +120,7 @@ class GeneralScheme {
   /// The terminal error a convergence test may trust: separation(qT, q) (manifolds/geometry.hpp).
   double terminal_error(const Point& q) const { return manifolds::separation(problem_.manifold, problem_.qT, q); }
 
-  /// The rate of mu at a node (mu' of problem.hpp), for the checks of the equations.
+  /// The rate of mu at a node (mu' of manifold_problem.hpp), for the checks of the equations.
   Components momentum_rate(const Node& node) const { return rates(node).dmu; }
 
   /// The frame components T_ij^k and R_ijk^l when they are constant (the fast path), else null.

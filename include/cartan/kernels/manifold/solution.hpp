@@ -66,14 +66,6 @@ struct GeneralAlong {
   std::vector<double> energy, action;
 };
 
-/// A point (t, q, v) where general::check_lagrangian compares a Lagrangian's callbacks.
-template <manifolds::ManifoldWithConnection M>
-struct ManifoldLagrangianSample {
-  double t = 0;
-  manifolds::PointOf<M> q;
-  manifolds::ComponentsOf<M> v;
-};
-
 /// The Lie-group shooting's options (order, tolerance, max_iterations, analytic_jacobian: the
 /// tangent-linear sweep of tangent.hpp, no_progress_window, monitor), so that the continuation
 /// path (methods/lie_group/continuation.hpp) drives both problem families.

@@ -22,9 +22,9 @@
 #include <array>
 #include <optional>
 
-#include "cartan/kernels/manifold/lagrangian_hessian.hpp"
 #include "cartan/kernels/manifold/scheme.hpp"
 #include "cartan/manifolds/derivatives.hpp"
+#include "cartan/mechanics/manifold_lagrangian_hessian.hpp"
 
 namespace cartan::general {
 

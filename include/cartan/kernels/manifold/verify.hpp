@@ -1,5 +1,5 @@
 #pragma once
-// The verdict on a solution of the general problem (problem.hpp), with the checks, report and
+// The verdict on a solution of the general problem (principle/manifold_problem.hpp), with the checks, report and
 // thresholds of the Lie-group verifier (kernels/lie_group/verify.hpp, docs/verify.md), reading only the samples
 // t_k, q_k, v_k, mu_k, Xi_k and the problem, never the solver:
 //   * boundary: the separations (manifolds/geometry.hpp: |difference| where it is a logarithm, the
@@ -24,8 +24,8 @@
 #include "cartan/kernels/manifold/action.hpp"
 #include "cartan/kernels/manifold/along.hpp"
 #include "cartan/kernels/manifold/compiled.hpp"
-#include "cartan/kernels/manifold/problem.hpp"
 #include "cartan/numerics/spectrum.hpp"
+#include "cartan/principle/manifold_problem.hpp"
 #include "cartan/verify/assemble.hpp"
 
 namespace cartan::general {

@@ -1,5 +1,5 @@
 #pragma once
-// The general transported-velocity problem (problem.hpp) as a continuous two-point BVP for the
+// The general transported-velocity problem (principle/manifold_problem.hpp) as a continuous two-point BVP for the
 // library's collocation solver (numerics/collocation.hpp), in the ambient storage of the instance:
 //   state y = (q, E, mu, Xi): the point's storage (a unit vector of R^3, a group element, ...),
 //   the frame E (d x m), mu (m), Xi (m x m); v = velocity(t, q, mu) (the inverse Legendre map);

@@ -1,5 +1,5 @@
 #pragma once
-// Shooting for the general problem (problem.hpp): solve for (v0, Xi0) with the terminal conditions
+// Shooting for the general problem (principle/manifold_problem.hpp): solve for (v0, Xi0) with the terminal conditions
 // (difference(qT, q_N), Xi_N) = 0 by the library's Levenberg–Marquardt solver, with the
 // dimensionless scaling of methods/lie_group/shooting.hpp: unknowns (T v0, Xi0 / s), residual
 // (r_q, Xi_N / s), s = T |v_ref| |mu_ref| with v_ref the geodesic-guess velocity. The Jacobian is

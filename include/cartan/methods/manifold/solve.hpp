@@ -1,5 +1,5 @@
 #pragma once
-// The manifold kernel's methods for the general transported-velocity problem (problem.hpp), with
+// The manifold kernel's methods for the general transported-velocity problem (principle/manifold_problem.hpp), with
 // the vocabulary of every solve (principle/: SolveOptions, Method, Continuation, Status), run on a
 // shooting kernel that the one solve (methods/solve.hpp, where the kernel is chosen) hands in:
 //   * Method::Shooting: shooting from the guess (default: the geodesic guess), or with
