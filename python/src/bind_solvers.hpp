@@ -21,8 +21,8 @@
 
 #include "bind_models.hpp"
 #include "report_dict.hpp"
+#include "cartan/api/erased.hpp"
 #include "cartan/kernels/lie_group/compiled.hpp"
-#include "cartan/kernels/lie_group/dense.hpp"
 
 namespace cartan::python {
 
@@ -57,11 +57,11 @@ using SolvedAsT = typename SolvedAs<std::decay_t<L>>::type;
 /// for every keyword Python leaves at None.
 using SolveRequest = OptionWords;
 
-/// A trajectory from any object with t, g, v, xi (and mu when `with_mu`) as attributes or keys,
-/// e.g. a SolveResult: a guess for `solve` (mu is then not needed) or the data of `verify`.
+/// The samples (api::Samples, rows of numbers) of any object with t, g, v, xi (and mu when
+/// `with_mu`; zeros without it) as attributes or keys, e.g. a SolveResult: a guess for `solve`
+/// (mu is then not needed) or the data of `verify`, `along` and `sol`.
 template <groups::LieGroup G>
-transported::TransportedTrajectory<G> trajectory_of(const py::object& source, const Args<G>& a, const std::string& where,
-                                       const char* argument, bool with_mu) {
+api::Samples samples_of(const py::object& source, const Args<G>& a, const std::string& where, const char* argument, bool with_mu) {
   const auto field = [&](const char* name) -> py::object {
     if (py::hasattr(source, name)) return source.attr(name);
     if (py::isinstance<py::dict>(source) && source.contains(name)) return source[py::str(name)];
@@ -70,23 +70,34 @@ transported::TransportedTrajectory<G> trajectory_of(const py::object& source, co
                                                                  : " (give t, g, v and xi, e.g. a SolveResult)"));
   };
   const std::string name(argument), in = a.group + "." + where;
-  transported::TransportedTrajectory<G> tr;
+  api::Samples x;
   const Array t = as_array(field("t"), in, name + ".t");
   if (t.ndim() != 1) throw_invalid(in, name + ".t", "array of shape " + shape_text(t), "must be one-dimensional");
-  tr.t.assign(t.data(), t.data() + t.shape(0));
-  tr.g = to_eigen_list<groups::ElementOf<G>>(field("g"), in, name + ".g");
-  tr.v = to_eigen_list<groups::TangentOf<G>>(field("v"), in, name + ".v");
-  tr.xi = to_eigen_list<groups::CovectorOf<G>>(field("xi"), in, name + ".xi");
-  if (with_mu) {
-    tr.mu = to_eigen_list<groups::CovectorOf<G>>(field("mu"), in, name + ".mu");
-  } else {
-    tr.mu.assign(tr.t.size(), groups::CovectorOf<G>::Zero());
-  }
-  if (tr.g.size() != tr.t.size() || tr.v.size() != tr.t.size() || tr.xi.size() != tr.t.size() ||
-      tr.mu.size() != tr.t.size()) {
-    throw_invalid("cartan." + where, argument, "(" + std::to_string(tr.t.size()) + " times)",
+  x.t = Eigen::Map<const Eigen::VectorXd>(t.data(), t.shape(0));
+  x.points = to_rows<groups::ElementOf<G>>(field("g"), in, name + ".g");
+  x.v = to_rows<groups::TangentOf<G>>(field("v"), in, name + ".v");
+  x.aux = to_rows<groups::CovectorOf<G>>(field("xi"), in, name + ".xi");
+  x.mu = with_mu ? to_rows<groups::CovectorOf<G>>(field("mu"), in, name + ".mu")
+                 : Eigen::MatrixXd::Zero(x.t.size(), groups::CovectorOf<G>::SizeAtCompileTime);
+  if (x.points.rows() != x.t.size() || x.v.rows() != x.t.size() || x.aux.rows() != x.t.size() || x.mu.rows() != x.t.size()) {
+    throw_invalid("cartan." + where, argument, "(" + std::to_string(x.t.size()) + " times)",
                   with_mu ? "needs g, v, mu and xi at every time" : "needs g, v and xi at every time");
   }
+  return x;
+}
+
+/// The same samples as the kernel's trajectory (what the solve, verify and along calls below
+/// still take until they go through the api, docs/design/one-door-bindings.md).
+template <groups::LieGroup G>
+transported::TransportedTrajectory<G> trajectory_of(const py::object& source, const Args<G>& a, const std::string& where,
+                                                    const char* argument, bool with_mu) {
+  const api::Samples x = samples_of<G>(source, a, where, argument, with_mu);
+  transported::TransportedTrajectory<G> tr;
+  tr.t.assign(x.t.data(), x.t.data() + x.t.size());
+  tr.g = values_of_rows<groups::ElementOf<G>>(x.points);
+  tr.v = values_of_rows<groups::TangentOf<G>>(x.v);
+  tr.mu = values_of_rows<groups::CovectorOf<G>>(x.mu);
+  tr.xi = values_of_rows<groups::CovectorOf<G>>(x.aux);
   return tr;
 }
 
@@ -225,19 +236,18 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
                         !model.is_none());
     return d;
   }, py::arg("lagrangian"), py::arg("result"), py::arg("lam"));
-  // `<Group>._dense(result, lam, method, times)`: the library's dense output (kernels/lie_group/dense.hpp)
+  // `<Group>._dense(result, lam, method, times)`: the library's dense output (api/erased.hpp)
   // at the 1-d array `times`, as a dict of g, v, mu, xi with one row per time (SolveResult.sol).
   group.def_static("_dense", [a](const py::object& result, double lambda, const std::string& method, const py::object& times) {
-    const transported::TransportedTrajectory<G> x = trajectory_of<G>(result, a, "sol", "result", true);
+    const api::Samples x = samples_of<G>(result, a, "sol", "result", true);
     const Array t = as_array(times, a.group + ".sol", "t");
-    transported::TransportedTrajectory<G> d = transported::dense_output<G>(
-        x, lambda, parse_enum<cartan::Method>(method, "Result.sol"), std::vector<double>(t.data(), t.data() + t.size()),
-        "Result.sol");
+    api::Samples d = api::dense<G>(lambda, x, parse_enum<cartan::Method>(method, "Result.sol"),
+                                   std::vector<double>(t.data(), t.data() + t.size()), "Result.sol");
     py::dict out;
-    out["g"] = to_numpy(std::move(d.g));
-    out["v"] = to_numpy(std::move(d.v));
-    out["mu"] = to_numpy(std::move(d.mu));
-    out["xi"] = to_numpy(std::move(d.xi));
+    out["g"] = rows_to_numpy<groups::ElementOf<G>>(std::move(d.points));
+    out["v"] = rows_to_numpy<groups::TangentOf<G>>(std::move(d.v));
+    out["mu"] = rows_to_numpy<groups::CovectorOf<G>>(std::move(d.mu));
+    out["xi"] = rows_to_numpy<groups::CovectorOf<G>>(std::move(d.aux));
     return out;
   }, py::arg("result"), py::arg("lam"), py::arg("method"), py::arg("times"));
 }

@@ -87,17 +87,16 @@ T to_eigen(const py::handle& obj, std::string_view where, std::string_view name)
   return out;
 }
 
-/// A sequence of fixed-size Eigen objects from an array with one more leading axis, (count, rows)
-/// or (count, rows, cols), read from the array's memory in one pass (one shape check, no Python
-/// object per row: a trajectory of 2e6 nodes converts in milliseconds, not seconds). Throws
+/// The array of a sequence of fixed-size Eigen objects T, with one more leading axis: (count, rows)
+/// or (count, rows, cols), or no rows at all (e.g. [] or a failed result's arrays). Throws
 /// std::invalid_argument naming `where` and `name` on any other shape.
 template <class T>
-std::vector<T> to_eigen_list(const py::handle& obj, std::string_view where, std::string_view name) {
+Array list_array(const py::handle& obj, std::string_view where, std::string_view name) {
   constexpr Eigen::Index rows = T::RowsAtCompileTime, cols = T::ColsAtCompileTime;
   constexpr bool vector = cols == 1;
-  static_assert(rows > 0 && cols > 0, "to_eigen_list converts to fixed-size Eigen types only");
+  static_assert(rows > 0 && cols > 0, "sequences of fixed-size Eigen types only");
   const Array a = as_array(obj, where, name);
-  if (a.ndim() >= 1 && a.shape(0) == 0) return {};  // no rows (e.g. [] or a failed result's arrays)
+  if (a.ndim() >= 1 && a.shape(0) == 0) return a;
   const bool fits = vector ? (a.ndim() == 2 && a.shape(1) == rows)
                            : (a.ndim() == 3 && a.shape(1) == rows && a.shape(2) == cols);
   if (!fits) {
@@ -106,13 +105,52 @@ std::vector<T> to_eigen_list(const py::handle& obj, std::string_view where, std:
                   "must have shape (" + count + ", " + std::to_string(rows) +
                       (vector ? std::string(")") : ", " + std::to_string(cols) + ")"));
   }
+  return a;
+}
+
+/// A sequence of fixed-size Eigen objects from list_array's array, read from its memory in one
+/// pass (one shape check, no Python object per row: a trajectory of 2e6 nodes converts in
+/// milliseconds, not seconds).
+template <class T>
+std::vector<T> to_eigen_list(const py::handle& obj, std::string_view where, std::string_view name) {
+  const Array a = list_array<T>(obj, where, name);
   std::vector<T> out(static_cast<std::size_t>(a.shape(0)));
   const double* data = a.data();
   for (T& x : out) {
-    for (Eigen::Index i = 0; i < rows; ++i) {
-      for (Eigen::Index j = 0; j < cols; ++j) x(i, j) = *data++;
+    for (Eigen::Index i = 0; i < x.rows(); ++i) {
+      for (Eigen::Index j = 0; j < x.cols(); ++j) x(i, j) = *data++;
     }
   }
+  return out;
+}
+
+/// The same sequence as the api's rows (api::Samples): one row of rows * cols numbers per object,
+/// row-major within it.
+template <class T>
+Eigen::MatrixXd to_rows(const py::handle& obj, std::string_view where, std::string_view name) {
+  const Array a = list_array<T>(obj, where, name);
+  const Eigen::Index count = a.shape(0);
+  if (count == 0) return {};
+  return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+      a.data(), count, T::RowsAtCompileTime * T::ColsAtCompileTime);
+}
+
+/// Row k of the api's rows as the fixed-size Eigen object it holds (row-major within the row).
+template <class T>
+T value_of_row(const Eigen::MatrixXd& x, Eigen::Index k) {
+  T out;
+  for (Eigen::Index i = 0; i < out.rows(); ++i) {
+    for (Eigen::Index j = 0; j < out.cols(); ++j) out(i, j) = x(k, i * out.cols() + j);
+  }
+  return out;
+}
+
+/// The api's rows back as a sequence of fixed-size Eigen objects (to_rows' inverse).
+template <class T>
+std::vector<T> values_of_rows(const Eigen::MatrixXd& x) {
+  std::vector<T> out;
+  out.reserve(static_cast<std::size_t>(x.rows()));
+  for (Eigen::Index k = 0; k < x.rows(); ++k) out.push_back(value_of_row<T>(x, k));
   return out;
 }
 
@@ -176,6 +214,25 @@ py::array_t<double> to_numpy(std::vector<T>&& xs) {
     } else {
       return py::array_t<double>({count, py::ssize_t{rows}, py::ssize_t{cols}}, {entry, number, number * rows}, data, base);
     }
+  }
+}
+
+/// The api's rows (one T a row, row-major within it) as to_numpy of the sequence of T would give
+/// them, without a copy: the matrix moves into the array's base object, and the strides read its
+/// column-major storage.
+template <class T>
+py::array_t<double> rows_to_numpy(Eigen::MatrixXd&& x) {
+  constexpr Eigen::Index rows = T::RowsAtCompileTime, cols = T::ColsAtCompileTime;
+  const auto count = static_cast<py::ssize_t>(x.rows());
+  constexpr auto number = static_cast<py::ssize_t>(sizeof(double));
+  if (count == 0) return to_numpy(std::vector<T>{});
+  double* data = x.data();  // moving a matrix keeps its storage
+  py::capsule base = owning_capsule(std::move(x));
+  if constexpr (cols == 1) {
+    return py::array_t<double>({count, py::ssize_t{rows}}, {number, number * count}, data, base);
+  } else {
+    return py::array_t<double>({count, py::ssize_t{rows}, py::ssize_t{cols}}, {number, number * count * cols, number * count},
+                               data, base);
   }
 }
 

@@ -17,8 +17,8 @@
 
 #include "bind_group.hpp"
 #include "bindings.hpp"
+#include "cartan/api/erased.hpp"
 #include "cartan/kernels/manifold/compiled.hpp"
-#include "cartan/kernels/manifold/dense.hpp"
 #include "python_models.hpp"
 #include "report_dict.hpp"
 
@@ -148,7 +148,7 @@ Square<N> matrix_or_diagonal(const py::handle& obj, const std::string& where, co
 // ---- the manifold classes ---------------------------------------------------------------------
 
 template <class M>
-general::GeneralTrajectory<M> trajectory_of(const M& manifold, const py::object& object, const char* where, const char* what);
+api::Samples samples_of(const M& manifold, const py::object& object, const char* where, const char* what);
 
 /// The geometry of manifolds/manifold.hpp and geometry.hpp, the same for every class.
 template <class Holder>
@@ -225,21 +225,22 @@ void def_manifold_methods(py::class_<Holder>& cls, const std::string& name) {
       return to_numpy(m.transport_along_step(point_arg(m, q, w, "q"), finite_arg<VectorOf<M>>(x, w, "x")));
     });
   }, py::arg("q"), py::arg("x"), "The (d, d) matrix of parallel transport along s -> step(q, s x), s in [0, 1].");
-  // `_dense(result, method, times)`: the library's dense output (kernels/manifold/dense.hpp) of a result on
+  // `_dense(result, method, times)`: the library's dense output (api/erased.hpp) of a result on
   // this manifold at the 1-d array `times`, as a dict of q, frame, v, mu, Xi with one row per time.
   cls.def("_dense", [](const Holder& h, const py::object& result, const std::string& method, const py::object& times) {
     return visit_holder(h, [&](const auto& m) {
+      using M = std::decay_t<decltype(m)>;
       constexpr const char* where = "Result.sol";
-      auto x = trajectory_of(m, result, where, "result");
+      const api::Samples x = samples_of(m, result, where, "result");
       const Array t = as_array(times, where, "t");
-      auto d = general::dense_output(m, x, parse_enum<cartan::Method>(method, where),
-                                     std::vector<double>(t.data(), t.data() + t.size()), where);
+      api::Samples d = api::dense(m, x, parse_enum<cartan::Method>(method, where), std::vector<double>(t.data(), t.data() + t.size()),
+                                  where);
       py::dict out;
-      out["q"] = to_numpy(std::move(d.q));
-      out["frame"] = to_numpy(std::move(d.frame));
-      out["v"] = to_numpy(std::move(d.v));
-      out["mu"] = to_numpy(std::move(d.mu));
-      out["Xi"] = to_numpy(std::move(d.Xi));
+      out["q"] = rows_to_numpy<PointOf<M>>(std::move(d.points));
+      out["frame"] = rows_to_numpy<FrameOf<M>>(std::move(d.frames));
+      out["v"] = rows_to_numpy<ComponentsOf<M>>(std::move(d.v));
+      out["mu"] = rows_to_numpy<ComponentsOf<M>>(std::move(d.mu));
+      out["Xi"] = rows_to_numpy<ComponentMatrixOf<M>>(std::move(d.aux));
       return out;
     });
   }, py::arg("result"), py::arg("method"), py::arg("times"));
@@ -441,31 +442,45 @@ inline py::object field_of(const py::object& object, const char* name, const cha
   return object.attr(name);
 }
 
-/// The trajectory (t, q, frame, v, mu, Xi) of a cartan.Result-like object, each field read as
-/// a whole array (to_eigen_list: one shape check, no Python object per row) and each point checked
-/// on the manifold, with errors naming `what`.
+/// The samples (t, q, frame, v, mu, Xi as api::Samples, rows of numbers) of a cartan.Result-like
+/// object, each field read as a whole array (to_rows: one shape check, no Python object per row)
+/// and each point checked on the manifold, with errors naming `what`.
 template <class M>
-general::GeneralTrajectory<M> trajectory_of(const M& manifold, const py::object& object, const char* where,
-                                            const char* what) {
+api::Samples samples_of(const M& manifold, const py::object& object, const char* where, const char* what) {
   // Built by append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
   const auto name = [what](const char* field_name) { return std::string(what).append(".").append(field_name); };
   const auto field = [&](const char* field_name) { return field_of(object, field_name, where, what); };
-  general::GeneralTrajectory<M> x;
+  api::Samples x;
   const Array t = as_array(field("t"), where, name("t"));
   if (t.ndim() != 1) throw_invalid(where, name("t"), "array of shape " + shape_text(t), "must be one-dimensional");
-  x.t.assign(t.data(), t.data() + t.shape(0));
-  x.q = to_eigen_list<PointOf<M>>(field("q"), where, name("q"));
-  x.frame = to_eigen_list<FrameOf<M>>(field("frame"), where, name("frame"));
-  x.v = to_eigen_list<ComponentsOf<M>>(field("v"), where, name("v"));
-  x.mu = to_eigen_list<ComponentsOf<M>>(field("mu"), where, name("mu"));
-  x.Xi = to_eigen_list<ComponentMatrixOf<M>>(field("Xi"), where, name("Xi"));
-  const std::size_t n = x.t.size();
-  if (x.q.size() != n || x.frame.size() != n || x.v.size() != n || x.mu.size() != n || x.Xi.size() != n) {
+  x.t = Eigen::Map<const Eigen::VectorXd>(t.data(), t.shape(0));
+  x.points = to_rows<PointOf<M>>(field("q"), where, name("q"));
+  x.frames = to_rows<FrameOf<M>>(field("frame"), where, name("frame"));
+  x.v = to_rows<ComponentsOf<M>>(field("v"), where, name("v"));
+  x.mu = to_rows<ComponentsOf<M>>(field("mu"), where, name("mu"));
+  x.aux = to_rows<ComponentMatrixOf<M>>(field("Xi"), where, name("Xi"));
+  const Eigen::Index n = x.t.size();
+  if (x.points.rows() != n || x.frames.rows() != n || x.v.rows() != n || x.mu.rows() != n || x.aux.rows() != n) {
     throw_invalid(where, what, "(" + std::to_string(n) + " times)", "needs q, frame, v, mu and Xi at every time");
   }
-  for (std::size_t k = 0; k < n; ++k) {
-    manifold.validate(x.q[k], name("q").append("[").append(std::to_string(k)).append("]"));
+  for (Eigen::Index k = 0; k < n; ++k) {
+    manifold.validate(value_of_row<PointOf<M>>(x.points, k), name("q").append("[").append(std::to_string(k)).append("]"));
   }
+  return x;
+}
+
+/// The same samples as the kernel's trajectory (what the solve, verify and along calls below
+/// still take until they go through the api, docs/design/one-door-bindings.md).
+template <class M>
+general::GeneralTrajectory<M> trajectory_of(const M& manifold, const py::object& object, const char* where, const char* what) {
+  const api::Samples s = samples_of(manifold, object, where, what);
+  general::GeneralTrajectory<M> x;
+  x.t.assign(s.t.data(), s.t.data() + s.t.size());
+  x.q = values_of_rows<PointOf<M>>(s.points);
+  x.frame = values_of_rows<FrameOf<M>>(s.frames);
+  x.v = values_of_rows<ComponentsOf<M>>(s.v);
+  x.mu = values_of_rows<ComponentsOf<M>>(s.mu);
+  x.Xi = values_of_rows<ComponentMatrixOf<M>>(s.aux);
   return x;
 }
 

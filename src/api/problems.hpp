@@ -1,6 +1,6 @@
 #pragma once
 // What the api's solve and verify (solve.cpp, verify.cpp) share: a GroupProblem or ManifoldProblem
-// checked and turned into the problem a compiled solver takes, and samples as rows of numbers.
+// checked and turned into the problem a compiled solver takes.
 // Private to src/api/.
 
 #include <Eigen/Core>
@@ -15,6 +15,7 @@
 #include "cartan/kernels/lie_group/compiled.hpp"
 #include "cartan/kernels/manifold/compiled.hpp"
 #include "cartan/models/catalogue.hpp"
+#include "samples.hpp"
 
 namespace cartan::api::detail {
 
@@ -77,30 +78,6 @@ general::ErasedProblem<manifolds::GroupManifold<typename Entry::Table::Group>> c
   using L = general::OnGroupManifold<G, typename Entry::Lagrangian>;
   return {group_manifold<G>(problem, checked), general::ErasedLagrangian<M>(L{models::make_lagrangian<Entry>(checked.inertia, where)}),
           problem.T, problem.N, g0, gT, std::nullopt};
-}
-
-/// One row per value: its numbers (models::element_numbers: a matrix row-major, a vector as it is).
-template <class Value>
-Eigen::MatrixXd rows(const std::vector<Value>& values) {
-  if (values.empty()) return {};
-  const Eigen::Index rows = values.front().rows(), cols = values.front().cols();
-  Eigen::MatrixXd out(static_cast<Eigen::Index>(values.size()), rows * cols);
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    for (Eigen::Index i = 0; i < rows; ++i) {
-      for (Eigen::Index j = 0; j < cols; ++j) out(static_cast<Eigen::Index>(k), i * cols + j) = values[k](i, j);
-    }
-  }
-  return out;
-}
-
-/// Row k of `rows` as a Value of the given shape (read row-major, as rows() writes it).
-template <class Value>
-Value value_of_row(const Eigen::MatrixXd& rows, Eigen::Index k) {
-  Value x;
-  for (Eigen::Index i = 0; i < x.rows(); ++i) {
-    for (Eigen::Index j = 0; j < x.cols(); ++j) x(i, j) = rows(k, i * x.cols() + j);
-  }
-  return x;
 }
 
 }  // namespace cartan::api::detail

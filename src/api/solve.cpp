@@ -9,24 +9,20 @@ namespace cartan::api {
 
 namespace {
 
-using detail::rows;
-
 /// A kernel's solution in numbers: its ResultCore moved, the samples (points, v, mu and the
 /// auxiliary: xi where the Lie-group kernel ran, Xi row-major where the general one did) as rows.
-template <class Solution, class Points, class Auxiliary>
-Result result_of(Solution&& s, const Points& points, const Auxiliary& aux, bool lie_kernel) {
+template <class Solution>
+Result result_of(Solution&& s, Samples&& samples, bool lie_kernel) {
   Result r;
   static_cast<ResultCore&>(r) = std::move(static_cast<ResultCore&>(s));
   r.lie_kernel = lie_kernel;
-  const auto& x = s.trajectory;
-  r.samples = {Eigen::Map<const Eigen::VectorXd>(x.t.data(), static_cast<Eigen::Index>(x.t.size())), rows(points), rows(x.v),
-               rows(x.mu), rows(aux)};
+  r.samples = std::move(samples);
   return r;
 }
 
 template <groups::LieGroup G>
 Result result_of(transported::TransportedSolution<G>&& s) {
-  return result_of(std::move(s), s.trajectory.g, s.trajectory.xi, true);
+  return result_of(std::move(s), detail::samples_of(s.trajectory), true);
 }
 
 /// A general solve's result with the discrete action along its samples (kernels/manifold/along.hpp),
@@ -36,7 +32,7 @@ Result result_of(const general::ErasedProblem<M>& posed, general::GeneralSolutio
   const bool along = !stopped_on_request(s.status) && s.trajectory.t.size() >= 2;
   const double action = along ? general::along_general(posed, s.trajectory).action.back()
                               : std::numeric_limits<double>::quiet_NaN();
-  Result r = result_of(std::move(s), s.trajectory.q, s.trajectory.Xi, false);
+  Result r = result_of(std::move(s), detail::samples_of(s.trajectory), false);
   r.action = action;
   return r;
 }

@@ -81,6 +81,9 @@ struct Guess {
 struct Samples {
   Eigen::VectorXd t;
   Eigen::MatrixXd points;  ///< a group element's numbers (models::element_numbers) or the point on the manifold
+  /// Where the general kernel ran: its frame at each sample, the d x m matrix whose columns are
+  /// e_1 .. e_m, row-major (d m numbers a row); empty where the Lie-group kernel ran.
+  Eigen::MatrixXd frames;
   Eigen::MatrixXd v, mu;   ///< n numbers each
   /// The auxiliary variable: xi in g* (n numbers) where the Lie-group kernel ran, else the
   /// general Xi (n^2 numbers, row-major).
