@@ -83,8 +83,8 @@ TEST(ApiDense, SamplesOfAnotherShapeOrATimeOutsideAreRefusedByName) {
   ASSERT_TRUE(r.converged()) << r.message;
   Samples wrong = r.samples;
   wrong.aux.conservativeResize(Eigen::NoChange, 2);
-  expect_invalid([&] { (void)dense<groups::SO3>(0.5, wrong, r.method, {0.5}, "here"); }, {"here", "samples.aux", "3 numbers"});
-  expect_invalid([&] { (void)dense<groups::SO3>(0.5, r.samples, r.method, {1.5}, "here"); }, {"here", "1.5"});
+  testing::expect_invalid([&] { (void)dense<groups::SO3>(0.5, wrong, r.method, {0.5}, "here"); }, {"here", "samples.aux", "3 numbers"});
+  testing::expect_invalid([&] { (void)dense<groups::SO3>(0.5, r.samples, r.method, {1.5}, "here"); }, {"here", "1.5"});
   ManifoldProblem p;
   p.q0 = {1, 0, 0};
   p.qT = {0, 1, 0};
@@ -92,7 +92,7 @@ TEST(ApiDense, SamplesOfAnotherShapeOrATimeOutsideAreRefusedByName) {
   ASSERT_TRUE(on_sphere.converged()) << on_sphere.message;
   Samples frameless = on_sphere.samples;
   frameless.frames.resize(0, 0);
-  expect_invalid([&] { (void)dense(manifolds::Sphere{}, frameless, on_sphere.method, {0.5}, "here"); }, {"here", "samples.frames"});
+  testing::expect_invalid([&] { (void)dense(manifolds::Sphere{}, frameless, on_sphere.method, {0.5}, "here"); }, {"here", "samples.frames"});
 }
 
 }  // namespace
