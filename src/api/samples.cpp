@@ -11,7 +11,7 @@ void check_samples(const Samples& x, Eigen::Index point_size, Eigen::Index n, Ei
                    Eigen::Index frame_size) {
   const Eigen::Index m = x.t.size();
   const auto require = [&](const Eigen::MatrixXd& table, const char* name, Eigen::Index width) {
-    if (table.rows() == m && table.cols() == width) return;
+    if (table.rows() == m && (table.cols() == width || m == 0)) return;  // no samples: tables of any width
     throw_invalid(where, std::string("samples.") + name, "(" + std::to_string(table.rows()) + " x " + std::to_string(table.cols()) + " numbers)",
                   "must have " + std::to_string(m) + " rows (one per time) of " + std::to_string(width) + " numbers");
   };
