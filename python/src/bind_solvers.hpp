@@ -111,6 +111,17 @@ struct SolvedAlong {
   std::optional<transported::AlongSolution<G>> along;
 };
 
+/// P, u, energy and cumulative_action of SolveResult from the api's along (energy and action
+/// None where `with_model` is false).
+template <groups::LieGroup G>
+void add_along_fields(py::dict& d, api::Along&& along, bool with_model) {
+  const py::object none = py::none();
+  d["P"] = rows_to_numpy<groups::AlgebraMatrixOf<G>>(std::move(along.frames));
+  d["u"] = rows_to_numpy<groups::TangentOf<G>>(std::move(along.u));
+  d["energy"] = with_model ? py::object(to_numpy(along.energy)) : none;
+  d["cumulative_action"] = with_model ? py::object(to_numpy(along.cumulative_action)) : none;
+}
+
 /// P, u, energy and cumulative_action of SolveResult (None where `along` is empty, or for the
 /// energy and action where `with_model` is false).
 template <groups::LieGroup G>
@@ -210,29 +221,26 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
   group.def_static("_verify", [a](const py::object& model, const py::object& result, double lambda, double T,
                                   const py::object& g0, const py::object& gT, int order, double tol,
                                   const std::string& status) {
-    const transported::TransportedTrajectory<G> x = trajectory_of<G>(result, a, "verify", "result", true);
+    const api::Samples x = samples_of<G>(result, a, "verify", "result", true);
     const groups::ElementOf<G> first = a.endpoint(g0, "verify", "g0"), last = a.endpoint(gT, "verify", "gT");
     const Status outcome = parse_enum<Status>(status, "cartan.verify");
-    if (x.t.empty() && outcome != Status::Converged) return report_dict(verify::unchecked_failure(outcome));
-    const int steps = std::max<int>(1, static_cast<int>(x.t.size()) - 1);
     // Every model behind the erased Lagrangian, whose verify the library compiles (the same
-    // evaluations, so the same figures as the model's own type would give).
-    const verify::Report report = visit_model<ErasedPythonLagrangian<G>, Models...>(model, [&](const auto& l) {
-      return verify::verify_trajectory(
-          transported::ErasedProblem<G>{mechanics::ErasedLagrangian<G>(l), lambda, T, steps, first, last}, x, order, tol,
-          outcome);
-    });
-    return report_dict(report);
+    // evaluations, so the same figures as the model's own type would give); N from the samples.
+    return report_dict(visit_model<ErasedPythonLagrangian<G>, Models...>(model, [&](const auto& l) {
+      return api::verify<G>({mechanics::ErasedLagrangian<G>(l), lambda, T, 1, first, last}, x, order, tol, outcome,
+                            "cartan.verify");
+    }));
   }, py::arg("lagrangian"), py::arg("result"), py::arg("lam"), py::arg("T"), py::arg("g0"), py::arg("gT"),
      py::arg("order"), py::arg("tol"), py::arg("status"));
   group.def_static("_along", [a](const py::object& model, const py::object& result, double lambda) {
-    const transported::TransportedTrajectory<G> x = trajectory_of<G>(result, a, "along", "result", true);
+    const api::Samples x = samples_of<G>(result, a, "along", "result", true);
+    constexpr const char* where = "cartan.along";
     py::dict d;
-    add_along_fields<G>(d, std::optional<transported::AlongSolution<G>>(
-                               model.is_none() ? transported::along_transport<G>(lambda, x)
-                                               : visit_model<ErasedPythonLagrangian<G>, Models...>(model, [&](const auto& l) {
-                                                   return transported::along_solution<G>(mechanics::ErasedLagrangian<G>(l), lambda, x);
-                                                 })),
+    add_along_fields<G>(d, model.is_none() ? api::along<G>(nullptr, lambda, x, where)
+                                           : visit_model<ErasedPythonLagrangian<G>, Models...>(model, [&](const auto& l) {
+                                               const mechanics::ErasedLagrangian<G> erased(l);
+                                               return api::along<G>(&erased, lambda, x, where);
+                                             }),
                         !model.is_none());
     return d;
   }, py::arg("lagrangian"), py::arg("result"), py::arg("lam"));

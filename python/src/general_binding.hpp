@@ -599,24 +599,24 @@ py::dict along_on(const M& manifold, const GeneralRequest& r, const py::dict& fi
   auto state = std::make_shared<CallbackState>();
   std::optional<PythonManifoldLagrangian<M>> python_object;
   bool python = false;
-  general::GeneralTrajectory<M> x;
+  api::Samples x;
   const Array t = as_array(fields["t"], where, "t");
-  x.t.assign(t.data(), t.data() + t.shape(0));
-  x.q = to_eigen_list<PointOf<M>>(fields["q"], where, "q");
-  x.v = to_eigen_list<ComponentsOf<M>>(fields["v"], where, "v");
-  const general::ErasedProblem<M> problem{
+  x.t = Eigen::Map<const Eigen::VectorXd>(t.data(), t.shape(0));
+  x.points = to_rows<PointOf<M>>(fields["q"], where, "q");
+  x.v = to_rows<ComponentsOf<M>>(fields["v"], where, "v");
+  const api::ManifoldObjectProblem<M> problem{
       manifold, request_lagrangian(manifold, r, state, python_object, python), number_arg<double>(fields["T"], where, "T"),
       number_arg<int>(fields["N"], where, "N"), point_arg(manifold, fields["q0"], where, "q0"),
       point_arg(manifold, fields["qT"], where, "qT"), to_eigen<FrameOf<M>>(fields["frame0"], where, "frame0")};
-  const general::GeneralAlong<M> along = general::along_general(problem, x);  // empty lists below two samples
+  api::Along along = api::along(problem, x, where);  // empty tables below two samples
   const py::object none = py::none();
-  const bool known = !named_only && !along.energy.empty();
+  const bool known = !named_only && along.energy.size() > 0;
   py::dict d;
-  d["frame"] = along.frame.empty() ? none : py::object(to_numpy(along.frame));
-  d["u"] = along.u.empty() ? none : py::object(to_numpy(along.u));
+  d["frame"] = along.frames.rows() == 0 ? none : py::object(rows_to_numpy<FrameOf<M>>(std::move(along.frames)));
+  d["u"] = along.u.rows() == 0 ? none : py::object(rows_to_numpy<VectorOf<M>>(std::move(along.u)));
   d["energy"] = known ? py::object(to_numpy(along.energy)) : none;
-  d["cumulative_action"] = known ? py::object(to_numpy(along.action)) : none;
-  d["action"] = known ? along.action.back() : std::numeric_limits<double>::quiet_NaN();
+  d["cumulative_action"] = known ? py::object(to_numpy(along.cumulative_action)) : none;
+  d["action"] = known ? along.cumulative_action(along.cumulative_action.size() - 1) : std::numeric_limits<double>::quiet_NaN();
   return d;
 }
 
@@ -628,25 +628,24 @@ py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object&
   constexpr const char* where = "cartan.verify_general";
   const auto field = [&](const char* name) { return field_of(result, name, where, "result"); };
   const Status status = parse_enum<Status>(py::cast<std::string>(field("status")), where);
-  if (py::len(field("t")) == 0 && status != Status::Converged) return report_dict(verify::unchecked_failure(status));
-  general::GeneralTrajectory<M> x;
+  api::Samples x;
   try {
-    x = trajectory_of(manifold, result, where, "result");
+    x = samples_of(manifold, result, where, "result");
   } catch (const std::invalid_argument& e) {
     if (status == Status::Converged) throw;
     return report_dict(verify::unchecked_failure(status, e.what()));  // a diverged iterate (verify_general)
   }
-  if (x.t.empty()) throw_invalid(where, "result.t", "(empty)", "needs the samples of a solution");
   auto state = std::make_shared<CallbackState>();
   std::optional<PythonManifoldLagrangian<M>> python_object;
   bool python = false;
-  const general::ErasedProblem<M> problem{
-      manifold, request_lagrangian(manifold, r, state, python_object, python), number_arg<double>(field("T"), where, "T"),
-      static_cast<int>(std::max<std::size_t>(x.t.size(), 2) - 1), point_arg(manifold, field("q0"), where, "q0"),
-      point_arg(manifold, field("qT"), where, "qT"), x.frame.front()};
+  // N and the frame at q0 from the samples (api::verify)
+  const api::ManifoldObjectProblem<M> problem{manifold, request_lagrangian(manifold, r, state, python_object, python),
+                                              number_arg<double>(field("T"), where, "T"), 1,
+                                              point_arg(manifold, field("q0"), where, "q0"),
+                                              point_arg(manifold, field("qT"), where, "qT"), std::nullopt};
   const int order = py::cast<int>(field("order"));
   const double tol = number_arg<double>(field("tol"), where, "tol");
-  const auto run = [&] { return general::verify_general(problem, x, order, tol, status); };
+  const auto run = [&] { return api::verify(problem, x, order, tol, status, where); };
   if (python || chart != nullptr) {
     return report_dict(
         run_on_chart(chart, [&] { return run_with_callbacks(python_object ? python_object->state() : *state, run); }));

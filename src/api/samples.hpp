@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cartan/api/solve.hpp"
+#include "cartan/kernels/lie_group/solution.hpp"
 #include "cartan/kernels/lie_group/trajectory.hpp"
 #include "cartan/kernels/manifold/solution.hpp"
 
@@ -38,8 +39,12 @@ Value value_of_row(const Eigen::MatrixXd& rows, Eigen::Index k) {
 }
 
 /// Throws "<where>: samples.<name> = (r x c numbers) must have <rows> rows (one per time) of <width>
-/// numbers" unless each table of x has one row per time: points of `point_size` numbers, v and mu
-/// of n, the auxiliary of `aux_width`, and (where `frame_size` > 0) frames of `frame_size`.
+/// numbers" unless `table` has one row per time of x and `width` columns, or (where `optional`)
+/// no rows.
+void check_table(const Samples& x, const Eigen::MatrixXd& table, const char* name, Eigen::Index width, std::string_view where,
+                 bool optional = false);
+/// check_table of each table of x: points of `point_size` numbers, v and mu of n, the auxiliary of
+/// `aux_width`, and (where `frame_size` > 0) frames of `frame_size`.
 void check_samples(const Samples& x, Eigen::Index point_size, Eigen::Index n, Eigen::Index aux_width, std::string_view where,
                    Eigen::Index frame_size = 0);
 
@@ -56,31 +61,39 @@ Samples samples_of(const general::GeneralTrajectory<M>& x) {
   return {Eigen::Map<const Eigen::VectorXd>(x.t.data(), static_cast<Eigen::Index>(x.t.size())), rows(x.q), rows(x.frame),
           rows(x.v), rows(x.mu), rows(x.Xi)};
 }
+/// Each row of `table` as a Value, where it has one row per time (else none: an optional table).
+template <class Value>
+std::vector<Value> values_of(const Eigen::MatrixXd& table, Eigen::Index times) {
+  std::vector<Value> out;
+  if (table.rows() != times) return out;
+  out.reserve(static_cast<std::size_t>(times));
+  for (Eigen::Index k = 0; k < times; ++k) out.push_back(value_of_row<Value>(table, k));
+  return out;
+}
 template <groups::LieGroup G>
 transported::TransportedTrajectory<G> lie_trajectory(const Samples& x) {
-  transported::TransportedTrajectory<G> out;
-  out.t.assign(x.t.data(), x.t.data() + x.t.size());
-  for (Eigen::Index k = 0; k < x.t.size(); ++k) {
-    out.g.push_back(value_of_row<groups::ElementOf<G>>(x.points, k));
-    out.v.push_back(value_of_row<groups::TangentOf<G>>(x.v, k));
-    out.mu.push_back(value_of_row<groups::CovectorOf<G>>(x.mu, k));
-    out.xi.push_back(value_of_row<groups::CovectorOf<G>>(x.aux, k));
-  }
-  return out;
+  const Eigen::Index m = x.t.size();
+  return {{x.t.data(), x.t.data() + m}, values_of<groups::ElementOf<G>>(x.points, m), values_of<groups::TangentOf<G>>(x.v, m),
+          values_of<groups::CovectorOf<G>>(x.mu, m), values_of<groups::CovectorOf<G>>(x.aux, m)};
 }
 template <manifolds::ManifoldWithConnection M>
 general::GeneralTrajectory<M> general_trajectory(const Samples& x) {
-  general::GeneralTrajectory<M> out;
-  out.t.assign(x.t.data(), x.t.data() + x.t.size());
-  const bool frames = x.frames.rows() == x.t.size() && x.t.size() > 0;
-  for (Eigen::Index k = 0; k < x.t.size(); ++k) {
-    out.q.push_back(value_of_row<manifolds::PointOf<M>>(x.points, k));
-    if (frames) out.frame.push_back(value_of_row<manifolds::FrameOf<M>>(x.frames, k));
-    out.v.push_back(value_of_row<manifolds::ComponentsOf<M>>(x.v, k));
-    out.mu.push_back(value_of_row<manifolds::ComponentsOf<M>>(x.mu, k));
-    out.Xi.push_back(value_of_row<manifolds::ComponentMatrixOf<M>>(x.aux, k));
-  }
-  return out;
+  const Eigen::Index m = x.t.size();
+  return {{x.t.data(), x.t.data() + m}, values_of<manifolds::PointOf<M>>(x.points, m), values_of<manifolds::FrameOf<M>>(x.frames, m),
+          values_of<manifolds::ComponentsOf<M>>(x.v, m), values_of<manifolds::ComponentsOf<M>>(x.mu, m),
+          values_of<manifolds::ComponentMatrixOf<M>>(x.aux, m)};
+}
+
+/// What a kernel computes along a solution (along.hpp) as rows of numbers.
+template <groups::LieGroup G>
+Along along_of(const transported::AlongSolution<G>& a) {
+  return {rows(a.P), rows(a.u), Eigen::Map<const Eigen::VectorXd>(a.energy.data(), static_cast<Eigen::Index>(a.energy.size())),
+          Eigen::Map<const Eigen::VectorXd>(a.action.data(), static_cast<Eigen::Index>(a.action.size()))};
+}
+template <manifolds::ManifoldWithConnection M>
+Along along_of(const general::GeneralAlong<M>& a) {
+  return {rows(a.frame), rows(a.u), Eigen::Map<const Eigen::VectorXd>(a.energy.data(), static_cast<Eigen::Index>(a.energy.size())),
+          Eigen::Map<const Eigen::VectorXd>(a.action.data(), static_cast<Eigen::Index>(a.action.size()))};
 }
 
 }  // namespace cartan::api::detail

@@ -1,4 +1,6 @@
-// api::verify: the checks of verify/ on samples in numbers, for the problem's kernel (solve.hpp).
+// api::verify of a problem by names and numbers (solve.hpp): the problem as objects, then the
+// objects' door (erased.hpp, objects.cpp), for the problem's kernel.
+#include "cartan/api/erased.hpp"
 #include "problems.hpp"
 
 #include "cartan/errors.hpp"
@@ -29,20 +31,19 @@ verify::Report verify(const GroupProblem& problem, const Samples& samples, int o
     if (lie_kernel(problem)) {
       // Behind the erased Lagrangian, whose verify the library compiles: the model's own members
       // evaluated, so the figures of the typed verify (tests/kernels/lie_group/test_erased.cpp).
-      const transported::ErasedProblem<G> erased{mechanics::ErasedLagrangian<G>(models::make_lagrangian<Entry>(checked.inertia, where)),
-                                                 problem.lambda, problem.T, problem.N, g0, gT};
-      return verify::verify_trajectory(erased, detail::lie_trajectory<G>(samples), order, tol, status);
+      const GroupObjectProblem<G> erased{mechanics::ErasedLagrangian<G>(models::make_lagrangian<Entry>(checked.inertia, where)),
+                                         problem.lambda, problem.T, problem.N, g0, gT};
+      return api::verify<G>(erased, samples, order, tol, status, where);
     }
-    return general::verify_general(detail::connection_problem<Entry>(problem, checked, g0, gT, where),
-                                   detail::general_trajectory<manifolds::GroupManifold<G>>(samples), order, tol, status);
+    return api::verify<manifolds::GroupManifold<G>>(detail::connection_problem<Entry>(problem, checked, g0, gT, where), samples,
+                                                    order, tol, status, where);
   });
 }
 
 verify::Report verify(const ManifoldProblem& problem, const Samples& samples, int order, double tol, Status status,
                       std::string_view where) {
   return detail::visit_manifold(problem, {}, where, [&]<class M>(const general::ErasedProblem<M>& posed) {
-    detail::check_samples(samples, manifolds::PointOf<M>::SizeAtCompileTime, M::kDim, M::kDim * M::kDim, where);
-    return general::verify_general(posed, detail::general_trajectory<M>(samples), order, tol, status);
+    return api::verify<M>(posed, samples, order, tol, status, where);
   });
 }
 

@@ -90,6 +90,15 @@ struct Samples {
   Eigen::MatrixXd aux;
 };
 
+/// What a solution carries along its samples (kernels/lie_group/along.hpp, kernels/manifold/along.hpp),
+/// one row per time: the frames (on a group the transport P_k, n x n; on a manifold the frame,
+/// d x m; row-major), the body velocity u, and for a Lagrangian the energy E_k and the cumulative
+/// discrete action (0 at the first sample; its last entry is the action).
+struct Along {
+  Eigen::MatrixXd frames, u;
+  Eigen::VectorXd energy, cumulative_action;
+};
+
 /// What every solve returns, whichever kernel ran: the kernels' ResultCore (principle/result.hpp;
 /// its action is the Lie-group kernel's discrete action S_h, or where the general kernel ran the
 /// action along the samples, kernels/manifold/along.hpp, as Python's result has it; NaN for a
