@@ -367,7 +367,7 @@ void validate_manifold_problem(ProblemSpec& spec) {
   connection_options(spec, m);
   if (spec.q0.empty() && space.kind != api::SpaceKind::Group) bad("q0", "(missing)", "is required for " + kind);
   if (spec.qT.empty()) bad("qT", "(missing)", "is required for " + kind);
-  const api::ManifoldProblem on = api::on_manifold(manifold_problem(spec), {spec.v0, spec.xi0}, kWhere);
+  const api::ManifoldProblem on = api::on_manifold(manifold_problem(spec), guess_of(spec), kWhere);
   spec.q0 = on.q0;
   spec.qT = on.qT;
   spec.mass = on.mass;
@@ -430,7 +430,7 @@ void validate(ProblemSpec& spec) {
   }
   // The inertia, the connection's data, g0, gT and the guesses' sizes: the library's checks; that g0
   // and gT are elements of the group is checked by solve, so that a sweep reports it as that point's row.
-  api::check(group_problem(spec), {spec.v0, spec.xi0}, kWhere);
+  api::check(group_problem(spec), guess_of(spec), kWhere);
 }
 
 api::GroupProblem group_problem(const ProblemSpec& spec) {
@@ -447,6 +447,13 @@ api::GroupProblem group_problem(const ProblemSpec& spec) {
   p.g0 = spec.g0;
   p.gT = final_element(spec);
   return p;
+}
+
+api::Guess guess_of(const ProblemSpec& spec) {
+  api::Guess guess;
+  guess.v0 = spec.v0;
+  guess.xi0 = spec.xi0;
+  return guess;
 }
 
 api::ManifoldProblem manifold_problem(const ProblemSpec& spec) {

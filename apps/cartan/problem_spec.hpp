@@ -124,6 +124,8 @@ void check_connection(ProblemSpec& spec, std::size_t n);
 /// (cartan/api/solve.hpp): what validate checks through api::check and solve solves.
 api::GroupProblem group_problem(const ProblemSpec& spec);
 api::ManifoldProblem manifold_problem(const ProblemSpec& spec);
+/// The spec's guesses of v(0) and xi(0).
+api::Guess guess_of(const ProblemSpec& spec);
 
 /// The final element of a validated spec as its numbers (so3: row-major): gT, or for so3 with
 /// a0/aT the minimal rotation taking a0 to aT.

@@ -35,7 +35,7 @@ SO3Endpoints so3_endpoints(const ProblemSpec& spec) {
 nlohmann::json solve(const ProblemSpec& spec, const SolveMonitor& monitor) {
   cartan::SolveOptions options = solve_options(spec);
   options.monitor = monitor;
-  const api::Guess guess{spec.v0, spec.xi0};
+  const api::Guess guess = guess_of(spec);
   return result_json(spec, is_manifold_problem(spec) ? api::solve(manifold_problem(spec), options, guess, kSolveCommandWhere)
                                                      : api::solve(group_problem(spec), options, guess, kSolveCommandWhere));
 }

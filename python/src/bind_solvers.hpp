@@ -1,17 +1,17 @@
 #pragma once
-// `<Group>._solve(...)`: the library's solve (include/cartan/methods/lie_group/solve.hpp) for the
-// listed built-in models and any Lagrangian written in Python (behind the erased Lagrangian, whose
-// solve and verify the library compiles: kernels/lie_group/compiled.hpp), with the CLI's method names and
-// options (SolveOptions). Nothing is decided here: the options are translated, the library runs,
-// and its result becomes a dict of SolveResult's fields (python/cartan/__init__.py).
+// `<Group>._solve(...)`: the library's solve through the api's door for problems given as objects
+// (api/erased.hpp) for the listed built-in models (each its own compiled solve) and any Lagrangian
+// written in Python (behind the erased Lagrangian), with the CLI's method names and options
+// (SolveOptions). Nothing is decided here: the options are translated, the library runs, and its
+// result becomes a dict of SolveResult's fields (python/cartan/__init__.py).
 //
 // Ctrl-C: the monitor's stop request takes the GIL and runs PyErr_CheckSignals, so a long solve
 // of a built-in model (which runs without the GIL) raises KeyboardInterrupt within one iteration.
 // A `progress` callable receives (stage, iteration, residual) once per iteration.
-// `<Group>._verify(...)`: the library's checks and verdict (include/cartan/kernels/lie_group/verify.hpp) on a
-// result of any model, as a dict of VerifyReport's fields. `<Group>._along(...)`: the transport
-// P_k, body velocity u_k, energy and cumulative action along a result (kernels/lie_group/along.hpp), for
-// a loaded file; `_solve` returns them with the solution.
+// `<Group>._verify(...)`: the library's checks and verdict (api::verify) on a result of any model,
+// as a dict of VerifyReport's fields. `<Group>._along(...)`: the transport P_k, body velocity u_k,
+// energy and cumulative action along a result (api::along), for a loaded file; `_solve` returns
+// them with the solution.
 
 #include <optional>
 #include <string>
@@ -22,7 +22,6 @@
 #include "bind_models.hpp"
 #include "report_dict.hpp"
 #include "cartan/api/erased.hpp"
-#include "cartan/kernels/lie_group/compiled.hpp"
 
 namespace cartan::python {
 
@@ -86,56 +85,21 @@ api::Samples samples_of(const py::object& source, const Args<G>& a, const std::s
   return x;
 }
 
-/// The same samples as the kernel's trajectory (what the solve, verify and along calls below
-/// still take until they go through the api, docs/design/one-door-bindings.md).
+/// P, u, energy and cumulative_action of SolveResult from the api's along (None where there is
+/// none, or for the energy and action where `with_model` is false).
 template <groups::LieGroup G>
-transported::TransportedTrajectory<G> trajectory_of(const py::object& source, const Args<G>& a, const std::string& where,
-                                                    const char* argument, bool with_mu) {
-  const api::Samples x = samples_of<G>(source, a, where, argument, with_mu);
-  transported::TransportedTrajectory<G> tr;
-  tr.t.assign(x.t.data(), x.t.data() + x.t.size());
-  tr.g = values_of_rows<groups::ElementOf<G>>(x.points);
-  tr.v = values_of_rows<groups::TangentOf<G>>(x.v);
-  tr.mu = values_of_rows<groups::CovectorOf<G>>(x.mu);
-  tr.xi = values_of_rows<groups::CovectorOf<G>>(x.aux);
-  return tr;
-}
-
-
-/// A solve's result and what SolveResult carries along it (along.hpp), computed where the model is
-/// at hand, without a round trip through NumPy. A result stopped on request has none of it (its
-/// samples only: the derived quantities would cost what the stop was there to save).
-template <groups::LieGroup G>
-struct SolvedAlong {
-  transported::TransportedSolution<G> solution;
-  std::optional<transported::AlongSolution<G>> along;
-};
-
-/// P, u, energy and cumulative_action of SolveResult from the api's along (energy and action
-/// None where `with_model` is false).
-template <groups::LieGroup G>
-void add_along_fields(py::dict& d, api::Along&& along, bool with_model) {
+void add_along_fields(py::dict& d, std::optional<api::Along>&& along, bool with_model) {
   const py::object none = py::none();
-  d["P"] = rows_to_numpy<groups::AlgebraMatrixOf<G>>(std::move(along.frames));
-  d["u"] = rows_to_numpy<groups::TangentOf<G>>(std::move(along.u));
-  d["energy"] = with_model ? py::object(to_numpy(along.energy)) : none;
-  d["cumulative_action"] = with_model ? py::object(to_numpy(along.cumulative_action)) : none;
+  d["P"] = along ? py::object(rows_to_numpy<groups::AlgebraMatrixOf<G>>(std::move(along->frames))) : none;
+  d["u"] = along ? py::object(rows_to_numpy<groups::TangentOf<G>>(std::move(along->u))) : none;
+  d["energy"] = along && with_model ? py::object(to_numpy(along->energy)) : none;
+  d["cumulative_action"] = along && with_model ? py::object(to_numpy(along->cumulative_action)) : none;
 }
 
-/// P, u, energy and cumulative_action of SolveResult (None where `along` is empty, or for the
-/// energy and action where `with_model` is false).
+/// The solution as a dict of the fields of SolveResult (python/cartan/__init__.py); its samples
+/// move into the arrays.
 template <groups::LieGroup G>
-void add_along_fields(py::dict& d, std::optional<transported::AlongSolution<G>>&& along, bool with_model) {
-  const py::object none = py::none();
-  d["P"] = along ? py::object(to_numpy(std::move(along->P))) : none;
-  d["u"] = along ? py::object(to_numpy(std::move(along->u))) : none;
-  d["energy"] = along && with_model ? py::object(to_numpy(std::move(along->energy))) : none;
-  d["cumulative_action"] = along && with_model ? py::object(to_numpy(std::move(along->action))) : none;
-}
-
-/// The solution as a dict of the fields of SolveResult (python/cartan/__init__.py).
-template <groups::LieGroup G>
-py::dict solution_dict(transported::TransportedSolution<G>&& s, const std::string& group, double lambda, double T, int N,
+py::dict solution_dict(api::Result&& s, const std::string& group, double lambda, double T, int N,
                        const groups::ElementOf<G>& g0, const groups::ElementOf<G>& gT, double tol) {
   py::dict d;
   add_core_fields(d, s);
@@ -146,18 +110,19 @@ py::dict solution_dict(transported::TransportedSolution<G>&& s, const std::strin
   d["g0"] = to_numpy(g0);
   d["gT"] = to_numpy(gT);
   d["tol"] = tol;
-  auto& tr = s.trajectory;  // moved into the arrays
-  d["t"] = to_numpy(std::move(tr.t));
-  d["g"] = to_numpy(std::move(tr.g));
-  d["v"] = to_numpy(std::move(tr.v));
-  d["mu"] = to_numpy(std::move(tr.mu));
-  d["xi"] = to_numpy(std::move(tr.xi));
+  api::Samples& x = s.samples;
+  d["t"] = to_numpy(x.t);
+  d["g"] = rows_to_numpy<groups::ElementOf<G>>(std::move(x.points));
+  d["v"] = rows_to_numpy<groups::TangentOf<G>>(std::move(x.v));
+  d["mu"] = rows_to_numpy<groups::CovectorOf<G>>(std::move(x.mu));
+  d["xi"] = rows_to_numpy<groups::CovectorOf<G>>(std::move(x.aux));
   d["v0"] = to_numpy(s.v0);
-  d["xi0"] = to_numpy(s.xi0);
+  d["xi0"] = to_numpy(s.aux0);
   d["action"] = s.action;
   d["outer_iterations"] = s.outer_iterations;
   d["inner_iterations"] = s.inner_iterations;
   d["group_defect"] = s.collocation ? py::object(py::float_(s.collocation->group_defect)) : py::object(py::none());
+  add_along_fields<G>(d, std::move(s.along), true);
   return d;
 }
 
@@ -165,7 +130,7 @@ py::dict solution_dict(transported::TransportedSolution<G>&& s, const std::strin
 template <groups::LieGroup G>
 struct SolveCall {
   cartan::SolveOptions options;
-  transported::SolveGuess<G> guess;
+  api::Guess guess;
   groups::ElementOf<G> g0, gT;
 
   SolveCall(const Args<G>& a, const py::object& g0_, const py::object& gT_, const SolveRequest& request,
@@ -174,9 +139,9 @@ struct SolveCall {
         g0(g0_.is_none() ? G::identity() : a.endpoint(g0_, "solve", "g0")),
         gT(a.endpoint(gT_, "solve", "gT")) {
     options.monitor = python_monitor(progress);
-    if (!v0.is_none()) guess.v0 = a.tangent(v0, "solve", "v0");
-    if (!xi0.is_none()) guess.xi0 = a.tangent(xi0, "solve", "xi0");
-    if (!start.is_none()) guess.trajectory = trajectory_of<G>(start, a, "solve", "guess", false);
+    if (!v0.is_none()) guess.v0 = numbers_of(a.tangent(v0, "solve", "v0"));
+    if (!xi0.is_none()) guess.xi0 = numbers_of(a.tangent(xi0, "solve", "xi0"));
+    if (!start.is_none()) guess.trajectory = samples_of<G>(start, a, "solve", "guess", false);
   }
 };
 
@@ -204,18 +169,12 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
        py::arg("request"), py::arg("v0"), py::arg("xi0"), py::arg("guess"), py::arg("progress"));
   };
   def_entry("_solve", [](const auto& problem, const SolveCall<G>& call) {
-    SolvedAlong<G> out{transported::solve(problem, call.options, call.guess), std::nullopt};
-    if (!stopped_on_request(out.solution.status)) {
-      out.along = transported::along_solution<G>(mechanics::ErasedLagrangian<G>(problem.lagrangian), problem.lambda, out.solution.trajectory);
-    }
-    return out;
-  }, [a](SolvedAlong<G>&& s, const SolveCall<G>& call, double lambda, double T, int N) {
-    py::dict d = solution_dict(std::move(s.solution), a.group, lambda, T, N, call.g0, call.gT, call.options.tol);
-    add_along_fields<G>(d, std::move(s.along), true);
-    return d;
+    return api::solve(problem, call.options, call.guess, {.along = true}, "cartan.solve");
+  }, [a](api::Result&& s, const SolveCall<G>& call, double lambda, double T, int N) {
+    return solution_dict<G>(std::move(s), a.group, lambda, T, N, call.g0, call.gT, call.options.tol);
   });
   def_entry("_validate", [](const auto& problem, const SolveCall<G>& call) {
-    transported::validate(problem, call.options, call.guess);
+    api::validate(problem, call.options, call.guess, "cartan.solve");
     return true;  // visit_model returns a value
   }, [](bool, const SolveCall<G>&, double, double, int) { return py::none(); });
   group.def_static("_verify", [a](const py::object& model, const py::object& result, double lambda, double T,

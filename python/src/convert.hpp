@@ -154,6 +154,14 @@ std::vector<T> values_of_rows(const Eigen::MatrixXd& x) {
   return out;
 }
 
+/// An Eigen object's numbers in its storage order (a vector's in order; a matrix's column-major:
+/// its transpose's are the matrix's row-major).
+template <class Derived>
+std::vector<double> numbers_of(const Eigen::DenseBase<Derived>& x) {
+  const typename Derived::PlainObject plain = x;
+  return {plain.data(), plain.data() + plain.size()};
+}
+
 /// One Eigen object as a NumPy array ((rows,) for vectors, (rows, cols) otherwise).
 template <class Derived>
 py::array_t<double> to_numpy(const Eigen::DenseBase<Derived>& x) {

@@ -2,8 +2,9 @@
 // The general solve of the Python module (bind_general.cpp) on each manifold type: solve_on and
 // verify_on with their Lagrangians and arguments, and the manifold classes' holders, argument
 // helpers and geometry methods (bind_manifolds.cpp, bind_group_manifold.cpp). Every Lagrangian
-// goes behind the erased type, whose solve and verify the library compiles once per manifold
-// (cartan/kernels/manifold/compiled.hpp): this unit only converts the arguments and the result.
+// goes behind the erased type, whose solve, verify and along the library compiles once per manifold
+// behind the api's door for problems given as objects (api/erased.hpp): this unit only converts
+// the arguments and the result.
 
 #include <array>
 #include <limits>
@@ -18,7 +19,7 @@
 #include "bind_group.hpp"
 #include "bindings.hpp"
 #include "cartan/api/erased.hpp"
-#include "cartan/kernels/manifold/compiled.hpp"
+#include "cartan/mechanics/manifold_compiled.hpp"
 #include "python_models.hpp"
 #include "report_dict.hpp"
 
@@ -469,32 +470,6 @@ api::Samples samples_of(const M& manifold, const py::object& object, const char*
   return x;
 }
 
-/// The same samples as the kernel's trajectory (what the solve, verify and along calls below
-/// still take until they go through the api, docs/design/one-door-bindings.md).
-template <class M>
-general::GeneralTrajectory<M> trajectory_of(const M& manifold, const py::object& object, const char* where, const char* what) {
-  const api::Samples s = samples_of(manifold, object, where, what);
-  general::GeneralTrajectory<M> x;
-  x.t.assign(s.t.data(), s.t.data() + s.t.size());
-  x.q = values_of_rows<PointOf<M>>(s.points);
-  x.frame = values_of_rows<FrameOf<M>>(s.frames);
-  x.v = values_of_rows<ComponentsOf<M>>(s.v);
-  x.mu = values_of_rows<ComponentsOf<M>>(s.mu);
-  x.Xi = values_of_rows<ComponentMatrixOf<M>>(s.aux);
-  return x;
-}
-
-/// u, energy, cumulative_action and action of a manifold's result (None, and action NaN, without
-/// `along`: a result stopped on request, or one of fewer than two samples).
-template <class M>
-void add_general_along_fields(py::dict& d, std::optional<general::GeneralAlong<M>>&& along) {
-  const py::object none = py::none();
-  d["action"] = along ? along->action.back() : std::numeric_limits<double>::quiet_NaN();
-  d["u"] = along ? py::object(to_numpy(std::move(along->u))) : none;
-  d["energy"] = along ? py::object(to_numpy(std::move(along->energy))) : none;
-  d["cumulative_action"] = along ? py::object(to_numpy(std::move(along->action))) : none;
-}
-
 /// A request on M as solve_on poses it: the problem (the request's Lagrangian, the points checked
 /// on M, frame0), the options and the guess. Not movable: the erased Lagrangian may refer to the
 /// Python object held here.
@@ -503,9 +478,9 @@ struct PosedRequest {
   std::shared_ptr<CallbackState> state = std::make_shared<CallbackState>();
   std::optional<PythonManifoldLagrangian<M>> python_object;
   bool python = false;
-  general::ErasedProblem<M> problem;
+  api::ManifoldObjectProblem<M> problem;
   cartan::SolveOptions options;
-  general::GeneralGuess<M> guess;
+  api::Guess guess;
 
   PosedRequest(const M& manifold, const GeneralRequest& r)
       : problem{manifold, request_lagrangian(manifold, r, state, python_object, python), r.T, r.N,
@@ -513,9 +488,11 @@ struct PosedRequest {
         options(solve_options(r, kWhere)) {
     // without frame0 the problem's validation refuses the fallback frame where the Lagrangian depends on it
     if (!r.frame0.is_none()) problem.frame0 = to_eigen<FrameOf<M>>(r.frame0, kWhere, "frame0");
-    if (!r.v0.is_none()) guess.v0 = finite_arg<ComponentsOf<M>>(r.v0, kWhere, "v0");
-    if (!r.Xi0.is_none()) guess.Xi0 = finite_arg<ComponentMatrixOf<M>>(r.Xi0, kWhere, "Xi0");
-    if (!r.guess.is_none()) guess.trajectory = trajectory_of(manifold, r.guess, kWhere, "guess");
+    if (!r.v0.is_none()) guess.v0 = numbers_of(finite_arg<ComponentsOf<M>>(r.v0, kWhere, "v0"));
+    if (!r.Xi0.is_none()) {  // row-major, as api::Guess takes it
+      guess.Xi0 = numbers_of(finite_arg<ComponentMatrixOf<M>>(r.Xi0, kWhere, "Xi0").transpose());
+    }
+    if (!r.guess.is_none()) guess.trajectory = samples_of(manifold, r.guess, kWhere, "guess");
   }
   PosedRequest(const PosedRequest&) = delete;
   PosedRequest& operator=(const PosedRequest&) = delete;
@@ -526,44 +503,27 @@ struct PosedRequest {
 template <class M>
 void validate_on(const M& manifold, const GeneralRequest& r) {
   const PosedRequest<M> posed(manifold, r);
-  posed.problem.validate();
-  posed.options.validate();
+  api::validate(posed.problem, posed.options, posed.guess, kWhere);
 }
 
 template <class M>
 py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* chart) {
   PosedRequest<M> posed(manifold, r);
-  const general::ErasedProblem<M>& problem = posed.problem;
+  const api::ManifoldObjectProblem<M>& problem = posed.problem;
   cartan::SolveOptions& options = posed.options;
   options.monitor = python_monitor(r.progress).stage("general shooting");  // copied here, with the GIL
-  const general::GeneralGuess<M>& guess = posed.guess;
-  std::optional<PythonManifoldLagrangian<M>>& python_object = posed.python_object;
-  const bool python = posed.python;
-  const std::shared_ptr<CallbackState>& state = posed.state;
-
-  // The solve, then what the result carries along it (kernels/manifold/along.hpp) where the problem is at
-  // hand; a result stopped on request has its samples only (as a group model's SolveResult).
-  struct Solved {
-    general::GeneralSolution<M> solution;
-    std::optional<general::GeneralAlong<M>> along;
-  };
-  const auto run = [&] {
-    Solved out{general::solve(problem, options, guess), std::nullopt};
-    if (!stopped_on_request(out.solution.status) && out.solution.trajectory.t.size() >= 2) {
-      out.along = general::along_general(problem, out.solution.trajectory);
-    }
-    return out;
-  };
-  const CallbackState& callbacks = python_object ? python_object->state() : *state;
-  std::optional<Solved> solved;
-  if (python || chart != nullptr) {
+  // The solve, with what the result carries along it (api::solve, SolveOutputs::along): a result
+  // stopped on request has its samples only (as a group model's SolveResult).
+  const auto run = [&] { return api::solve(problem, options, posed.guess, {.along = true}, kWhere); };
+  const CallbackState& callbacks = posed.python_object ? posed.python_object->state() : *posed.state;
+  std::optional<api::Result> solved;
+  if (posed.python || chart != nullptr) {
     solved.emplace(run_on_chart(chart, [&] { return run_with_callbacks(callbacks, run); }));
   } else {
     py::gil_scoped_release release;
     solved.emplace(run());
   }
-  general::GeneralSolution<M>& s = solved->solution;  // its trajectory moves into the arrays
-  std::optional<general::GeneralAlong<M>>& along = solved->along;
+  api::Result& s = *solved;  // its samples move into the arrays
   if (chart != nullptr && !chart->outside.empty() && !s.converged()) {
     s.message += " (" + chart->outside + ", treated as outside the chart)";
   }
@@ -575,21 +535,27 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   d["q0"] = to_numpy(problem.q0);
   d["qT"] = to_numpy(problem.qT);
   d["tol"] = options.tol;
-  auto& tr = s.trajectory;
-  d["t"] = to_numpy(std::move(tr.t));
-  d["q"] = to_numpy(std::move(tr.q));
-  d["frame"] = to_numpy(std::move(tr.frame));
-  d["v"] = to_numpy(std::move(tr.v));
-  d["mu"] = to_numpy(std::move(tr.mu));
-  d["Xi"] = to_numpy(std::move(tr.Xi));
+  api::Samples& x = s.samples;
+  d["t"] = to_numpy(x.t);
+  d["q"] = rows_to_numpy<PointOf<M>>(std::move(x.points));
+  d["frame"] = rows_to_numpy<FrameOf<M>>(std::move(x.frames));
+  d["v"] = rows_to_numpy<ComponentsOf<M>>(std::move(x.v));
+  d["mu"] = rows_to_numpy<ComponentsOf<M>>(std::move(x.mu));
+  d["Xi"] = rows_to_numpy<ComponentMatrixOf<M>>(std::move(x.aux));
   d["v0"] = to_numpy(s.v0);
-  d["Xi0"] = to_numpy(s.Xi0);
+  d["Xi0"] = to_numpy(value_of_row<ComponentMatrixOf<M>>(Eigen::MatrixXd(s.aux0.transpose()), 0));
   d["iterations"] = s.inner_iterations;
-  add_general_along_fields(d, std::move(along));
+  // u, energy, cumulative_action (None without along: stopped on request, or fewer than two samples)
+  const py::object none = py::none();
+  std::optional<api::Along>& along = s.along;
+  d["action"] = s.action;
+  d["u"] = along ? py::object(rows_to_numpy<VectorOf<M>>(std::move(along->u))) : none;
+  d["energy"] = along ? py::object(to_numpy(along->energy)) : none;
+  d["cumulative_action"] = along ? py::object(to_numpy(along->cumulative_action)) : none;
   return d;
 }
 
-/// What a result file does not hold and the library computes along the samples (kernels/manifold/along.hpp:
+/// What a result file does not hold and the library computes along the samples (api::along:
 /// frame, u, energy, cumulative_action, action) of the fields of a loaded manifold result (t, q, v,
 /// T, q0, qT, frame0 as rows) for the request's Lagrangian; with `named_only` (a Lagrangian defined
 /// in Python, which the file only names) the frame and u, energy and the action None and NaN.
@@ -620,7 +586,7 @@ py::dict along_on(const M& manifold, const GeneralRequest& r, const py::dict& fi
   return d;
 }
 
-/// The library's general verifier (kernels/manifold/verify.hpp) on `result` (any object with T, q0, qT,
+/// The library's general verifier (api::verify) on `result` (any object with T, q0, qT,
 /// tol, order, status, t, q, frame, v, mu, Xi, e.g. a cartan.Result) for the Lagrangian of
 /// the request (as solve_general takes it).
 template <class M>

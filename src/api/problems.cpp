@@ -96,6 +96,13 @@ void check_guess(const Guess& guess, int n, std::string_view group, bool lie_ker
   const auto size = static_cast<std::size_t>(n);
   const std::string of_group = std::to_string(n) + " for group " + std::string(group);
   if (!guess.v0.empty()) require_numbers(where, "v0", guess.v0, size, "a guess of v(0), " + of_group);
+  if (!guess.Xi0.empty()) {
+    if (lie_kernel) {
+      throw_invalid(where, "Xi0", excerpt(guess.Xi0),
+                    "is a guess of the general solver's Xi, not of the Lie-group kernel's xi (a Cartan-Schouten connection)");
+    }
+    require_numbers(where, "Xi0", guess.Xi0, size * size, "a guess of Xi(0), row-major");
+  }
   if (guess.xi0.empty()) return;
   if (!lie_kernel) {
     throw_invalid(where, "xi0", excerpt(guess.xi0),
@@ -241,6 +248,7 @@ general::ErasedProblem<M> manifold_problem(const ManifoldProblem& p, const Guess
     frame0 = Eigen::Map<const Eigen::Matrix<double, m, d, m == 1 ? Eigen::ColMajor : Eigen::RowMajor>>(p.frame0.data()).transpose();
   }  // without it, validate_for refuses the fallback frame where A is not a multiple of I
   if (!guess.v0.empty()) require_numbers(where, "v0", guess.v0, m, "a guess of v(0) in the frame at q0");
+  if (!guess.Xi0.empty()) require_numbers(where, "Xi0", guess.Xi0, m * m, "a guess of Xi(0), row-major");
   if (!guess.xi0.empty()) {
     throw_invalid(where, "xi0", excerpt(guess.xi0),
                   "is a guess of a group model's xi (a problem on a group), not of a manifold problem's (give v0)");

@@ -1,5 +1,5 @@
-// The general solve and verify on R^2 with constant Christoffel symbols for the erased Lagrangian, compiled once
-// (compiled.hpp).
+// The general solve and verify on R^2 with constant Christoffel symbols for the erased Lagrangian, and the
+// check of a Lagrangian and the erased particle, compiled once (compiled.hpp, mechanics/manifold_compiled.hpp).
 #include "cartan/kernels/manifold/along.hpp"
 #include "cartan/kernels/manifold/verify.hpp"
 #include "cartan/mechanics/manifold_check_lagrangian.hpp"
@@ -8,3 +8,4 @@
 #include "cartan/methods/solve.hpp"
 
 CARTAN_GENERAL_COMPILED(template, ::cartan::manifolds::Euclidean<2>)
+CARTAN_MECHANICS_MANIFOLD_COMPILED(template, ::cartan::manifolds::Euclidean<2>)

@@ -206,9 +206,15 @@ TEST(Api, BadInputIsRefusedByName) {
   expect_invalid([&] { (void)solve(with([](GroupProblem& p) { p.metric = {1, 1, 1}; })); }, {"metric", "levi-civita only"});
   expect_invalid([&] { (void)solve(with([](GroupProblem& p) { p.connection = ConnectionKind::Coefficients; })); },
                  {"alpha", "must have 27"});
-  expect_invalid([&] { (void)solve(with([](GroupProblem& p) { p.connection = ConnectionKind::LeviCivita; }), {}, {{}, {0, 0, 1}}); },
+  const auto guess = [](std::vector<double> v0, std::vector<double> xi0) {
+    Guess g;
+    g.v0 = std::move(v0);
+    g.xi0 = std::move(xi0);
+    return g;
+  };
+  expect_invalid([&] { (void)solve(with([](GroupProblem& p) { p.connection = ConnectionKind::LeviCivita; }), {}, guess({}, {0, 0, 1})); },
                  {"xi0", "Lie-group kernel"});
-  expect_invalid([&] { (void)solve(good, {}, {{1, 2}, {}}); }, {"v0", "must have 3"});
+  expect_invalid([&] { (void)solve(good, {}, guess({1, 2}, {})); }, {"v0", "must have 3"});
   expect_invalid([&] { (void)solve(with([](GroupProblem& p) { p.N = 0; })); }, "N");
   ManifoldProblem antipodal;
   antipodal.q0 = {0, 0, 1};

@@ -111,6 +111,58 @@ TEST(ApiObjects, OnAManifoldTheFrameAtQ0ComesFromTheSamplesAndMatters) {
   EXPECT_NEAR(sampled.cumulative_action(p.N), r.action, 1e-13 * std::abs(r.action));
 }
 
+TEST(ApiObjects, AGroupSolveByTheModelOrBehindTheErasedLagrangianIsOneSolveWithItsAlong) {
+  const GroupProblem p = free_body();
+  const GroupObjectProblem<groups::SO3> erased = as_object(p, kInertia);
+  const transported::TransportedProblem<groups::SO3, mechanics::RigidBody> typed{mechanics::RigidBody(kInertia), p.lambda, p.T,
+                                                                               p.N, erased.g0, erased.gT};
+  const Result by_model = solve(typed, {}, {}, {.along = true}, "test");
+  const Result by_erased = solve(erased, {}, {}, {.along = true}, "test");
+  ASSERT_TRUE(by_model.converged()) << by_model.message;
+  ASSERT_TRUE(by_erased.converged()) << by_erased.message;
+  // The same member functions evaluated, one through a virtual call: the same iterates.
+  EXPECT_NEAR((by_model.samples.points - by_erased.samples.points).cwiseAbs().maxCoeff(), 0, 1e-15);
+  EXPECT_NEAR((by_model.v0 - by_erased.v0).cwiseAbs().maxCoeff(), 0, 1e-15);
+  ASSERT_EQ(by_model.aux0.size(), 3);  // xi0
+  ASSERT_TRUE(by_model.along.has_value());
+  // What the solve carries along its samples is api::along of them.
+  const mechanics::ErasedLagrangian<groups::SO3> lagrangian(mechanics::RigidBody(kInertia));
+  const Along again = along<groups::SO3>(&lagrangian, p.lambda, by_model.samples, "test");
+  EXPECT_EQ(by_model.along->frames, again.frames);
+  EXPECT_EQ(by_model.along->cumulative_action, again.cumulative_action);
+  EXPECT_FALSE(solve(erased, {}, {}, {}, "test").along.has_value());
+  // Started at its own v0 and xi0, shooting has at most one step left to take.
+  Guess start;
+  start.v0.assign(by_model.v0.data(), by_model.v0.data() + 3);
+  start.xi0.assign(by_model.aux0.data(), by_model.aux0.data() + 3);
+  EXPECT_LE(solve(typed, {}, start, {}, "test").inner_iterations, 1);
+  Guess from_samples;
+  from_samples.trajectory = by_model.samples;
+  from_samples.trajectory->mu.resize(0, 0);  // a guess needs no mu
+  EXPECT_LE(solve(typed, {}, from_samples, {}, "test").inner_iterations, 1);
+}
+
+TEST(ApiObjects, AGuessOfAnotherSizeOrOfTheOtherKernelIsRefusedByName) {
+  const GroupProblem p = free_body();
+  const GroupObjectProblem<groups::SO3> erased = as_object(p, kInertia);
+  Guess short_v0;
+  short_v0.v0 = {1, 2};
+  expect_invalid([&] { (void)solve(erased, {}, short_v0, {}, "here"); }, {"here", "v0", "must have 3 numbers"});
+  Guess Xi0;
+  Xi0.Xi0.assign(9, 0);
+  expect_invalid([&] { validate(erased, {}, Xi0, "here"); }, {"here", "Xi0", "general kernel"});
+  const ManifoldObjectProblem<manifolds::Sphere> on_sphere{manifolds::Sphere{},
+                                                           general::erased_particle<manifolds::Sphere>(Eigen::Matrix2d::Identity()),
+                                                           1, 20, Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), std::nullopt};
+  Guess xi0;
+  xi0.xi0 = {0, 0};
+  expect_invalid([&] { validate(on_sphere, {}, xi0, "here"); }, {"here", "xi0", "Lie-group kernel"});
+  Guess frameless;
+  frameless.trajectory = Samples{};
+  frameless.trajectory->t = Eigen::VectorXd::LinSpaced(3, 0, 1);
+  expect_invalid([&] { validate(on_sphere, {}, frameless, "here"); }, {"here: guess", "samples.points"});
+}
+
 TEST(ApiObjects, AFailedResultWithoutSamplesFailsItsConvergedCheckAlone) {
   const GroupProblem p = free_body();
   const Samples none;

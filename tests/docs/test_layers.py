@@ -19,9 +19,10 @@ only the layers below it, and no kernel includes the other or a driver.
 * api/ declares in the vocabulary's words, with no kernel, method or driver;
 * no two folders include each other, directly or through others (kernels/<k> and methods/<k>
   count as folders);
-* the edges (apps/, python/src/) include of a kernel only what the library compiles for them: its
-  compiled solves' declarations (compiled.hpp), never a method nor a driver (dense output comes
-  through api/erased.hpp);
+* the edges (apps/, python/src/) reach no kernel, method or driver, directly or through the headers
+  they include: only the api (api/solve.hpp for problems by names, api/erased.hpp for problems
+  given as objects) and the vocabulary, geometry and mechanics it is written in (numerics/, below
+  the kernels, is one of these: cartan.solve_bvp calls its collocation);
 * the forwarding headers of the old paths (transported/, general/, verify/report.hpp,
   verify/checks.hpp, and the kernels' headers that moved to mechanics/ and principle/), kept for
   one release, each include the one header that replaced them, and nothing of the project
@@ -172,13 +173,27 @@ def edge_includes():
                 yield f"{source.relative_to(ROOT)} -> {target}", target
 
 
-def test_the_edges_include_no_solver():
-    compiled = {f"{kernel}/compiled.hpp" for kernel in KERNELS}
-    found = [line for line, target in edge_includes()
-             if folder_of(target) in ("solvers", "methods", *METHODS) or is_forwarding(target)
-             or (folder_of(target) in KERNELS and target not in compiled)]
+def include_closure(target):
+    """Every header of include/cartan reached from `target` (itself included)."""
+    seen, todo = set(), [target]
+    while todo:
+        t = todo.pop()
+        if t not in seen and (INCLUDE / t).is_file():
+            seen.add(t)
+            todo.extend(includes(INCLUDE / t))
+    return seen
+
+
+def test_the_edges_include_no_kernel_method_or_driver():
+    forbidden = {*KERNELS, "methods", *METHODS, "solvers"}
+    found = [f"{line} (reaches {t})" for line, target in edge_includes() for t in sorted(include_closure(target))
+             if folder_of(t) in forbidden or is_forwarding(t)]
     assert found == []
-    assert any(target == "api/solve.hpp" for _, target in edge_includes())  # the check sees the edges' includes
+    assert any(target == "api/erased.hpp" for _, target in edge_includes())  # the check sees the edges' includes
+
+
+def test_the_closure_follows_includes():
+    assert "kernels/lie_group/solution.hpp" in include_closure("kernels/lie_group/compiled.hpp")
 
 
 def project_sources():

@@ -15,6 +15,7 @@
 #include "cartan/mechanics/manifold_erased_lagrangian.hpp"
 #include "cartan/principle/group_problem.hpp"
 #include "cartan/principle/manifold_problem.hpp"
+#include "cartan/principle/options.hpp"
 #include "cartan/principle/vocabulary.hpp"
 #include "cartan/status.hpp"
 
@@ -28,6 +29,38 @@ using GroupObjectProblem = transported::TransportedProblem<G, mechanics::ErasedL
 /// ... or on a space object of the library with its connection (the general kernel).
 template <manifolds::ManifoldWithConnection M>
 using ManifoldObjectProblem = general::GeneralProblem<M, general::ErasedLagrangian<M>>;
+
+/// What a solve computes besides its samples, where asked: `along` (Result::along).
+struct SolveOutputs {
+  bool along = false;
+};
+
+/// The library's compiled solve of `problem` (kernels/lie_group/compiled.hpp): L a built-in model
+/// (CARTAN_TRANSPORTED_BUILTIN_MODELS) or the erased Lagrangian; the guess's v0 and xi0 (n numbers
+/// each) or trajectory (the Lie-group kernel's samples; mu may have no rows). Returns the Result
+/// with v0 and xi0 (aux0); along, with `outputs.along`, unless the solve was stopped on request.
+/// Throws std::invalid_argument "<where>: ..." for a guess of another size or shape (Xi0 is the
+/// general kernel's), and what the solve throws for the problem and options.
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+Result solve(const transported::TransportedProblem<G, L>& problem, const SolveOptions& options, const Guess& guess,
+             SolveOutputs outputs, std::string_view where);
+/// Throws what solve would for the problem, the options and the guess, without solving.
+template <groups::LieGroup G, mechanics::ReducedLagrangian<G> L>
+void validate(const transported::TransportedProblem<G, L>& problem, const SolveOptions& options, const Guess& guess,
+              std::string_view where);
+
+/// The library's compiled general solve of `problem` (kernels/manifold/compiled.hpp: methods/solve.hpp
+/// chooses the kernel; a Cartan–Schouten GroupManifold runs the Lie-group one), with the guess's v0
+/// (m numbers), Xi0 (m^2, row-major) or trajectory (the general kernel's samples, with frames).
+/// Returns the Result with v0 and Xi0 (aux0) and the action along the samples (NaN for a result
+/// stopped on request or of fewer than two samples, which have no along); along with
+/// `outputs.along`. Throws as the group's solve (xi0 is the Lie-group kernel's).
+template <manifolds::ManifoldWithConnection M>
+Result solve(const ManifoldObjectProblem<M>& problem, const SolveOptions& options, const Guess& guess, SolveOutputs outputs,
+             std::string_view where);
+/// Throws what solve would for the problem and the options, and for the guess's sizes.
+template <manifolds::ManifoldWithConnection M>
+void validate(const ManifoldObjectProblem<M>& problem, const SolveOptions& options, const Guess& guess, std::string_view where);
 
 /// The checks of verify/ and their verdict (docs/verify.md) on samples of a solution of `problem`
 /// by a method of `order`, solved to `tol`, that ended with `status`: on a group the Lie-group

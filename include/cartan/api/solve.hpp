@@ -72,11 +72,6 @@ struct ManifoldProblem {
   std::string model = "particle";
 };
 
-/// Guesses of v(0) and xi(0), n numbers each (xi0: the Lie-group kernel only); empty: none.
-struct Guess {
-  std::vector<double> v0, xi0;
-};
-
 /// A trajectory as numbers, one row per time t_k.
 struct Samples {
   Eigen::VectorXd t;
@@ -88,6 +83,15 @@ struct Samples {
   /// The auxiliary variable: xi in g* (n numbers) where the Lie-group kernel ran, else the
   /// general Xi (n^2 numbers, row-major).
   Eigen::MatrixXd aux;
+};
+
+/// Guesses of v(0), n numbers, and of the auxiliary at 0: xi0, n numbers, where the Lie-group
+/// kernel runs, Xi0, n^2 numbers row-major, where the general kernel does; or a whole trajectory
+/// (an earlier solution's samples, with the kernel's auxiliary; mu need not be given): the start
+/// of collocation, and its first sample the others' guess. Empty: none.
+struct Guess {
+  std::vector<double> v0, xi0, Xi0;
+  std::optional<Samples> trajectory;
 };
 
 /// What a solution carries along its samples (kernels/lie_group/along.hpp, kernels/manifold/along.hpp),
@@ -107,6 +111,10 @@ struct Result : ResultCore {
   bool lie_kernel = false;   ///< the auxiliary is xi (n numbers a row); else Xi (n^2)
   Samples samples;           ///< the solution; at a failure the best iterate of the requested problem, or no rows
   std::optional<Eigen::MatrixXd> frame0;  ///< a manifold problem: the rows e1, e2 of its frame at q0
+  Eigen::VectorXd v0, aux0;  ///< the unknowns solved for: v(0) and the auxiliary at 0 (xi0, or Xi0 row-major)
+  /// What the solution carries along it, where it was asked for (erased.hpp, SolveOutputs): none
+  /// for a result stopped on request (the derived quantities would cost what the stop saved).
+  std::optional<Along> along;
 };
 
 /// Whether the Lie-group kernel (xi in g*) solves `problem`: a Cartan–Schouten connection.

@@ -17,24 +17,13 @@
 
 #include <type_traits>
 
-#include "cartan/groups/heisenberg.hpp"
-#include "cartan/groups/se2.hpp"
-#include "cartan/groups/se3.hpp"
-#include "cartan/groups/so3.hpp"
 #include "cartan/kernels/lie_group/solution.hpp"
 #include "cartan/kernels/lie_group/solve_options.hpp"
+#include "cartan/manifolds/shipped.hpp"
 #include "cartan/mechanics/erased_lagrangian.hpp"
 #include "cartan/principle/group_problem.hpp"
 #include "cartan/status.hpp"
 #include "cartan/verify/verdict.hpp"
-
-/// The groups on which the library compiles the erased Lagrangian's entry points, one X(G) each
-/// (src/methods/lie_group/erased_*.cpp).
-#define CARTAN_TRANSPORTED_SHIPPED_GROUPS(X) \
-  X(::cartan::groups::SO3)                   \
-  X(::cartan::groups::Heisenberg)            \
-  X(::cartan::groups::SE2)                   \
-  X(::cartan::groups::SE3)
 
 /// The built-in models whose own solve the library compiles, one X(G, L) each
 /// (src/methods/lie_group/solve_*.cpp; declared `extern template` in solve.hpp, where their definition is

@@ -14,16 +14,10 @@
 #include <optional>
 #include <string>
 
-#include "cartan/groups/heisenberg.hpp"
-#include "cartan/groups/se2.hpp"
-#include "cartan/groups/se3.hpp"
-#include "cartan/groups/so3.hpp"
 #include "cartan/kernels/manifold/solution.hpp"
-#include "cartan/manifolds/chart.hpp"
-#include "cartan/manifolds/euclidean.hpp"
-#include "cartan/manifolds/group_manifold.hpp"
-#include "cartan/manifolds/quadric.hpp"
+#include "cartan/manifolds/shipped.hpp"
 #include "cartan/mechanics/check_report.hpp"
+#include "cartan/mechanics/manifold_compiled.hpp"
 #include "cartan/mechanics/manifold_erased_lagrangian.hpp"
 #include "cartan/principle/manifold_problem.hpp"
 #include "cartan/principle/options.hpp"
@@ -84,32 +78,11 @@ verify::Report verify_general(const GeneralProblem<M, L>& problem, const General
 template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
 GeneralAlong<M> along_general(const GeneralProblem<M, L>& problem, const GeneralTrajectory<M>& x);
 
-/// A Lagrangian's callbacks against each other at the samples, and seeded samples around `base`
-/// (mechanics/manifold_check_lagrangian.hpp).
-template <manifolds::ManifoldWithConnection M, ManifoldLagrangian<M> L>
-mechanics::CheckReport check_lagrangian(const M& manifold, const L& l, const std::vector<ManifoldLagrangianSample<M>>& samples);
-template <manifolds::ManifoldWithConnection M>
-std::vector<ManifoldLagrangianSample<M>> lagrangian_samples(const M& manifold, const manifolds::PointOf<M>& base,
-                                                            const mechanics::CheckLagrangianOptions& options);
-
 }  // namespace cartan::general
 
-/// The shipped manifolds, one X(M) each (the list of the header comment).
-#define CARTAN_GENERAL_SHIPPED_MANIFOLDS(X)                                                              \
-  X(::cartan::manifolds::Sphere)                                                                         \
-  X(::cartan::manifolds::HyperbolicPlane)                                                                \
-  X(::cartan::manifolds::Euclidean<2>)                                                                   \
-  X(::cartan::manifolds::Euclidean<3>)                                                                   \
-  X(::cartan::manifolds::Chart<2>)                                                                       \
-  X(::cartan::manifolds::Chart<3>)                                                                       \
-  X(::cartan::manifolds::GroupManifold<::cartan::groups::SO3>)                                           \
-  X(::cartan::manifolds::GroupManifold<::cartan::groups::Heisenberg>)                                    \
-  X(::cartan::manifolds::GroupManifold<::cartan::groups::SE2>)                                           \
-  X(::cartan::manifolds::GroupManifold<::cartan::groups::SE3>)
-
 /// `extern template` (declaration) or `template` (definition, in one src/methods/solve_*.cpp per manifold) of the solve, the
-/// shooting it runs (both entry points), the verifier, the quantities along a solution and the check
-/// of a Lagrangian for the erased Lagrangian on M (and the check's seeded samples on M).
+/// shooting it runs (both entry points), the verifier and the quantities along a solution for the
+/// erased Lagrangian on M, and the mechanics compiled with them (mechanics/manifold_compiled.hpp).
 #define CARTAN_GENERAL_COMPILED(prefix, M)                                                                     \
   prefix ::cartan::general::GeneralSolution<M> cartan::general::solve(                                        \
       const ::cartan::general::GeneralProblem<M, ::cartan::general::ErasedLagrangian<M>>&,                     \
@@ -127,22 +100,12 @@ std::vector<ManifoldLagrangianSample<M>> lagrangian_samples(const M& manifold, c
   prefix ::cartan::general::GeneralAlong<M> cartan::general::along_general(                                   \
       const ::cartan::general::GeneralProblem<M, ::cartan::general::ErasedLagrangian<M>>&,                     \
       const ::cartan::general::GeneralTrajectory<M>&);                                                         \
-  prefix ::cartan::mechanics::CheckReport cartan::general::check_lagrangian(                                   \
-      const M&, const ::cartan::general::ErasedLagrangian<M>&,                                                 \
-      const std::vector<::cartan::general::ManifoldLagrangianSample<M>>&);                                      \
-  prefix std::vector<::cartan::general::ManifoldLagrangianSample<M>> cartan::general::lagrangian_samples(      \
-      const M&, const ::cartan::manifolds::PointOf<M>&, const ::cartan::mechanics::CheckLagrangianOptions&);      \
   prefix std::optional<::cartan::general::GeneralNode<M>> cartan::general::general_sweep(                       \
       const ::cartan::general::GeneralScheme<M, ::cartan::general::ErasedLagrangian<M>>&,                      \
       const ::cartan::manifolds::ComponentsOf<M>&, const ::cartan::manifolds::ComponentMatrixOf<M>&,           \
       std::string&, ::cartan::general::GeneralTrajectory<M>*,                                                  \
       const ::cartan::general::GeneralSchemeTangent<M, ::cartan::general::ErasedLagrangian<M>>*,               \
-      Eigen::MatrixXd*, const ::cartan::SolveMonitor*, double);                                                \
-  prefix ::cartan::general::ErasedLagrangian<M> cartan::general::erased_particle(                              \
-      const ::cartan::manifolds::ComponentMatrixOf<M>&, ::cartan::general::ParticlePotential<M>,               \
-      ::cartan::general::ParticleGradient<M>);                                                                 \
-  prefix ::cartan::general::ErasedLagrangian<M> cartan::general::erased_particle_in_linear_potential(          \
-      const ::cartan::manifolds::ComponentMatrixOf<M>&, const ::cartan::manifolds::VectorOf<M>&);
+      Eigen::MatrixXd*, const ::cartan::SolveMonitor*, double);
 
 #define CARTAN_GENERAL_EXTERN(M) CARTAN_GENERAL_COMPILED(extern template, M)
 CARTAN_GENERAL_SHIPPED_MANIFOLDS(CARTAN_GENERAL_EXTERN)
