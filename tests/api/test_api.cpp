@@ -121,7 +121,9 @@ TEST(Api, TheFreeParticleOnTheHyperbolicPlaneFollowsTheGeodesicAtConstantSpeed) 
   const verify::Report report = verify(p, r.samples, r.order, cartan::kDefaultTol, r.status);
   EXPECT_TRUE(report.passed()) << report.text();
   EXPECT_NEAR(on_manifold(p).qT[2], std::cosh(d), 1e-15);
-  testing::expect_invalid([&] { (void)on_manifold(p, {{1, 2, 3}, {}}); }, {"v0 = 1,2,3", "must have 2"});
+  Guess three;
+  three.v0 = {1, 2, 3};
+  testing::expect_invalid([&] { (void)on_manifold(p, three); }, {"v0 = 1,2,3", "must have 2"});
   ManifoldProblem outside = p;
   outside.qT = {2, 0, 1};  // z^2 < x^2 + y^2: outside the cone
   testing::expect_invalid([&] { check(outside); }, {"qT = 2,0,1", "hyperbolic plane"});

@@ -147,20 +147,20 @@ TEST(ApiObjects, AGuessOfAnotherSizeOrOfTheOtherKernelIsRefusedByName) {
   const GroupObjectProblem<groups::SO3> erased = as_object(p, kInertia);
   Guess short_v0;
   short_v0.v0 = {1, 2};
-  expect_invalid([&] { (void)solve(erased, {}, short_v0, {}, "here"); }, {"here", "v0", "must have 3 numbers"});
+  testing::expect_invalid([&] { (void)solve(erased, {}, short_v0, {}, "here"); }, {"here", "v0", "must have 3 numbers"});
   Guess Xi0;
   Xi0.Xi0.assign(9, 0);
-  expect_invalid([&] { validate(erased, {}, Xi0, "here"); }, {"here", "Xi0", "general kernel"});
+  testing::expect_invalid([&] { validate(erased, {}, Xi0, "here"); }, {"here", "Xi0", "general kernel"});
   const ManifoldObjectProblem<manifolds::Sphere> on_sphere{manifolds::Sphere{},
                                                            general::erased_particle<manifolds::Sphere>(Eigen::Matrix2d::Identity()),
                                                            1, 20, Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), std::nullopt};
   Guess xi0;
   xi0.xi0 = {0, 0};
-  expect_invalid([&] { validate(on_sphere, {}, xi0, "here"); }, {"here", "xi0", "Lie-group kernel"});
+  testing::expect_invalid([&] { validate(on_sphere, {}, xi0, "here"); }, {"here", "xi0", "Lie-group kernel"});
   Guess frameless;
   frameless.trajectory = Samples{};
   frameless.trajectory->t = Eigen::VectorXd::LinSpaced(3, 0, 1);
-  expect_invalid([&] { validate(on_sphere, {}, frameless, "here"); }, {"here: guess", "samples.points"});
+  testing::expect_invalid([&] { validate(on_sphere, {}, frameless, "here"); }, {"here: guess", "samples.points"});
 }
 
 TEST(ApiObjects, AFailedResultWithoutSamplesFailsItsConvergedCheckAlone) {
@@ -172,7 +172,7 @@ TEST(ApiObjects, AFailedResultWithoutSamplesFailsItsConvergedCheckAlone) {
   EXPECT_EQ(report.checks.front().name, "converged");
   Samples wrong;
   wrong.t = Eigen::VectorXd::LinSpaced(3, 0, 1);
-  expect_invalid([&] { (void)verify<groups::SO3>(as_object(p, kInertia), wrong, 1, kDefaultTol, Status::Converged, "here"); },
+  testing::expect_invalid([&] { (void)verify<groups::SO3>(as_object(p, kInertia), wrong, 1, kDefaultTol, Status::Converged, "here"); },
                  {"here", "samples.points"});
 }
 
