@@ -183,6 +183,7 @@ void bind_solvers(GroupClass<G>& group, const std::string& name, Types<Models...
     const api::Samples x = samples_of<G>(result, a, "verify", "result", true);
     const groups::ElementOf<G> first = a.endpoint(g0, "verify", "g0"), last = a.endpoint(gT, "verify", "gT");
     const Status outcome = parse_enum<Status>(status, "cartan.verify");
+    if (x.t.size() == 0 && outcome != Status::Converged) return report_dict(verify::unchecked_failure(outcome));
     // Every model behind the erased Lagrangian, whose verify the library compiles (the same
     // evaluations, so the same figures as the model's own type would give); N from the samples.
     return report_dict(visit_model<ErasedPythonLagrangian<G>, Models...>(model, [&](const auto& l) {

@@ -154,12 +154,15 @@ std::vector<T> values_of_rows(const Eigen::MatrixXd& x) {
   return out;
 }
 
-/// An Eigen object's numbers in its storage order (a vector's in order; a matrix's column-major:
-/// its transpose's are the matrix's row-major).
+/// An Eigen object's numbers, row-major (a vector's in order), as the api takes them.
 template <class Derived>
 std::vector<double> numbers_of(const Eigen::DenseBase<Derived>& x) {
-  const typename Derived::PlainObject plain = x;
-  return {plain.data(), plain.data() + plain.size()};
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(x.size()));
+  for (Eigen::Index i = 0; i < x.rows(); ++i) {
+    for (Eigen::Index j = 0; j < x.cols(); ++j) out.push_back(x(i, j));
+  }
+  return out;
 }
 
 /// One Eigen object as a NumPy array ((rows,) for vectors, (rows, cols) otherwise).

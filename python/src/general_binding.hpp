@@ -489,9 +489,7 @@ struct PosedRequest {
     // without frame0 the problem's validation refuses the fallback frame where the Lagrangian depends on it
     if (!r.frame0.is_none()) problem.frame0 = to_eigen<FrameOf<M>>(r.frame0, kWhere, "frame0");
     if (!r.v0.is_none()) guess.v0 = numbers_of(finite_arg<ComponentsOf<M>>(r.v0, kWhere, "v0"));
-    if (!r.Xi0.is_none()) {  // row-major, as api::Guess takes it
-      guess.Xi0 = numbers_of(finite_arg<ComponentMatrixOf<M>>(r.Xi0, kWhere, "Xi0").transpose());
-    }
+    if (!r.Xi0.is_none()) guess.Xi0 = numbers_of(finite_arg<ComponentMatrixOf<M>>(r.Xi0, kWhere, "Xi0"));
     if (!r.guess.is_none()) guess.trajectory = samples_of(manifold, r.guess, kWhere, "guess");
   }
   PosedRequest(const PosedRequest&) = delete;
@@ -594,6 +592,7 @@ py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object&
   constexpr const char* where = "cartan.verify_general";
   const auto field = [&](const char* name) { return field_of(result, name, where, "result"); };
   const Status status = parse_enum<Status>(py::cast<std::string>(field("status")), where);
+  if (py::len(field("t")) == 0 && status != Status::Converged) return report_dict(verify::unchecked_failure(status));
   api::Samples x;
   try {
     x = samples_of(manifold, result, where, "result");
@@ -601,6 +600,7 @@ py::dict verify_on(const M& manifold, const GeneralRequest& r, const py::object&
     if (status == Status::Converged) throw;
     return report_dict(verify::unchecked_failure(status, e.what()));  // a diverged iterate (verify_general)
   }
+  if (x.t.size() == 0) throw_invalid(where, "result.t", "(empty)", "needs the samples of a solution");
   auto state = std::make_shared<CallbackState>();
   std::optional<PythonManifoldLagrangian<M>> python_object;
   bool python = false;

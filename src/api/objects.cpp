@@ -13,6 +13,9 @@
 #include "cartan/errors.hpp"
 #include "cartan/kernels/lie_group/compiled.hpp"
 #include "cartan/kernels/manifold/compiled.hpp"
+#include "cartan/mechanics/free_body.hpp"
+#include "cartan/mechanics/heisenberg_oscillator.hpp"
+#include "cartan/mechanics/rigid_body.hpp"
 #include "samples.hpp"
 
 namespace cartan::api {

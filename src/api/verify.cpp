@@ -18,6 +18,14 @@ groups::ElementOf<G> element(const std::vector<double>& numbers) {
   return value_of_row<groups::ElementOf<G>>(Eigen::MatrixXd(row), 0);
 }
 
+/// The problem with its own frame at q0 (frame0, or the default), which the samples' first frame
+/// (where a result in memory carries frames) does not replace: a problem by names is what it says.
+template <class Problem>
+Problem with_its_frame(Problem problem) {
+  problem.frame0 = problem.initial_frame();
+  return problem;
+}
+
 }  // namespace
 
 verify::Report verify(const GroupProblem& problem, const Samples& samples, int order, double tol, Status status,
@@ -35,15 +43,15 @@ verify::Report verify(const GroupProblem& problem, const Samples& samples, int o
                                          problem.lambda, problem.T, problem.N, g0, gT};
       return api::verify<G>(erased, samples, order, tol, status, where);
     }
-    return api::verify<manifolds::GroupManifold<G>>(detail::connection_problem<Entry>(problem, checked, g0, gT, where), samples,
-                                                    order, tol, status, where);
+    return api::verify<manifolds::GroupManifold<G>>(with_its_frame(detail::connection_problem<Entry>(problem, checked, g0, gT, where)),
+                                                    samples, order, tol, status, where);
   });
 }
 
 verify::Report verify(const ManifoldProblem& problem, const Samples& samples, int order, double tol, Status status,
                       std::string_view where) {
   return detail::visit_manifold(problem, {}, where, [&]<class M>(const general::ErasedProblem<M>& posed) {
-    return api::verify<M>(posed, samples, order, tol, status, where);
+    return api::verify<M>(with_its_frame(posed), samples, order, tol, status, where);
   });
 }
 
