@@ -17,6 +17,10 @@ namespace {
 
 const Eigen::Vector3d kInertia(2, 3, 4);
 
+mechanics::RigidBody rigid_body(const Eigen::Vector3d& diagonal) {
+  return mechanics::RigidBody(Eigen::Matrix3d(diagonal.asDiagonal()));
+}
+
 GroupProblem free_body() {
   GroupProblem p;
   p.inertia = {kInertia(0), kInertia(1), kInertia(2)};
@@ -29,7 +33,7 @@ GroupProblem free_body() {
 }
 
 GroupObjectProblem<groups::SO3> as_object(const GroupProblem& p, const Eigen::Vector3d& inertia) {
-  return {mechanics::ErasedLagrangian<groups::SO3>(mechanics::RigidBody(inertia)), p.lambda, p.T, p.N,
+  return {mechanics::ErasedLagrangian<groups::SO3>(rigid_body(inertia)), p.lambda, p.T, p.N,
           groups::SO3::identity(),
           Eigen::Matrix3d(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(p.gT.data()))};
 }
@@ -52,7 +56,7 @@ TEST(ApiObjects, AlongAGroupResultEndsAtTheSolvesActionAndStartsAtTheIdentity) {
   const GroupProblem p = free_body();
   const Result r = solve(p);
   ASSERT_TRUE(r.converged()) << r.message;
-  const mechanics::ErasedLagrangian<groups::SO3> lagrangian(mechanics::RigidBody(kInertia));
+  const mechanics::ErasedLagrangian<groups::SO3> lagrangian{rigid_body(kInertia)};
   const Along a = along<groups::SO3>(&lagrangian, p.lambda, r.samples, "test");
   ASSERT_EQ(a.frames.rows(), r.samples.t.size());
   ASSERT_EQ(a.cumulative_action.size(), r.samples.t.size());
@@ -114,7 +118,7 @@ TEST(ApiObjects, OnAManifoldTheFrameAtQ0ComesFromTheSamplesAndMatters) {
 TEST(ApiObjects, AGroupSolveByTheModelOrBehindTheErasedLagrangianIsOneSolveWithItsAlong) {
   const GroupProblem p = free_body();
   const GroupObjectProblem<groups::SO3> erased = as_object(p, kInertia);
-  const transported::TransportedProblem<groups::SO3, mechanics::RigidBody> typed{mechanics::RigidBody(kInertia), p.lambda, p.T,
+  const transported::TransportedProblem<groups::SO3, mechanics::RigidBody> typed{rigid_body(kInertia), p.lambda, p.T,
                                                                                p.N, erased.g0, erased.gT};
   const Result by_model = solve(typed, {}, {}, {.along = true}, "test");
   const Result by_erased = solve(erased, {}, {}, {.along = true}, "test");
@@ -126,7 +130,7 @@ TEST(ApiObjects, AGroupSolveByTheModelOrBehindTheErasedLagrangianIsOneSolveWithI
   ASSERT_EQ(by_model.aux0.size(), 3);  // xi0
   ASSERT_TRUE(by_model.along.has_value());
   // What the solve carries along its samples is api::along of them.
-  const mechanics::ErasedLagrangian<groups::SO3> lagrangian(mechanics::RigidBody(kInertia));
+  const mechanics::ErasedLagrangian<groups::SO3> lagrangian{rigid_body(kInertia)};
   const Along again = along<groups::SO3>(&lagrangian, p.lambda, by_model.samples, "test");
   EXPECT_EQ(by_model.along->frames, again.frames);
   EXPECT_EQ(by_model.along->cumulative_action, again.cumulative_action);
