@@ -124,33 +124,26 @@ std::vector<T> to_eigen_list(const py::handle& obj, std::string_view where, std:
   return out;
 }
 
+/// The api's tables (api::Table, api/solve.hpp): one row per time, row-major.
+using RowTable = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
 /// The same sequence as the api's rows (api::Samples): one row of rows * cols numbers per object,
-/// row-major within it.
+/// row-major within it; the array's memory copied in one pass.
 template <class T>
-Eigen::MatrixXd to_rows(const py::handle& obj, std::string_view where, std::string_view name) {
+RowTable to_rows(const py::handle& obj, std::string_view where, std::string_view name) {
   const Array a = list_array<T>(obj, where, name);
   const Eigen::Index count = a.shape(0);
   if (count == 0) return {};
-  return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-      a.data(), count, T::RowsAtCompileTime * T::ColsAtCompileTime);
+  return Eigen::Map<const RowTable>(a.data(), count, T::RowsAtCompileTime * T::ColsAtCompileTime);
 }
 
 /// Row k of the api's rows as the fixed-size Eigen object it holds (row-major within the row).
 template <class T>
-T value_of_row(const Eigen::MatrixXd& x, Eigen::Index k) {
+T value_of_row(const RowTable& x, Eigen::Index k) {
   T out;
   for (Eigen::Index i = 0; i < out.rows(); ++i) {
     for (Eigen::Index j = 0; j < out.cols(); ++j) out(i, j) = x(k, i * out.cols() + j);
   }
-  return out;
-}
-
-/// The api's rows back as a sequence of fixed-size Eigen objects (to_rows' inverse).
-template <class T>
-std::vector<T> values_of_rows(const Eigen::MatrixXd& x) {
-  std::vector<T> out;
-  out.reserve(static_cast<std::size_t>(x.rows()));
-  for (Eigen::Index k = 0; k < x.rows(); ++k) out.push_back(value_of_row<T>(x, k));
   return out;
 }
 
@@ -229,10 +222,9 @@ py::array_t<double> to_numpy(std::vector<T>&& xs) {
 }
 
 /// The api's rows (one T a row, row-major within it) as to_numpy of the sequence of T would give
-/// them, without a copy: the matrix moves into the array's base object, and the strides read its
-/// column-major storage.
+/// them, without a copy: the table moves into the array's base object (C order).
 template <class T>
-py::array_t<double> rows_to_numpy(Eigen::MatrixXd&& x) {
+py::array_t<double> rows_to_numpy(RowTable&& x) {
   constexpr Eigen::Index rows = T::RowsAtCompileTime, cols = T::ColsAtCompileTime;
   const auto count = static_cast<py::ssize_t>(x.rows());
   constexpr auto number = static_cast<py::ssize_t>(sizeof(double));
@@ -240,9 +232,9 @@ py::array_t<double> rows_to_numpy(Eigen::MatrixXd&& x) {
   double* data = x.data();  // moving a matrix keeps its storage
   py::capsule base = owning_capsule(std::move(x));
   if constexpr (cols == 1) {
-    return py::array_t<double>({count, py::ssize_t{rows}}, {number, number * count}, data, base);
+    return py::array_t<double>({count, py::ssize_t{rows}}, {number * rows, number}, data, base);
   } else {
-    return py::array_t<double>({count, py::ssize_t{rows}, py::ssize_t{cols}}, {number, number * count * cols, number * count},
+    return py::array_t<double>({count, py::ssize_t{rows}, py::ssize_t{cols}}, {number * rows * cols, number * cols, number},
                                data, base);
   }
 }

@@ -36,7 +36,7 @@ std::optional<Value> guess_value(const std::vector<double>& numbers, const char*
                   "must have " + std::to_string(size) + " numbers (" + std::string(what) + ")");
   }
   const Eigen::Map<const Eigen::RowVectorXd> row(numbers.data(), static_cast<Eigen::Index>(size));
-  return detail::value_of_row<Value>(Eigen::MatrixXd(row), 0);
+  return detail::value_of_row<Value>(Table(row), 0);
 }
 
 /// Throws "<where>: <name> = (k numbers) is a guess of the <kernel>" when `numbers` are given.
@@ -52,7 +52,7 @@ transported::SolveGuess<G> group_guess(const Guess& guess, std::string_view wher
   out.xi0 = guess_value<groups::CovectorOf<G>>(guess.xi0, "xi0", "a guess of xi(0)", where);
   if (guess.trajectory) {
     Samples x = *guess.trajectory;
-    if (x.mu.rows() == 0) x.mu = Eigen::MatrixXd::Zero(x.t.size(), G::kDim);  // not needed of a guess
+    if (x.mu.rows() == 0) x.mu = Table::Zero(x.t.size(), G::kDim);  // not needed of a guess
     detail::check_samples(x, groups::ElementOf<G>::SizeAtCompileTime, G::kDim, G::kDim, std::string(where) + ": guess");
     out.trajectory = detail::lie_trajectory<G>(x);
   }

@@ -42,7 +42,8 @@ json json_list(const Numbers& x) {
 }
 
 /// Rows of numbers as a JSON array of arrays.
-json json_rows(const Eigen::MatrixXd& x) {
+template <class Derived>
+json json_rows(const Eigen::DenseBase<Derived>& x) {
   json out = json::array();
   for (Eigen::Index k = 0; k < x.rows(); ++k) out.push_back(json_list(x.row(k)));
   return out;
@@ -420,7 +421,7 @@ void check_solution(const ResultRecord& r, std::string_view where) {
   const Eigen::Index last = x.t.size() - 1;
   if (std::abs(x.t[last] - T) > kTimeSpanTolerance * T) bad_time(where, last, x.t[last], "must equal T = " + format_value(T));
   const auto* group = std::get_if<GroupProblem>(&r.problem);
-  const std::pair<const char*, const Eigen::MatrixXd*> tables[] = {
+  const std::pair<const char*, const Table*> tables[] = {
       {group ? "g" : "q", &x.points}, {"v", &x.v}, {"mu", &x.mu}, {r.result.lie_kernel ? "xi" : "Xi", &x.aux}};
   for (const auto& [name, table] : tables) {
     for (Eigen::Index k = 0; k < table->rows(); ++k) {

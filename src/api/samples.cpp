@@ -7,7 +7,7 @@
 
 namespace cartan::api::detail {
 
-void check_table(const Samples& x, const Eigen::MatrixXd& table, const char* name, Eigen::Index width, std::string_view where,
+void check_table(const Samples& x, const Table& table, const char* name, Eigen::Index width, std::string_view where,
                  bool optional) {
   const Eigen::Index m = x.t.size();
   // No samples: tables without rows, of any width (a failed result's empty arrays).

@@ -16,10 +16,10 @@ namespace cartan::api::detail {
 
 /// One row per value: its numbers (models::element_numbers: a matrix row-major, a vector as it is).
 template <class Value>
-Eigen::MatrixXd rows(const std::vector<Value>& values) {
+Table rows(const std::vector<Value>& values) {
   if (values.empty()) return {};
   const Eigen::Index rows = values.front().rows(), cols = values.front().cols();
-  Eigen::MatrixXd out(static_cast<Eigen::Index>(values.size()), rows * cols);
+  Table out(static_cast<Eigen::Index>(values.size()), rows * cols);
   for (std::size_t k = 0; k < values.size(); ++k) {
     for (Eigen::Index i = 0; i < rows; ++i) {
       for (Eigen::Index j = 0; j < cols; ++j) out(static_cast<Eigen::Index>(k), i * cols + j) = values[k](i, j);
@@ -30,7 +30,7 @@ Eigen::MatrixXd rows(const std::vector<Value>& values) {
 
 /// Row k of `rows` as a Value of the given shape (read row-major, as rows() writes it).
 template <class Value>
-Value value_of_row(const Eigen::MatrixXd& rows, Eigen::Index k) {
+Value value_of_row(const Table& rows, Eigen::Index k) {
   Value x;
   for (Eigen::Index i = 0; i < x.rows(); ++i) {
     for (Eigen::Index j = 0; j < x.cols(); ++j) x(i, j) = rows(k, i * x.cols() + j);
@@ -41,7 +41,7 @@ Value value_of_row(const Eigen::MatrixXd& rows, Eigen::Index k) {
 /// Throws "<where>: samples.<name> = (r x c numbers) must have <rows> rows (one per time) of <width>
 /// numbers" unless `table` has one row per time of x and `width` columns, or (where `optional`)
 /// no rows.
-void check_table(const Samples& x, const Eigen::MatrixXd& table, const char* name, Eigen::Index width, std::string_view where,
+void check_table(const Samples& x, const Table& table, const char* name, Eigen::Index width, std::string_view where,
                  bool optional = false);
 /// check_table of each table of x: points of `point_size` numbers, v and mu of n, the auxiliary of
 /// `aux_width`, and (where `frame_size` > 0) frames of `frame_size`.
@@ -63,7 +63,7 @@ Samples samples_of(const general::GeneralTrajectory<M>& x) {
 }
 /// Each row of `table` as a Value, where it has one row per time (else none: an optional table).
 template <class Value>
-std::vector<Value> values_of(const Eigen::MatrixXd& table, Eigen::Index times) {
+std::vector<Value> values_of(const Table& table, Eigen::Index times) {
   std::vector<Value> out;
   if (table.rows() != times) return out;
   out.reserve(static_cast<std::size_t>(times));

@@ -15,7 +15,7 @@
 namespace cartan::api {
 namespace {
 
-Eigen::Matrix3d rotation_of_row(const Eigen::MatrixXd& rows, Eigen::Index k) {
+Eigen::Matrix3d rotation_of_row(const Table& rows, Eigen::Index k) {
   return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rows.row(k).eval().data());
 }
 

@@ -72,17 +72,21 @@ struct ManifoldProblem {
   std::string model = "particle";
 };
 
+/// One row per time, stored row-major: a row's numbers are contiguous, as a sample's are in the
+/// kernels and in NumPy, so that a table is written, read and handed to NumPy in one pass.
+using Table = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
 /// A trajectory as numbers, one row per time t_k.
 struct Samples {
   Eigen::VectorXd t;
-  Eigen::MatrixXd points;  ///< a group element's numbers (models::element_numbers) or the point on the manifold
+  Table points;  ///< a group element's numbers (models::element_numbers) or the point on the manifold
   /// Where the general kernel ran: its frame at each sample, the d x m matrix whose columns are
   /// e_1 .. e_m, row-major (d m numbers a row); empty where the Lie-group kernel ran.
-  Eigen::MatrixXd frames;
-  Eigen::MatrixXd v, mu;   ///< n numbers each
+  Table frames;
+  Table v, mu;   ///< n numbers each
   /// The auxiliary variable: xi in g* (n numbers) where the Lie-group kernel ran, else the
   /// general Xi (n^2 numbers, row-major).
-  Eigen::MatrixXd aux;
+  Table aux;
 };
 
 /// Guesses of v(0), n numbers, and of the auxiliary at 0: xi0, n numbers, where the Lie-group
@@ -99,7 +103,7 @@ struct Guess {
 /// d x m; row-major), the body velocity u, and for a Lagrangian the energy E_k and the cumulative
 /// discrete action (0 at the first sample; its last entry is the action).
 struct Along {
-  Eigen::MatrixXd frames, u;
+  Table frames, u;
   Eigen::VectorXd energy, cumulative_action;
 };
 
