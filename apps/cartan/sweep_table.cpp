@@ -53,6 +53,15 @@ std::string csv_numbers(const nlohmann::json& values) {
   return out.str();
 }
 
+/// The rows of a frame, row after row, separated by spaces (one CSV field); empty where the row
+/// has none (a group model's, an error row).
+std::string csv_frame(const nlohmann::json& row) {
+  if (!row.contains("frame0") || !row.at("frame0").is_array()) return "";
+  std::string out;
+  for (const auto& e : row.at("frame0")) out += (out.empty() ? "" : " ") + csv_numbers(e);
+  return out;
+}
+
 /// `parent[key]`, or an empty field when parent is null (the diagnostics of an error row).
 std::string csv_member(const nlohmann::json& parent, const nlohmann::json::object_t::key_type& key) {
   return parent.is_null() ? std::string() : csv_field(parent.at(key));
@@ -111,7 +120,7 @@ std::string table_csv(const std::vector<nlohmann::json>& rows) {
   }
   std::ostringstream out;
   out << "index,lambda,endpoint_key,endpoint,status,message,method,branch,terminal_error,iterations_outer,"
-         "iterations_inner,iterations_sweeps,solve_time_s,action";
+         "iterations_inner,iterations_sweeps,solve_time_s,action,frame0";
   for (std::size_t i = 1; i <= width; ++i) out << ",v0_" << i;
   out << '\n';
   for (const auto& row : rows) {
@@ -124,7 +133,8 @@ std::string table_csv(const std::vector<nlohmann::json>& rows) {
         << csv_field(row.at("terminal_error")) << ',' << csv_member(iterations, "outer") << ','
         << csv_member(iterations, "inner") << ',' << csv_member(iterations, "sweeps") << ','
         << csv_field(row.at("solve_time_s")) << ','
-        << csv_field(row.contains("action") ? row.at("action") : nlohmann::json(nullptr));  // tables before the column
+        << csv_field(row.contains("action") ? row.at("action") : nlohmann::json(nullptr))  // tables before the column
+        << ',' << csv_frame(row);  // the frame v0 is in (a manifold's, which turns with qT)
     for (std::size_t i = 0; i < width; ++i) out << ',' << (i < v0.size() ? csv_element(v0, i) : std::string());
     out << '\n';
   }

@@ -423,3 +423,21 @@ def test_a_surface_row_holds_its_frame_and_action_as_cartan_solve_writes_them():
         assert row["frame0"] == solved["frame0"] and row["action"] == solved["action"] and row["v0"] == solved["v"][0]
         assert isinstance(row["action"], float)
     assert table["rows"][0]["frame0"] != table["rows"][1]["frame0"]
+
+
+def test_csv_holds_a_surface_rows_frame():
+    """v0 of a manifold's row is in the frame at q0, which turns with qT: the CSV has it too
+    (frame0, its rows one after the other, as the endpoint's numbers), empty on a group (it had no
+    such column, so the CSV's v0 could not be read)."""
+    base = ["--manifold", "sphere", "--q0", "1,0,-0.3", "--mass", "1,2", "--T", "1", "--N", "50",
+            "--qT-list", "0,1,-0.5;0,1,0.5", "--quiet"]
+    table = sweep(*base)
+    result = run("sweep", *base, "--format", "csv")
+    assert result.returncode == 0, result.stderr
+    lines = list(csv.DictReader(io.StringIO(result.stdout)))
+    assert len(lines) == 2 and list(lines[0])[-3:] == ["frame0", "v0_1", "v0_2"]
+    for line, row in zip(lines, table["rows"]):
+        assert [float(x) for x in line["frame0"].split()] == [x for e in row["frame0"] for x in e]  # exact
+    group = run("sweep", *SO3_BASE, "--lambdas", "0.5", "--aT-list", "0,1,0", "--quiet", "--format", "csv")
+    assert group.returncode == 0, group.stderr
+    assert [line["frame0"] for line in csv.DictReader(io.StringIO(group.stdout))] == [""]
