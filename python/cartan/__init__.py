@@ -229,7 +229,9 @@ def solve(lagrangian=None, *, space=None, lam=None, T, N, gT=None, g0=None, meth
     object (the first argument, with `space` the manifold) with methods value(t, q, v), momentum(t, q,
     v) (= dl/dv, (m,)), velocity(t, q, mu) (the inverse Legendre map) and point_gradient(t, q, v) (an
     ambient (d,) covector with zeta . x = d/de l(t, step(q, e x), v)), taking and returning NumPy
-    arrays (:func:`check_lagrangian` checks them). method: "auto" (the default strategy: shooting
+    arrays (:func:`check_lagrangian` checks them); `frame_invariant = True` (an attribute or a method)
+    says that l does not depend on the orthonormal frame, so that equal endpoints (antipodal ones on
+    the sphere) need no frame0. method: "auto" (the default strategy: shooting
     from the guess, continuation in T, collocation polished by shooting), "shooting" (continuation
     "none" or "T") or "collocation"; on a GroupManifold with connection "cartan-schouten" and the
     default frame0 the Lie-group kernel runs, with its "multiple-shooting", "two-level" and

@@ -310,12 +310,18 @@ void def_manifold_methods(py::class_<Holder>& cls, const std::string& name) {
 // ---- Lagrangians ------------------------------------------------------------------------------
 
 /// A Lagrangian written in Python: value(t, q, v), momentum(t, q, v), velocity(t, q, mu) and
-/// point_gradient(t, q, v) (an ambient (d,) covector: zeta . x = d/de l(t, step(q, e x), v)).
+/// point_gradient(t, q, v) (an ambient (d,) covector: zeta . x = d/de l(t, step(q, e x), v)); the
+/// attribute `frame_invariant = True` (or a method returning True) says that l does not depend on
+/// the orthonormal frame (mechanics::frame_invariant_of), so that the fallback frame serves it.
 template <manifolds::ManifoldWithConnection M>
 class PythonManifoldLagrangian : public PythonModel {
  public:
   explicit PythonManifoldLagrangian(const py::object& object)
-      : PythonModel(object, "Lagrangian", {"value", "momentum", "velocity", "point_gradient"}) {}
+      : PythonModel(object, "Lagrangian", {"value", "momentum", "velocity", "point_gradient"}),
+        frame_invariant_(declares_frame_invariance(object)) {}
+
+  /// What the object declares; without a declaration it is taken to depend on the frame.
+  bool frame_invariant() const { return frame_invariant_; }
 
   double value(double t, const PointOf<M>& q, const ComponentsOf<M>& v) const { return call<double>(0, t, q, v); }
   ComponentsOf<M> momentum(double t, const PointOf<M>& q, const ComponentsOf<M>& v) const {
@@ -327,6 +333,15 @@ class PythonManifoldLagrangian : public PythonModel {
   VectorOf<M> point_gradient(double t, const PointOf<M>& q, const ComponentsOf<M>& v) const {
     return call<VectorOf<M>>(3, t, q, v);
   }
+
+ private:
+  static bool declares_frame_invariance(const py::object& object) {
+    if (!py::hasattr(object, "frame_invariant")) return false;
+    py::object declared = object.attr("frame_invariant");
+    if (PyCallable_Check(declared.ptr())) declared = declared();
+    return py::bool_(declared);
+  }
+  bool frame_invariant_;
 };
 
 // ---- solve_general ----------------------------------------------------------------------------

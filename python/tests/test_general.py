@@ -568,6 +568,39 @@ def test_endpoints_on_the_cut_locus_never_give_a_wrong_convergence(manifold, q0,
         assert r.status != "converged"
 
 
+class FrameInvariantSphereKinetic(SphereKinetic):
+    """SphereKinetic saying that it does not depend on the frame (true for A = c I)."""
+    frame_invariant = True
+
+
+class FrameInvariantByMethod(SphereKinetic):
+    def frame_invariant(self):
+        return True
+
+
+class FrameDependent(SphereKinetic):
+    frame_invariant = False
+
+
+def test_a_python_lagrangian_may_say_it_does_not_depend_on_the_frame():
+    """At equal endpoints the default frame's e1 is undefined and the fallback frame serves only a
+    Lagrangian that does not depend on the frame. The built-in particle with A = I says so; a
+    Lagrangian written in Python is taken to depend on it unless its `frame_invariant` (an attribute
+    or a method) is True. It was refused whatever it declared."""
+    q0 = Sphere.point([1, 0, -0.3])
+    kwargs = dict(space=Sphere(), q0=q0, qT=q0, T=1.0, N=50)
+    builtin = cartan.solve(gravity=9.81, **kwargs)
+    assert builtin.converged, builtin.message
+    for declared in (FrameInvariantSphereKinetic(np.eye(2), 9.81), FrameInvariantByMethod(np.eye(2), 9.81)):
+        r = cartan.solve(declared, **kwargs)
+        assert r.converged, r.message
+        np.testing.assert_allclose(r.v0, builtin.v0, atol=1e-8)  # the same problem, the same frame
+        np.testing.assert_array_equal(r.frame[0], Sphere().tangent_basis(q0))
+    for undeclared in (SphereKinetic(np.eye(2), 9.81), FrameDependent(np.eye(2), 9.81)):
+        with pytest.raises(ValueError, match=r"q0/qT = .* are equal: .* give frame0"):
+            cartan.solve(undeclared, **kwargs)
+
+
 # ---- verify_general -----------------------------------------------------------------------------
 
 def test_verify_general_passes_honest_results_and_fails_another_problem():
