@@ -788,7 +788,7 @@ class HyperbolicPlane(metaclass=type):
 class Euclidean(metaclass=type):
     """R^2 or R^3 with a constant linear connection nabla_{e_i} e_j = Gamma^k_ij e_k (any torsion and curvature); points and vectors are coordinates."""
     def __init__(self, christoffel: Any = ..., *, dim: Any = ...) -> None:
-        """christoffel: a (m, m, m) array with christoffel[k, i, j] = Gamma^k_ij (m = 2 or 3), or None with dim = m for the flat, torsion-free connection."""
+        """christoffel: a (m, m, m) array with christoffel[k, i, j] = Gamma^k_ij (m = 2 or 3), or None with dim = m for the flat, torsion-free connection (also Euclidean(m), m an integer)."""
     @property
     def name(self) -> str:
         """The manifold's name ("sphere", "hyperbolic-plane", "euclidean", or the group's)."""

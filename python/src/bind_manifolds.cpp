@@ -44,11 +44,25 @@ EuclideanManifold make_euclidean(const py::object& christoffel) {
   return {E(c)};
 }
 
+/// Whether x is an integer (Python's or NumPy's) and not an array.
+bool is_integer(const py::handle& x) {
+  return PyIndex_Check(x.ptr()) && !PyBool_Check(x.ptr()) && !py::isinstance<py::array>(x);
+}
+
 void bind_euclidean(py::module_& m) {
   py::class_<EuclideanManifold> cls(
       m, "Euclidean", "R^2 or R^3 with a constant linear connection nabla_{e_i} e_j = Gamma^k_ij e_k (any torsion "
                       "and curvature); points and vectors are coordinates.");
-  cls.def(py::init([](const py::object& christoffel, const py::object& dim) {
+  cls.def(py::init([](py::object christoffel, py::object dim) {
+            // Euclidean(m): an integer in the symbols' place is the dimension (no symbols are a number)
+            if (is_integer(christoffel)) {
+              if (!dim.is_none()) {
+                throw_invalid("Euclidean", "dim", repr_of(dim),
+                              "is given twice (Euclidean(" + repr_of(christoffel) + ") is Euclidean(dim=" +
+                                  repr_of(christoffel) + "))");
+              }
+              std::swap(christoffel, dim);
+            }
             int n = 0;
             if (!christoffel.is_none()) {
               const Array a = as_array(christoffel, "Euclidean", "christoffel");
@@ -72,7 +86,7 @@ void bind_euclidean(py::module_& m) {
           }),
           py::arg("christoffel") = py::none(), py::kw_only(), py::arg("dim") = py::none(),
           "christoffel: a (m, m, m) array with christoffel[k, i, j] = Gamma^k_ij (m = 2 or 3), or None with "
-          "dim = m for the flat, torsion-free connection.");
+          "dim = m for the flat, torsion-free connection (also Euclidean(m), m an integer).");
   def_manifold_methods(cls, "Euclidean");
   const auto symbols = [](const EuclideanManifold& h) {
     return visit_holder(h, [](const auto& e) {

@@ -119,6 +119,15 @@ def test_euclidean_christoffel_index_convention():
     np.testing.assert_array_equal(flat.christoffel_symbols, np.zeros((2, 2, 2)))
 
 
+def test_euclidean_takes_its_dimension_positionally():
+    """Euclidean(m) is the flat R^m, Euclidean(dim=m): the integer was read as Christoffel symbols
+    ("christoffel = array of shape () must have shape (2, 2, 2) or (3, 3, 3)")."""
+    for m in (2, 3, np.int64(3)):
+        flat = Euclidean(m)
+        assert flat.dim == m and repr(flat) == f"Euclidean(dim={m})"
+        np.testing.assert_array_equal(flat.christoffel_symbols, np.zeros((m, m, m)))
+
+
 def test_group_manifold_alpha_index_convention_and_cartan_schouten():
     lam = 0.3
     cs = GroupManifold("so3", "cartan-schouten", lam=lam)
@@ -473,6 +482,8 @@ SPHERE_ARGS = dict(T=1.0, N=20, q0=[0, 0, 1.0], qT=Sphere.point([1, 0, 1]))
     (lambda: Euclidean(), ["dim = None"]),
     (lambda: Euclidean(dim=2.5), ["dim", "not an integer"]),
     (lambda: Euclidean(np.zeros((2, 2, 2)), dim=3), ["dim = 3", "does not match"]),
+    (lambda: Euclidean(2, dim=3), ["dim = 3", "is given twice", "Euclidean(2) is Euclidean(dim=2)"]),
+    (lambda: Euclidean(4), ["dim = 4", "must be 2 or 3"]),
     (lambda: Sphere().torsion([1.0, 1, 0], [0, 0, 1], [0, 1, 0]), ["not on the unit sphere"]),
     (lambda: Sphere().step([1.0, 0, 0], [0, np.nan, 1]), ["x", "finite"]),
 ])
