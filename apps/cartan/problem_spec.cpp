@@ -352,6 +352,11 @@ void validate_manifold_problem(ProblemSpec& spec) {
   const api::SpaceInfo& space = api::find_space(spec.manifold, kWhere);
   const std::string kind = "--manifold " + spec.manifold;
   check_scope(spec, ProblemField::Scope::Manifold, kind + " (it belongs to problems on a group)");
+  // --gravity 0 too: 0 is a value, not "not given" (Python refuses gravity=0 there as well)
+  if (given(spec, "gravity") && !space.gravity) {
+    bad("gravity", format_value(spec.gravity),
+        "does not apply on " + std::string(space.name) + " (V = G q[last] needs points that are vectors)");
+  }
   if (spec.model.empty()) spec.model = "particle";
   if (spec.model != "particle") bad("model", quote_input(spec.model), "is not a model of " + kind + " (models: particle)");
   if (!given(spec, "connection")) spec.connection = std::string(to_string(space.connections.front()));

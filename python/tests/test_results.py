@@ -512,3 +512,14 @@ def test_antipodal_endpoints_need_a_frame_only_where_the_lagrangian_sees_it():
         cartan.solve(S(), T=2, N=50, q0=q0, qT=q0, inertia=[1, 2], gravity=1.0)
     r = cartan.solve(S(), T=2, N=50, q0=q0, qT=qT, inertia=[1, 2], frame0=np.eye(3)[:, :2])
     assert r.success, r.message
+
+
+def test_a_group_result_file_says_no_gravity_as_python_does(tmp_path):
+    """Gravity does not apply on a group: Python's problem has None, and the file (one writer for
+    Python and the CLI) says null, not 0.0; it reads back as None."""
+    space = cartan.GroupManifold("so3", "levi-civita", metric=[1, 2, 3])
+    r = cartan.solve(space=space, q0=np.eye(3), qT=GT_SO3, T=1, N=20)
+    assert r.converged and r.problem.gravity is None
+    r.to_json(tmp_path / "r.json")
+    assert json.loads((tmp_path / "r.json").read_text())["gravity"] is None
+    assert cartan.load(str(tmp_path / "r.json")).problem.gravity is None

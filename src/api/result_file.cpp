@@ -132,7 +132,9 @@ void write_problem(json& out, const ManifoldProblem& p) {
   out["manifold"] = p.manifold;
   out["model"] = p.model;
   out["mass"] = matrix_numbers(p.mass, w.m);
-  out["gravity"] = number_or_null(p.gravity);
+  // null where gravity does not apply (a group, a chart: Python's None), not a G = 0 the space could take
+  const bool vertical = !p.manifold.starts_with(kPythonModelPrefix) && find_space(p.manifold, "cartan::api::result_json").gravity;
+  out["gravity"] = vertical ? number_or_null(p.gravity) : json();
   if (p.connection) {
     out["connection"] = to_string(*p.connection);
     if (*p.connection == connections::ConnectionKind::CartanSchouten) out["lambda"] = number_or_null(p.lambda);
@@ -303,7 +305,7 @@ ManifoldProblem read_manifold_problem(const Reader& in, double& tol) {
   const ManifoldWidths w = manifold_widths(p, in.where());
   const std::string sizes = std::to_string(w.m) + " numbers (the diagonal) or " + std::to_string(w.m * w.m) + " (the matrix)";
   p.mass = in.numbers(in.key("mass"), "mass", {w.m, w.m * w.m}, sizes);
-  p.gravity = in.number("gravity");
+  p.gravity = in.key("gravity").is_null() ? 0.0 : in.number("gravity");  // null: gravity does not apply
   const json& j = in.document();
   if (j.contains("connection")) p.connection = in.word<connections::ConnectionKind>("connection");
   if (j.contains("lambda")) p.lambda = in.number("lambda");

@@ -221,6 +221,20 @@ def test_every_space_of_the_catalogue_solves_and_verifies(tmp_path):
     assert r.returncode == 2 and "q0 = 0,0,0,0 must have 2 or 3 numbers" in r.stderr, r.stderr
 
 
+def test_gravity_where_it_does_not_apply_is_refused_even_0_and_echoed_null(tmp_path):
+    """A group's points are not vectors: no gravity. `--gravity 0` was taken for "not given" and the
+    file said "gravity": 0.0 there, where Python's Result has None and cartan.solve refuses
+    gravity=0. Now refused as any value, and the echo is null (which `cartan verify` reads); a space
+    that takes gravity still echoes its number."""
+    cli_support.assert_rejected(run("solve", "--manifold", "so3", "--qT", "0,-1,0,1,0,0,0,0,1", "--gravity", "0"),
+                                "cartan solve: gravity = 0 does not apply on so3")
+    r = solve_file(tmp_path, "--manifold", "so3", "--qT", "0,-1,0,1,0,0,0,0,1", "--T", "1", "--N", "20")
+    assert "gravity" in r and r["gravity"] is None
+    out = run("verify", str(tmp_path / "r.json"))
+    assert out.returncode == 0 and "VERDICT: PASS" in out.stdout, out.stdout + out.stderr
+    assert sphere(tmp_path, "--T", "1", "--N", "20")["gravity"] == 0.0
+
+
 # ---- --connection on groups: the general solver on a Lie group -----------------------------------
 
 FREE_BODY = ["--model", "free-rigid-body", "--a0", "-1,-1,-1", "--aT", "0.9,1,1", "--T", "5"]
