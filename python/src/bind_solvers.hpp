@@ -139,8 +139,8 @@ struct SolveCall {
         g0(g0_.is_none() ? G::identity() : a.endpoint(g0_, "solve", "g0")),
         gT(a.endpoint(gT_, "solve", "gT")) {
     options.monitor = python_monitor(progress);
-    if (!v0.is_none()) guess.v0 = numbers_of(a.tangent(v0, "solve", "v0"));
-    if (!xi0.is_none()) guess.xi0 = numbers_of(a.tangent(xi0, "solve", "xi0"));
+    if (!v0.is_none()) guess.v0 = models::element_numbers(a.tangent(v0, "solve", "v0"));
+    if (!xi0.is_none()) guess.xi0 = models::element_numbers(a.tangent(xi0, "solve", "xi0"));
     if (!start.is_none()) guess.trajectory = samples_of<G>(start, a, "solve", "guess", false);
   }
 };

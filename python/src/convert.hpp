@@ -147,17 +147,6 @@ T value_of_row(const RowTable& x, Eigen::Index k) {
   return out;
 }
 
-/// An Eigen object's numbers, row-major (a vector's in order), as the api takes them.
-template <class Derived>
-std::vector<double> numbers_of(const Eigen::DenseBase<Derived>& x) {
-  std::vector<double> out;
-  out.reserve(static_cast<std::size_t>(x.size()));
-  for (Eigen::Index i = 0; i < x.rows(); ++i) {
-    for (Eigen::Index j = 0; j < x.cols(); ++j) out.push_back(x(i, j));
-  }
-  return out;
-}
-
 /// One Eigen object as a NumPy array ((rows,) for vectors, (rows, cols) otherwise).
 template <class Derived>
 py::array_t<double> to_numpy(const Eigen::DenseBase<Derived>& x) {

@@ -503,8 +503,8 @@ struct PosedRequest {
         options(solve_options(r, kWhere)) {
     // without frame0 the problem's validation refuses the fallback frame where the Lagrangian depends on it
     if (!r.frame0.is_none()) problem.frame0 = to_eigen<FrameOf<M>>(r.frame0, kWhere, "frame0");
-    if (!r.v0.is_none()) guess.v0 = numbers_of(finite_arg<ComponentsOf<M>>(r.v0, kWhere, "v0"));
-    if (!r.Xi0.is_none()) guess.Xi0 = numbers_of(finite_arg<ComponentMatrixOf<M>>(r.Xi0, kWhere, "Xi0"));
+    if (!r.v0.is_none()) guess.v0 = models::element_numbers(finite_arg<ComponentsOf<M>>(r.v0, kWhere, "v0"));
+    if (!r.Xi0.is_none()) guess.Xi0 = models::element_numbers(finite_arg<ComponentMatrixOf<M>>(r.Xi0, kWhere, "Xi0"));
     if (!r.guess.is_none()) guess.trajectory = samples_of(manifold, r.guess, kWhere, "guess");
   }
   PosedRequest(const PosedRequest&) = delete;
