@@ -137,16 +137,6 @@ RowTable to_rows(const py::handle& obj, std::string_view where, std::string_view
   return Eigen::Map<const RowTable>(a.data(), count, T::RowsAtCompileTime * T::ColsAtCompileTime);
 }
 
-/// Row k of the api's rows as the fixed-size Eigen object it holds (row-major within the row).
-template <class T>
-T value_of_row(const RowTable& x, Eigen::Index k) {
-  T out;
-  for (Eigen::Index i = 0; i < out.rows(); ++i) {
-    for (Eigen::Index j = 0; j < out.cols(); ++j) out(i, j) = x(k, i * out.cols() + j);
-  }
-  return out;
-}
-
 /// One Eigen object as a NumPy array ((rows,) for vectors, (rows, cols) otherwise).
 template <class Derived>
 py::array_t<double> to_numpy(const Eigen::DenseBase<Derived>& x) {

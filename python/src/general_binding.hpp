@@ -480,7 +480,7 @@ api::Samples samples_of(const M& manifold, const py::object& object, const char*
     throw_invalid(where, what, "(" + std::to_string(n) + " times)", "needs q, frame, v, mu and Xi at every time");
   }
   for (Eigen::Index k = 0; k < n; ++k) {
-    manifold.validate(value_of_row<PointOf<M>>(x.points, k), name("q").append("[").append(std::to_string(k)).append("]"));
+    manifold.validate(api::value_of_row<PointOf<M>>(x.points, k), name("q").append("[").append(std::to_string(k)).append("]"));
   }
   return x;
 }
@@ -556,7 +556,7 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   d["mu"] = rows_to_numpy<ComponentsOf<M>>(std::move(x.mu));
   d["Xi"] = rows_to_numpy<ComponentMatrixOf<M>>(std::move(x.aux));
   d["v0"] = to_numpy(s.v0);
-  d["Xi0"] = to_numpy(value_of_row<ComponentMatrixOf<M>>(RowTable(s.aux0.transpose()), 0));
+  d["Xi0"] = to_numpy(api::value_of_row<ComponentMatrixOf<M>>(api::Table(s.aux0.transpose()), 0));
   d["iterations"] = s.inner_iterations;
   // u, energy, cumulative_action (None without along: stopped on request, or fewer than two samples)
   const py::object none = py::none();

@@ -5,7 +5,7 @@
 
 #include "cartan/kernels/lie_group/dense.hpp"
 #include "cartan/kernels/manifold/dense.hpp"
-#include "problems.hpp"
+#include "samples.hpp"
 
 namespace cartan::api {
 

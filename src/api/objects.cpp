@@ -36,7 +36,7 @@ std::optional<Value> guess_value(const std::vector<double>& numbers, const char*
                   "must have " + std::to_string(size) + " numbers (" + std::string(what) + ")");
   }
   const Eigen::Map<const Eigen::RowVectorXd> row(numbers.data(), static_cast<Eigen::Index>(size));
-  return detail::value_of_row<Value>(Table(row), 0);
+  return value_of_row<Value>(Table(row), 0);
 }
 
 /// Throws "<where>: <name> = (k numbers) is a guess of the <kernel>" when `numbers` are given.
@@ -151,7 +151,7 @@ verify::Report verify(const ManifoldObjectProblem<M>& problem, const Samples& x,
   if (x.t.size() == 0) throw_invalid(where, "samples.t", "(empty)", "needs the samples of a solution");
   ManifoldObjectProblem<M> posed = problem;
   posed.N = steps_of(x);
-  if (!posed.frame0 && x.frames.rows() > 0) posed.frame0 = detail::value_of_row<manifolds::FrameOf<M>>(x.frames, 0);
+  if (!posed.frame0 && x.frames.rows() > 0) posed.frame0 = value_of_row<manifolds::FrameOf<M>>(x.frames, 0);
   return general::verify_general(posed, detail::general_trajectory<M>(x), order, tol, status);
 }
 

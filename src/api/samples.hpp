@@ -28,16 +28,6 @@ Table rows(const std::vector<Value>& values) {
   return out;
 }
 
-/// Row k of `rows` as a Value of the given shape (read row-major, as rows() writes it).
-template <class Value>
-Value value_of_row(const Table& rows, Eigen::Index k) {
-  Value x;
-  for (Eigen::Index i = 0; i < x.rows(); ++i) {
-    for (Eigen::Index j = 0; j < x.cols(); ++j) x(i, j) = rows(k, i * x.cols() + j);
-  }
-  return x;
-}
-
 /// Throws "<where>: samples.<name> = (r x c numbers) must have <rows> rows (one per time) of <width>
 /// numbers" unless `table` has one row per time of x and `width` columns, or (where `optional`)
 /// no rows.

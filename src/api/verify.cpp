@@ -9,8 +9,6 @@ namespace cartan::api {
 
 namespace {
 
-using detail::value_of_row;
-
 /// The numbers as the element they write, not projected (the checks see the data).
 template <groups::LieGroup G>
 groups::ElementOf<G> element(const std::vector<double>& numbers) {
