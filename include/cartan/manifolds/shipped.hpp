@@ -1,23 +1,14 @@
 #pragma once
-// The groups and manifolds the library compiles its solvers for, one X(...) each: the one list that
-// the kernels' declarations (kernels/*/compiled.hpp), the mechanics compiled for manifolds
-// (mechanics/manifold_compiled.hpp) and the api's doors for objects (src/api/) instantiate.
+// The manifolds the library compiles the general kernel for, one X(...) each: the one list that the
+// kernel's declarations (kernels/manifold/compiled.hpp), the mechanics compiled for manifolds
+// (mechanics/manifold_compiled.hpp) and the api's doors for objects (src/api/) instantiate. The
+// groups' list (the Lie-group kernel's) is groups/shipped.hpp.
 
-#include "cartan/groups/heisenberg.hpp"
-#include "cartan/groups/se2.hpp"
-#include "cartan/groups/se3.hpp"
-#include "cartan/groups/so3.hpp"
+#include "cartan/groups/shipped.hpp"
 #include "cartan/manifolds/chart.hpp"
 #include "cartan/manifolds/euclidean.hpp"
 #include "cartan/manifolds/group_manifold.hpp"
 #include "cartan/manifolds/quadric.hpp"
-
-/// The groups of the Lie-group kernel's compiled entry points for the erased Lagrangian.
-#define CARTAN_TRANSPORTED_SHIPPED_GROUPS(X) \
-  X(::cartan::groups::SO3)                   \
-  X(::cartan::groups::Heisenberg)            \
-  X(::cartan::groups::SE2)                   \
-  X(::cartan::groups::SE3)
 
 /// The manifolds of the general kernel's: the sphere, the hyperbolic plane, R^2 and R^3 with
 /// constant Christoffel symbols, charts of dimension 2 and 3, and SO(3), H3, SE(2), SE(3) with any

@@ -17,9 +17,9 @@
 
 #include <type_traits>
 
+#include "cartan/groups/shipped.hpp"
 #include "cartan/kernels/lie_group/solution.hpp"
 #include "cartan/kernels/lie_group/solve_options.hpp"
-#include "cartan/manifolds/shipped.hpp"
 #include "cartan/mechanics/erased_lagrangian.hpp"
 #include "cartan/principle/group_problem.hpp"
 #include "cartan/status.hpp"
