@@ -81,7 +81,9 @@ void write_problem(json& out, const GroupProblem& p) {
   out["group"] = p.group;
   out["model"] = p.model;
   out["inertia"] = matrix_numbers(p.inertia, n);
-  out["lambda"] = number_or_null(p.lambda);
+  // λ is a parameter of CS-conn only: null under another connection (as Python's None), not the
+  // default the CLI's flag holds
+  out["lambda"] = p.connection == connections::ConnectionKind::CartanSchouten ? number_or_null(p.lambda) : json();
   out["g0"] = json_list(p.g0);
   out["gT"] = json_list(p.gT);
   out["connection"] = to_string(p.connection);
@@ -270,10 +272,14 @@ GroupProblem read_group_problem(const Reader& in, double& tol) {
   const models::ModelInfo& info = group_info(p, in.where());
   const auto n = static_cast<std::size_t>(info.dim);
   const json& inertia = in.key("inertia");
-  p.lambda = in.number("lambda");
+  const json& lambda = in.key("lambda");
   read_horizon(in, p, tol);
   const json& j = in.document();
   if (j.contains("connection")) p.connection = in.word<connections::ConnectionKind>("connection");
+  // a finite λ under CS-conn; under another connection it is no parameter (null, or a number
+  // written before 2026-12-08, read and not used)
+  p.lambda = p.connection == connections::ConnectionKind::CartanSchouten ? in.number("lambda")
+                                                                         : in.number_or_null(lambda, "lambda");
   if (j.contains("side") && in.text("side") != "left") {
     in.bad("side", io::describe(j["side"]), "must be \"left\" (the transported velocity is left-trivialised)");
   }

@@ -188,6 +188,23 @@ def test_verify_passes_sphere_results_and_fails_them_for_another_problem(tmp_pat
         assert r.returncode == 1 and json.loads(r.stdout)["verdict"] == "FAIL", r.stdout
 
 
+def test_lambda_is_written_only_under_the_connection_it_parametrises(tmp_path):
+    """lambda is a parameter of the Cartan-Schouten connection only: a group model's file under
+    Levi-Civita writes "lambda": null (the flag's default 0.5 is no part of that problem; Python's
+    result has lam None) and `cartan verify` reads it back; under Cartan-Schouten the number given.
+    A file written before, with a number under Levi-Civita, still reads (the number is not used)."""
+    lc = solve_file(tmp_path, *FREE_BODY[:-1], "2", "--N", "100", "--connection", "levi-civita", "--metric", "1,2,3",
+                    name="lc.json")
+    assert lc["status"] == "converged" and lc["connection"] == "levi-civita" and lc["lambda"] is None, lc["message"]
+    old = tmp_path / "old.json"
+    old.write_text(json.dumps(dict(lc, **{"lambda": 0.5})))
+    for path in (tmp_path / "lc.json", old):
+        v = run("verify", str(path))
+        assert v.returncode == 0 and "VERDICT: PASS" in v.stdout, v.stdout + v.stderr
+    cs = solve_file(tmp_path, *FREE_BODY[:-1], "2", "--N", "100", "--lambda", "0.3", name="cs.json")
+    assert cs["status"] == "converged" and cs["connection"] == "cartan-schouten" and cs["lambda"] == 0.3, cs["message"]
+
+
 def test_every_space_of_the_catalogue_solves_and_verifies(tmp_path):
     """Each space the library compiles, through `cartan solve --manifold` and `cartan verify` of its
     file; the projectile in R^3 against its closed form (both schemes integrate a constant force
