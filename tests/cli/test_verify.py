@@ -200,6 +200,23 @@ def test_a_failed_solve_fails_the_boundary_check(tmp_path):
     assert code == 1 and checks["converged"]["result"] == "FAIL" and checks["boundary"]["result"] == "FAIL"
 
 
+def test_a_failed_result_whose_samples_are_no_trajectory_gets_the_librarys_report(tmp_path):
+    """A failed result whose rows are not group elements: the converged check fails and the data
+    check is N/A with the figure 0 and the note of the library's report (verify::unchecked_failure),
+    which Python's cartan.verify gives of the same result; the CLI wrote a figure of 1 of its own."""
+    path = solve(tmp_path, "--model", "oscillator", "--lambda", "0.5", *SO3_CASE)
+
+    def spoil(d):
+        d["status"] = "max-iterations"
+        d["g"][1] = [2 * x for x in d["g"][1]]  # det 8: not a rotation
+
+    code, _, checks = verify(rewrite(path, spoil))
+    assert code == 1 and checks["converged"]["result"] == "FAIL", checks
+    data = checks["data"]
+    assert data["result"] == "N/A" and data["figure"] == 0 and data["note"].startswith("not checked: "), data
+    assert "g[1]" in data["note"] and "not orthogonal" in data["note"], data
+
+
 def test_a_failed_default_solve_is_not_converged_not_bad_input(tmp_path):
     # Every method of the default strategy fails with 3 iterations; the best iterate may be
     # collocation's dense output, whose samples are not exact rotations: still exit 1, verdict FAIL.
