@@ -77,7 +77,7 @@ api::Samples samples_of(const py::object& source, const Args<G>& a, const std::s
   x.v = to_rows<groups::TangentOf<G>>(field("v"), in, name + ".v");
   x.aux = to_rows<groups::CovectorOf<G>>(field("xi"), in, name + ".xi");
   x.mu = with_mu ? to_rows<groups::CovectorOf<G>>(field("mu"), in, name + ".mu")
-                 : RowTable::Zero(x.t.size(), groups::CovectorOf<G>::SizeAtCompileTime);
+                 : api::Table::Zero(x.t.size(), groups::CovectorOf<G>::SizeAtCompileTime);
   if (x.points.rows() != x.t.size() || x.v.rows() != x.t.size() || x.aux.rows() != x.t.size() || x.mu.rows() != x.t.size()) {
     throw_invalid("cartan." + where, argument, "(" + std::to_string(x.t.size()) + " times)",
                   with_mu ? "needs g, v, mu and xi at every time" : "needs g, v and xi at every time");

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "cartan/api/table.hpp"
 #include "cartan/errors.hpp"
 
 namespace cartan::python {
@@ -124,17 +125,14 @@ std::vector<T> to_eigen_list(const py::handle& obj, std::string_view where, std:
   return out;
 }
 
-/// The api's tables (api::Table, api/solve.hpp): one row per time, row-major.
-using RowTable = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-
 /// The same sequence as the api's rows (api::Samples): one row of rows * cols numbers per object,
 /// row-major within it; the array's memory copied in one pass.
 template <class T>
-RowTable to_rows(const py::handle& obj, std::string_view where, std::string_view name) {
+api::Table to_rows(const py::handle& obj, std::string_view where, std::string_view name) {
   const Array a = list_array<T>(obj, where, name);
   const Eigen::Index count = a.shape(0);
   if (count == 0) return {};
-  return Eigen::Map<const RowTable>(a.data(), count, T::RowsAtCompileTime * T::ColsAtCompileTime);
+  return Eigen::Map<const api::Table>(a.data(), count, T::RowsAtCompileTime * T::ColsAtCompileTime);
 }
 
 /// One Eigen object as a NumPy array ((rows,) for vectors, (rows, cols) otherwise).
@@ -203,7 +201,7 @@ py::array_t<double> to_numpy(std::vector<T>&& xs) {
 /// The api's rows (one T a row, row-major within it) as to_numpy of the sequence of T would give
 /// them, without a copy: the table moves into the array's base object (C order).
 template <class T>
-py::array_t<double> rows_to_numpy(RowTable&& x) {
+py::array_t<double> rows_to_numpy(api::Table&& x) {
   constexpr Eigen::Index rows = T::RowsAtCompileTime, cols = T::ColsAtCompileTime;
   const auto count = static_cast<py::ssize_t>(x.rows());
   constexpr auto number = static_cast<py::ssize_t>(sizeof(double));

@@ -556,7 +556,7 @@ py::dict solve_on(const M& manifold, const GeneralRequest& r, ChartCallbacks* ch
   d["mu"] = rows_to_numpy<ComponentsOf<M>>(std::move(x.mu));
   d["Xi"] = rows_to_numpy<ComponentMatrixOf<M>>(std::move(x.aux));
   d["v0"] = to_numpy(s.v0);
-  d["Xi0"] = to_numpy(api::value_of_row<ComponentMatrixOf<M>>(api::Table(s.aux0.transpose()), 0));
+  d["Xi0"] = to_numpy(api::value_of_row<ComponentMatrixOf<M>>(s.aux0.transpose(), 0));
   d["iterations"] = s.inner_iterations;
   // u, energy, cumulative_action (None without along: stopped on request, or fewer than two samples)
   const py::object none = py::none();

@@ -35,8 +35,7 @@ std::optional<Value> guess_value(const std::vector<double>& numbers, const char*
     throw_invalid(where, name, "(" + std::to_string(numbers.size()) + " numbers)",
                   "must have " + std::to_string(size) + " numbers (" + std::string(what) + ")");
   }
-  const Eigen::Map<const Eigen::RowVectorXd> row(numbers.data(), static_cast<Eigen::Index>(size));
-  return value_of_row<Value>(Table(row), 0);
+  return value_of_numbers<Value>(numbers);
 }
 
 /// Throws "<where>: <name> = (k numbers) is a guess of the <kernel>" when `numbers` are given.

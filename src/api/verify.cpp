@@ -12,8 +12,7 @@ namespace {
 /// The numbers as the element they write, not projected (the checks see the data).
 template <groups::LieGroup G>
 groups::ElementOf<G> element(const std::vector<double>& numbers) {
-  const Eigen::Map<const Eigen::RowVectorXd> row(numbers.data(), static_cast<Eigen::Index>(numbers.size()));
-  return value_of_row<groups::ElementOf<G>>(Table(row), 0);
+  return value_of_numbers<groups::ElementOf<G>>(numbers);
 }
 
 /// The problem with its own frame at q0 (frame0, or the default), which the samples' first frame

@@ -19,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cartan/api/table.hpp"
 #include "cartan/connections/connection_kind.hpp"
 #include "cartan/principle/options.hpp"
 #include "cartan/principle/result.hpp"
@@ -71,21 +72,6 @@ struct ManifoldProblem {
   /// ("python:<type name>"), which is read but never solved or verified here.
   std::string model = "particle";
 };
-
-/// One row per time, stored row-major: a row's numbers are contiguous, as a sample's are in the
-/// kernels and in NumPy, so that a table is written, read and handed to NumPy in one pass.
-using Table = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-
-/// Row k of a table as the fixed-size value it holds (a point, an element, a frame: row-major
-/// within the row, as models::element_numbers writes it).
-template <class Value>
-Value value_of_row(const Table& rows, Eigen::Index k) {
-  Value x;
-  for (Eigen::Index i = 0; i < x.rows(); ++i) {
-    for (Eigen::Index j = 0; j < x.cols(); ++j) x(i, j) = rows(k, i * x.cols() + j);
-  }
-  return x;
-}
 
 /// A trajectory as numbers, one row per time t_k.
 struct Samples {
